@@ -1,1 +1,865 @@
-pub fn placeholder() {}
+//! The command line of the `degrau` binary: no arguments open the app; `degrau step`
+//! prints the exact step response of one system (text or `--json`), or of one system per
+//! JSON line on stdin (`--batch`).
+//!
+//! This module owns the argument syntax, the JSON request and report formats, the human
+//! report, and the exit codes: 0 success, 1 the window could not be opened, 2 bad input or
+//! unreadable stdin (`--batch` reports a bad line on its own output line and goes on).
+//! Every system, from flags or from a JSON line, goes through [`SystemSpec::analyse`] and
+//! [`Report::new`]; the text report reads the same [`Analysis`].
+
+use std::io::{self, BufRead, BufWriter, Write};
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand};
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+
+use crate::lti::expr::{OscillationForm, expression, format_number};
+use crate::lti::parse::{ParseError, parse_complex_list, parse_real_list};
+use crate::lti::poly::format_poly;
+use crate::lti::tf::Stability;
+use crate::lti::{
+    Behaviour, C64, LtiError, StepInfo, StepInfoOptions, StepResponse, TransferFunction, fmt_c,
+};
+
+/// The most samples one system may ask for (8 MB each for t and y).
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// Exit code for bad input, as clap uses for bad arguments.
+const EXIT_BAD_INPUT: u8 = 2;
+/// Exit code when the window cannot be opened.
+const EXIT_NO_WINDOW: u8 = 1;
+
+/// Degrau: exact step responses of transfer functions, for control students.
+///
+/// Without a subcommand, opens the app.
+#[derive(Debug, Parser)]
+#[command(name = "degrau", version)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Exact step response, step metrics and closed-form y(t) of a transfer function.
+    Step(StepArgs),
+}
+
+const STEP_EXAMPLES: &str = "\
+Examples:
+  degrau step --poles \"-1+2j,-1-2j,-5\" --gain 0.5 --amplitude 2
+  degrau step --num 0.5 --den 1,7,15,25 --json
+  degrau step --poles \"-1+2j,-1-2j,-5\" --zeros -10 --dc-gain 1 --delay 0.3 --samples 201 --json
+  echo '{\"id\": 1, \"num\": [5], \"den\": [1, 5]}' | degrau step --batch";
+
+/// `degrau step` options. A system is given by its poles (zeros, gain) or by num and den.
+#[derive(Debug, Default, Args)]
+#[command(after_help = STEP_EXAMPLES)]
+pub struct StepArgs {
+    /// Poles, comma-separated, e.g. "-1+2j,-1-2j,-5" (complex ones in conjugate pairs).
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub poles: Option<String>,
+    /// Zeros, comma-separated, e.g. "-10" (default: none).
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub zeros: Option<String>,
+    /// k of the zero-pole-gain form k·Π(s−zᵢ)/Π(s−pⱼ), as MATLAB's zpk (default 1).
+    #[arg(
+        long,
+        value_name = "K",
+        allow_hyphen_values = true,
+        conflicts_with = "dc_gain"
+    )]
+    pub gain: Option<f64>,
+    /// Numerator coefficients in descending powers of s, e.g. "0.5".
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub num: Option<String>,
+    /// Denominator coefficients in descending powers of s, e.g. "1,7,15,25".
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub den: Option<String>,
+    /// Scale k so that the static gain G(0) is K.
+    #[arg(long, value_name = "K", allow_hyphen_values = true)]
+    pub dc_gain: Option<f64>,
+    /// Transport delay θ in seconds (default 0).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    pub delay: Option<f64>,
+    /// Step amplitude A (default 1).
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub amplitude: Option<f64>,
+    /// Settling band as a fraction of |y_final − y_init| (default 0.02).
+    #[arg(long, value_name = "FRACTION", allow_hyphen_values = true)]
+    pub settling_threshold: Option<f64>,
+    /// Rise-time limits as two fractions of the way to the final value (default 0.1,0.9).
+    #[arg(long, value_name = "LOW,HIGH", allow_hyphen_values = true)]
+    pub rise_limits: Option<String>,
+    /// Add N samples of y(t), evenly spaced over [0, the automatic horizon].
+    #[arg(long, value_name = "N")]
+    pub samples: Option<usize>,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    pub json: bool,
+    /// Read one JSON system per line on stdin, write one JSON line per system (--json is
+    /// implied; --settling-threshold and --rise-limits apply to every line).
+    #[arg(
+        long,
+        conflicts_with_all = [
+            "poles", "zeros", "gain", "num", "den", "dc_gain", "delay", "amplitude", "samples",
+        ]
+    )]
+    pub batch: bool,
+}
+
+/// What can go wrong in `degrau step`, in words a student can act on.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    #[error("{option}: {source}")]
+    Parse {
+        option: &'static str,
+        source: ParseError,
+    },
+    #[error(transparent)]
+    Lti(#[from] LtiError),
+    #[error("{0}")]
+    Options(String),
+    #[error("the rise limits are two fractions like 0.1,0.9, not {0} numbers")]
+    RiseLimitsCount(usize),
+    #[error("no system given: give the poles (and zeros, gain) or the num and den coefficients")]
+    NoSystem,
+    #[error("the system is given twice: give the poles and zeros, or num and den, not both")]
+    TwoDescriptions,
+    #[error("zeros were given without poles: give the poles too")]
+    ZerosWithoutPoles,
+    #[error("num was given without den: give both coefficient lists")]
+    NumWithoutDen,
+    #[error("den was given without num: give both coefficient lists")]
+    DenWithoutNum,
+    #[error(
+        "gain is the k of the zero-pole-gain form and goes with poles; with num and den the \
+         gain is in the coefficients (use dc_gain to set the static gain)"
+    )]
+    GainWithCoefficients,
+    #[error("give gain (the k of the zero-pole-gain form) or dc_gain (the static gain), not both")]
+    GainAndDcGain,
+    #[error("samples must be between 2 and {MAX_SAMPLES}, not {0}")]
+    Samples(usize),
+    #[error("the line is not valid JSON: {0}")]
+    JsonSyntax(String),
+    #[error(r#"the line is not a JSON object like {{"num": [1], "den": [1, 1]}}"#)]
+    NotAnObject,
+    #[error("the line does not describe a system: {0}")]
+    JsonFields(String),
+    #[error("the line is not valid UTF-8 text")]
+    NotUtf8,
+    #[error("could not read the standard input: {0}")]
+    ReadInput(io::Error),
+    #[error("could not write the output: {0}")]
+    WriteOutput(io::Error),
+}
+
+/// One system and its step, from flags or from a JSON line: the JSON keys are the flags'
+/// names with `_` for `-`, with roots as `[re, im]` pairs and coefficients as numbers.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SystemSpec {
+    #[serde(default, deserialize_with = "pairs")]
+    pub zeros: Option<Vec<C64>>,
+    #[serde(default, deserialize_with = "pairs")]
+    pub poles: Option<Vec<C64>>,
+    pub gain: Option<f64>,
+    pub num: Option<Vec<f64>>,
+    pub den: Option<Vec<f64>>,
+    pub dc_gain: Option<f64>,
+    pub delay: Option<f64>,
+    pub amplitude: Option<f64>,
+    pub samples: Option<usize>,
+}
+
+/// Roots written as `[[re, im], …]`.
+fn pairs<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<Vec<C64>>, D::Error> {
+    let roots: Option<Vec<[f64; 2]>> = Deserialize::deserialize(d)?;
+    Ok(roots.map(|r| r.iter().map(|&[re, im]| C64::new(re, im)).collect()))
+}
+
+/// A system with its exact step response and metrics.
+#[derive(Debug, Clone)]
+pub struct Analysis {
+    pub tf: TransferFunction,
+    pub response: StepResponse,
+    pub info: StepInfo,
+    pub options: StepInfoOptions,
+    /// y(t) over [0, auto horizon] when samples were asked for.
+    pub samples: Option<Samples>,
+}
+
+impl SystemSpec {
+    /// The transfer function, with the documented defaults: gain 1, delay 0.
+    pub fn transfer_function(&self) -> Result<TransferFunction, CliError> {
+        let tf = match (&self.poles, &self.num, &self.den) {
+            (Some(_), Some(_), _) | (Some(_), _, Some(_)) => return Err(CliError::TwoDescriptions),
+            (Some(poles), None, None) => {
+                let zeros = self.zeros.as_deref().unwrap_or_default();
+                TransferFunction::from_zpk(zeros, poles, self.gain.unwrap_or(1.0))?
+            }
+            (None, Some(num), Some(den)) => {
+                if self.zeros.is_some() {
+                    return Err(CliError::TwoDescriptions);
+                }
+                if self.gain.is_some() {
+                    return Err(CliError::GainWithCoefficients);
+                }
+                TransferFunction::from_coeffs(num, den)?
+            }
+            (None, Some(_), None) => return Err(CliError::NumWithoutDen),
+            (None, None, Some(_)) => return Err(CliError::DenWithoutNum),
+            (None, None, None) if self.zeros.is_some() => return Err(CliError::ZerosWithoutPoles),
+            (None, None, None) => return Err(CliError::NoSystem),
+        };
+        let tf = match self.dc_gain {
+            Some(_) if self.gain.is_some() => return Err(CliError::GainAndDcGain),
+            Some(k) => tf.with_dc_gain(k)?,
+            None => tf,
+        };
+        Ok(tf.with_delay(self.delay.unwrap_or(0.0))?)
+    }
+
+    /// The step response (amplitude 1 unless given), its metrics and the asked samples.
+    pub fn analyse(&self, options: &StepInfoOptions) -> Result<Analysis, CliError> {
+        let sample_count = self.samples.map(check_samples).transpose()?;
+        let tf = self.transfer_function()?;
+        let response = StepResponse::new(&tf, self.amplitude.unwrap_or(1.0))?;
+        let info = StepInfo::of_response(&response, options);
+        let samples = sample_count.map(|n| {
+            let (t, y) = response.sample_uniform(0.0, response.auto_horizon(), n);
+            Samples { t, y }
+        });
+        Ok(Analysis {
+            tf,
+            response,
+            info,
+            options: *options,
+            samples,
+        })
+    }
+}
+
+fn check_samples(n: usize) -> Result<usize, CliError> {
+    if (2..=MAX_SAMPLES).contains(&n) {
+        Ok(n)
+    } else {
+        Err(CliError::Samples(n))
+    }
+}
+
+/// Evenly spaced samples of y(t), times in seconds from the step.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Samples {
+    pub t: Vec<f64>,
+    pub y: Vec<f64>,
+}
+
+/// The JSON report of one system: `--json` prints it, `--batch` prints one per line.
+/// A metric that does not exist is `null`, and so is an infinite `dc_gain`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Report {
+    pub rise_time: Option<f64>,
+    pub settling_time: Option<f64>,
+    pub peak: Option<f64>,
+    pub peak_time: Option<f64>,
+    pub overshoot: Option<f64>,
+    pub undershoot: Option<f64>,
+    pub steady_state: Option<f64>,
+    pub settling_min: Option<f64>,
+    pub settling_max: Option<f64>,
+    pub dc_gain: Option<f64>,
+    pub poles: Vec<[f64; 2]>,
+    pub zeros: Vec<[f64; 2]>,
+    /// y(t) with oscillations as e^{σt}[cos ωt + β sin ωt].
+    pub expression: String,
+    /// y(t) with oscillations as R e^{σt} sin(ωt + φ).
+    pub expression_amplitude_phase: String,
+    pub behaviour: Behaviour,
+    pub stability: &'static str,
+    pub gain: f64,
+    pub delay: f64,
+    pub amplitude: f64,
+    pub order: usize,
+    pub num: Vec<f64>,
+    pub den: Vec<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub samples: Option<Samples>,
+}
+
+impl Report {
+    pub fn new(a: &Analysis) -> Self {
+        let info = &a.info;
+        let dc_gain = a.tf.dc_gain();
+        Self {
+            rise_time: info.rise_time,
+            settling_time: info.settling_time,
+            peak: info.peak,
+            peak_time: info.peak_time,
+            overshoot: info.overshoot,
+            undershoot: info.undershoot,
+            steady_state: info.steady_state,
+            settling_min: info.settling_min,
+            settling_max: info.settling_max,
+            dc_gain: dc_gain.is_finite().then_some(dc_gain),
+            poles: as_pairs(a.tf.poles()),
+            zeros: as_pairs(a.tf.zeros()),
+            expression: expression(&a.response, OscillationForm::CosSin),
+            expression_amplitude_phase: expression(&a.response, OscillationForm::AmplitudePhase),
+            behaviour: a.response.behaviour(),
+            stability: stability_key(a.tf.stability()),
+            gain: a.tf.gain(),
+            delay: a.tf.delay(),
+            amplitude: a.response.amplitude(),
+            order: a.tf.order(),
+            num: a.tf.num(),
+            den: a.tf.den(),
+            samples: a.samples.clone(),
+        }
+    }
+}
+
+/// `[re, im]` pairs, with −0 written as 0.
+fn as_pairs(roots: &[C64]) -> Vec<[f64; 2]> {
+    roots.iter().map(|r| [r.re + 0.0, r.im + 0.0]).collect()
+}
+
+fn stability_key(s: Stability) -> &'static str {
+    match s {
+        Stability::Stable => "stable",
+        Stability::MarginallyStable => "marginally_stable",
+        Stability::Unstable => "unstable",
+    }
+}
+
+/// One line of `--batch` output: the request's `id` (null when absent) and its 1-based line
+/// number, then either the report's keys or `error`.
+#[derive(Debug, Serialize)]
+pub struct BatchReply {
+    pub id: Value,
+    pub line: usize,
+    #[serde(flatten)]
+    pub outcome: Outcome,
+}
+
+#[derive(Debug, Serialize)]
+#[serde(untagged)]
+pub enum Outcome {
+    Report(Box<Report>),
+    Error { error: String },
+}
+
+impl StepArgs {
+    /// The metric thresholds, defaults where not given, validated.
+    pub fn options(&self) -> Result<StepInfoOptions, CliError> {
+        let defaults = StepInfoOptions::default();
+        let rise_limits = match &self.rise_limits {
+            None => defaults.rise_limits,
+            Some(text) => match parse_list("--rise-limits", text, parse_real_list)?.as_slice() {
+                &[low, high] => (low, high),
+                other => return Err(CliError::RiseLimitsCount(other.len())),
+            },
+        };
+        let options = StepInfoOptions {
+            settling_threshold: self
+                .settling_threshold
+                .unwrap_or(defaults.settling_threshold),
+            rise_limits,
+        };
+        options.validate().map_err(CliError::Options)?;
+        Ok(options)
+    }
+
+    /// The system described by the flags.
+    pub fn spec(&self) -> Result<SystemSpec, CliError> {
+        let complex = |option, text: &Option<String>| {
+            text.as_deref()
+                .map(|t| parse_list(option, t, parse_complex_list))
+                .transpose()
+        };
+        let real = |option, text: &Option<String>| {
+            text.as_deref()
+                .map(|t| parse_list(option, t, parse_real_list))
+                .transpose()
+        };
+        Ok(SystemSpec {
+            zeros: complex("--zeros", &self.zeros)?,
+            poles: complex("--poles", &self.poles)?,
+            gain: self.gain,
+            num: real("--num", &self.num)?,
+            den: real("--den", &self.den)?,
+            dc_gain: self.dc_gain,
+            delay: self.delay,
+            amplitude: self.amplitude,
+            samples: self.samples,
+        })
+    }
+}
+
+/// Parses an option's list, naming the option in the error.
+fn parse_list<T>(
+    option: &'static str,
+    text: &str,
+    parse: impl Fn(&str) -> Result<Vec<T>, ParseError>,
+) -> Result<Vec<T>, CliError> {
+    parse(text).map_err(|source| CliError::Parse { option, source })
+}
+
+/// Runs the command line: the binary's `main`.
+pub fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Help and version go to stdout with code 0, usage errors to stderr with code 2.
+            let _ = e.print();
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(EXIT_BAD_INPUT));
+        }
+    };
+    match cli.command {
+        None => open_app(),
+        Some(Command::Step(args)) => match run_step(&args) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(CliError::WriteOutput(e)) if e.kind() == io::ErrorKind::BrokenPipe => {
+                ExitCode::SUCCESS // the reader stopped reading: nothing left to do
+            }
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::from(EXIT_BAD_INPUT)
+            }
+        },
+    }
+}
+
+fn open_app() -> ExitCode {
+    match crate::app::run() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!(
+                "error: could not open the Degrau window: {e}\n\
+                 Without a display, use the command line: degrau step --help"
+            );
+            ExitCode::from(EXIT_NO_WINDOW)
+        }
+    }
+}
+
+/// `degrau step`: one system from the flags, or `--batch` from stdin.
+pub fn run_step(args: &StepArgs) -> Result<(), CliError> {
+    let options = args.options()?;
+    if args.batch {
+        return run_batch(io::stdin().lock(), io::stdout().lock(), &options);
+    }
+    let analysis = args.spec()?.analyse(&options)?;
+    let mut out = io::stdout().lock();
+    let written = if args.json {
+        write_json_line(&mut out, &Report::new(&analysis))
+    } else {
+        writeln!(out, "{}", human_report(&analysis))
+    };
+    written
+        .and_then(|()| out.flush())
+        .map_err(CliError::WriteOutput)
+}
+
+/// `value` as one line of compact JSON (non-finite numbers become `null`).
+fn write_json_line(out: &mut impl Write, value: &impl Serialize) -> io::Result<()> {
+    serde_json::to_writer(&mut *out, value)?;
+    out.write_all(b"\n")
+}
+
+/// Reads JSON systems line by line from `input` and writes one JSON reply per line to
+/// `output`, in order. Blank lines are skipped (replies carry their `line` number); a bad
+/// line gets an `error` reply and the batch goes on. Fails only when reading or writing does.
+pub fn run_batch(
+    mut input: impl BufRead,
+    output: impl Write,
+    options: &StepInfoOptions,
+) -> Result<(), CliError> {
+    let mut out = BufWriter::new(output);
+    let mut buffer = Vec::new();
+    let mut line = 0;
+    loop {
+        buffer.clear();
+        if input
+            .read_until(b'\n', &mut buffer)
+            .map_err(CliError::ReadInput)?
+            == 0
+        {
+            break;
+        }
+        line += 1;
+        if let Some(reply) = batch_reply(&buffer, line, options) {
+            write_json_line(&mut out, &reply).map_err(CliError::WriteOutput)?;
+        }
+    }
+    out.flush().map_err(CliError::WriteOutput)
+}
+
+/// The reply to one line of a batch; `None` for a blank line.
+fn batch_reply(bytes: &[u8], line: usize, options: &StepInfoOptions) -> Option<BatchReply> {
+    let (id, outcome) = match std::str::from_utf8(bytes) {
+        Err(_) => (Value::Null, Err(CliError::NotUtf8)),
+        Ok(text) if text.trim().is_empty() => return None,
+        Ok(text) => {
+            let (id, spec) = read_request(text.trim());
+            (id, spec.and_then(|s| s.analyse(options)))
+        }
+    };
+    let outcome = match outcome {
+        Ok(analysis) => Outcome::Report(Box::new(Report::new(&analysis))),
+        Err(e) => Outcome::Error {
+            error: e.to_string(),
+        },
+    };
+    Some(BatchReply { id, line, outcome })
+}
+
+/// The `id` of a JSON request (null when absent or unreadable) and its system.
+fn read_request(text: &str) -> (Value, Result<SystemSpec, CliError>) {
+    let mut object = match serde_json::from_str::<Value>(text) {
+        Ok(Value::Object(object)) => object,
+        Ok(_) => return (Value::Null, Err(CliError::NotAnObject)),
+        Err(e) => return (Value::Null, Err(CliError::JsonSyntax(e.to_string()))),
+    };
+    let id = object.remove("id").unwrap_or(Value::Null);
+    let spec = serde_json::from_value(Value::Object(object))
+        .map_err(|e| CliError::JsonFields(e.to_string()));
+    (id, spec)
+}
+
+/// The text report: the system, its poles and zeros, the metrics and y(t).
+pub fn human_report(a: &Analysis) -> String {
+    let mut lines = system_lines(a);
+    lines.push(String::new());
+    lines.extend(metric_lines(a));
+    lines.push(String::new());
+    lines.push("Step response (exact closed form):".into());
+    for form in [OscillationForm::CosSin, OscillationForm::AmplitudePhase] {
+        lines.push(format!("  {}", expression(&a.response, form)));
+    }
+    if let Some(Samples { t, y }) = &a.samples {
+        lines.push(String::new());
+        lines.push("Samples:\n  t (s)\ty".into());
+        lines.extend(t.iter().zip(y).map(|(t, y)| format!("  {t}\t{y}")));
+    }
+    lines.join("\n")
+}
+
+fn system_lines(a: &Analysis) -> Vec<String> {
+    let tf = &a.tf;
+    let roots = |r: &[C64]| {
+        if r.is_empty() {
+            "none".to_string()
+        } else {
+            r.iter().map(|&c| fmt_c(c)).collect::<Vec<_>>().join(", ")
+        }
+    };
+    let dc_gain = tf.dc_gain();
+    let dc_text = if dc_gain.is_finite() {
+        format_number(dc_gain)
+    } else {
+        format!("{dc_gain} (a pole at s = 0: the system integrates)")
+    };
+    vec![
+        format!("System       G(s) = {}", tf.describe()),
+        format!("             G(s) = {}", polynomial_form(tf)),
+        format!("Poles        {}", roots(tf.poles())),
+        format!("Zeros        {}", roots(tf.zeros())),
+        format!("DC gain      G(0) = {dc_text}"),
+        format!(
+            "Stability    {}; the step response {}",
+            stability_words(tf.stability()),
+            a.response.behaviour().describe()
+        ),
+        format!(
+            "Step         amplitude {} at t = 0",
+            format_number(a.response.amplitude())
+        ),
+    ]
+}
+
+/// `0.5 / (s^3 + 7 s^2 + 15 s + 25)`, with the delay factor when there is one.
+fn polynomial_form(tf: &TransferFunction) -> String {
+    let num = format_poly(&tf.num());
+    let num = if tf.zeros().is_empty() {
+        num
+    } else {
+        format!("({num})")
+    };
+    let delay = if tf.delay() > 0.0 {
+        format!(" · e^(-{} s)", format_number(tf.delay()))
+    } else {
+        String::new()
+    };
+    format!("{num} / ({}){delay}", format_poly(&tf.den()))
+}
+
+fn stability_words(s: Stability) -> &'static str {
+    match s {
+        Stability::Stable => "stable (every pole in the left half plane)",
+        Stability::MarginallyStable => {
+            "marginally stable (poles on the imaginary axis, none to its right)"
+        }
+        Stability::Unstable => "unstable (a pole in the right half plane)",
+    }
+}
+
+/// A step metric: its label, unit and where it is in [`StepInfo`].
+struct Metric {
+    label: &'static str,
+    unit: &'static str,
+    value: fn(&StepInfo) -> Option<f64>,
+}
+
+const METRICS: [Metric; 9] = [
+    Metric {
+        label: "rise time",
+        unit: " s",
+        value: |i| i.rise_time,
+    },
+    Metric {
+        label: "settling time",
+        unit: " s",
+        value: |i| i.settling_time,
+    },
+    Metric {
+        label: "overshoot",
+        unit: " %",
+        value: |i| i.overshoot,
+    },
+    Metric {
+        label: "undershoot",
+        unit: " %",
+        value: |i| i.undershoot,
+    },
+    Metric {
+        label: "peak",
+        unit: "",
+        value: |i| i.peak,
+    },
+    Metric {
+        label: "peak time",
+        unit: " s",
+        value: |i| i.peak_time,
+    },
+    Metric {
+        label: "steady state",
+        unit: "",
+        value: |i| i.steady_state,
+    },
+    Metric {
+        label: "settling min",
+        unit: "",
+        value: |i| i.settling_min,
+    },
+    Metric {
+        label: "settling max",
+        unit: "",
+        value: |i| i.settling_max,
+    },
+];
+
+fn metric_lines(a: &Analysis) -> Vec<String> {
+    let (low, high) = a.options.rise_limits;
+    let mut lines = vec![format!(
+        "Step metrics (rise {}–{} %, settling band {} %):",
+        format_number(100.0 * low),
+        format_number(100.0 * high),
+        format_number(100.0 * a.options.settling_threshold)
+    )];
+    lines.extend(METRICS.iter().map(|m| {
+        let text = match (m.value)(&a.info) {
+            Some(v) => format!("{}{}", format_number(v), m.unit),
+            None => absent_reason(m.label, &a.info),
+        };
+        format!("  {:<14} {text}", m.label)
+    }));
+    lines
+}
+
+/// Why a metric is `None`, in plain words.
+fn absent_reason(label: &str, info: &StepInfo) -> String {
+    if info.behaviour != Behaviour::Settles {
+        return format!(
+            "does not exist because the response {}",
+            info.behaviour.describe()
+        );
+    }
+    if info.steady_state == Some(info.initial_value) {
+        return "does not exist because the final value equals the initial value: \
+                there is no change to measure"
+            .into();
+    }
+    if label == "peak time" && info.peak.is_some() {
+        return "none: monotone response, the peak is the final value approached as t → ∞".into();
+    }
+    if info.rise_end.is_none() {
+        return "does not exist because the response reaches the upper rise limit \
+                only as t → ∞"
+            .into();
+    }
+    "does not exist for this response".into()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec_from(args: &[&str]) -> Result<SystemSpec, CliError> {
+        let mut argv = vec!["degrau", "step"];
+        argv.extend_from_slice(args);
+        let cli = Cli::try_parse_from(argv).map_err(|e| CliError::Options(e.to_string()))?;
+        match cli.command {
+            Some(Command::Step(step)) => step.spec(),
+            None => Err(CliError::NoSystem),
+        }
+    }
+
+    #[test]
+    fn flags_and_json_describe_the_same_system() {
+        let from_flags = spec_from(&[
+            "--poles",
+            "-1+2j,-1-2j,-5",
+            "--zeros",
+            "-10",
+            "--gain",
+            "0.5",
+        ])
+        .unwrap();
+        let from_json: SystemSpec = serde_json::from_str(
+            r#"{"poles": [[-1, 2], [-1, -2], [-5, 0]], "zeros": [[-10, 0]], "gain": 0.5}"#,
+        )
+        .unwrap();
+        assert_eq!(from_flags, from_json);
+        let tf = from_flags.transfer_function().unwrap();
+        assert!((tf.dc_gain() - 0.2).abs() < 1e-15);
+    }
+
+    #[test]
+    fn inconsistent_descriptions_are_refused() {
+        let spec = |json: &str| serde_json::from_str::<SystemSpec>(json).unwrap();
+        let cases = [
+            (r#"{}"#, "no system given"),
+            (r#"{"poles": [[-1, 0]], "den": [1, 1]}"#, "given twice"),
+            (
+                r#"{"zeros": [[-1, 0]], "num": [1], "den": [1, 1]}"#,
+                "given twice",
+            ),
+            (r#"{"zeros": [[-1, 0]]}"#, "without poles"),
+            (r#"{"num": [1]}"#, "without den"),
+            (r#"{"den": [1, 1]}"#, "without num"),
+            (
+                r#"{"num": [1], "den": [1, 1], "gain": 2}"#,
+                "goes with poles",
+            ),
+            (
+                r#"{"poles": [[-1, 0]], "gain": 2, "dc_gain": 1}"#,
+                "not both",
+            ),
+            (r#"{"poles": []}"#, "no poles"),
+            (r#"{"num": [1, 0, 0], "den": [1, 1]}"#, "improper"),
+            (
+                r#"{"num": [1], "den": [1, 0], "dc_gain": 2}"#,
+                "cannot be set",
+            ),
+            (r#"{"poles": [[-1, 0]], "samples": 1}"#, "between 2 and"),
+        ];
+        for (json, words) in cases {
+            let error = spec(json)
+                .analyse(&StepInfoOptions::default())
+                .unwrap_err()
+                .to_string();
+            assert!(error.contains(words), "{json}: {error}");
+        }
+    }
+
+    #[test]
+    fn rise_limits_and_band_are_validated() {
+        let options = |args: &[&str]| {
+            let mut argv = vec!["degrau", "step"];
+            argv.extend_from_slice(args);
+            match Cli::try_parse_from(argv).unwrap().command {
+                Some(Command::Step(step)) => step.options(),
+                None => unreachable!("the step subcommand was given"),
+            }
+        };
+        assert_eq!(
+            options(&["--rise-limits", "0.05,0.95", "--settling-threshold", "0.05"]).unwrap(),
+            StepInfoOptions {
+                settling_threshold: 0.05,
+                rise_limits: (0.05, 0.95)
+            }
+        );
+        assert!(matches!(
+            options(&["--rise-limits", "0.1"]),
+            Err(CliError::RiseLimitsCount(1))
+        ));
+        assert!(matches!(
+            options(&["--rise-limits", "10,90"]),
+            Err(CliError::Options(_))
+        ));
+        assert!(matches!(
+            options(&["--settling-threshold", "-0.02"]),
+            Err(CliError::Options(_))
+        ));
+        assert!(matches!(
+            options(&["--rise-limits", "0.1,x"]),
+            Err(CliError::Parse { .. })
+        ));
+    }
+
+    #[test]
+    fn batch_echoes_ids_in_order_and_skips_blank_lines() {
+        let input = "{\"id\": \"a\", \"num\": [5], \"den\": [1, 5]}\n\n\
+                     {\"id\": [1], \"num\": [1, 0, 0], \"den\": [1, 1]}\n\
+                     not json\n\
+                     {\"id\": 3, \"pole\": [[-1, 0]]}\n";
+        let mut out = Vec::new();
+        run_batch(input.as_bytes(), &mut out, &StepInfoOptions::default()).unwrap();
+        let replies: Vec<Value> = String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        assert_eq!(replies.len(), 4);
+        assert_eq!(replies[0]["id"], "a");
+        assert!((replies[0]["rise_time"].as_f64().unwrap() - 9f64.ln() / 5.0).abs() < 1e-12);
+        assert_eq!(replies[1]["id"], serde_json::json!([1]));
+        assert_eq!(replies[1]["line"], 3);
+        assert!(replies[1]["error"].as_str().unwrap().contains("improper"));
+        assert_eq!(replies[2]["id"], Value::Null);
+        assert!(
+            replies[2]["error"]
+                .as_str()
+                .unwrap()
+                .contains("not valid JSON")
+        );
+        assert!(
+            replies[3]["error"]
+                .as_str()
+                .unwrap()
+                .contains("unknown field `pole`")
+        );
+    }
+
+    #[test]
+    fn absent_metrics_say_why() {
+        let report = |json: &str| {
+            let spec: SystemSpec = serde_json::from_str(json).unwrap();
+            human_report(&spec.analyse(&StepInfoOptions::default()).unwrap())
+        };
+        let integrator = report(r#"{"num": [1], "den": [1, 1, 0]}"#);
+        assert!(
+            integrator.contains("does not exist because the response does not settle: it ramps")
+        );
+        let first_order = report(r#"{"num": [5], "den": [1, 5]}"#);
+        assert!(first_order.contains("peak time      none: monotone response"));
+        let derivative = report(r#"{"num": [1, 0], "den": [1, 1]}"#);
+        assert!(
+            derivative.contains("rise time      does not exist because the final value equals")
+        );
+    }
+}

@@ -1,9 +1,11 @@
 //! Degrau: open-loop step-response analysis and process identification for control students.
 //!
 //! - [`lti`]: exact transfer-function math, step responses and step metrics (no GUI).
+//! - [`ident`]: measured step tests, process models and their fitting (no GUI).
 //! - [`app`]: the egui desktop app, which only calls the library.
 //! - [`cli`]: the headless command line of the `degrau` binary.
 
 pub mod app;
 pub mod cli;
+pub mod ident;
 pub mod lti;

@@ -1,20 +1,470 @@
-//! The egui desktop app. `run` opens the window; everything it shows comes from the library.
+//! The egui desktop app: an s-plane on the left, the live step response on the right, the
+//! system's numbers in a side panel and the metrics and y(t) in a bottom strip. Everything
+//! it shows comes from the library ([`crate::lti`]); this module only lays out and edits.
+//!
+//! Every change to the system, whatever made it (a drag, a typed number, a menu), is one
+//! undoable edit: the app compares the system before and after each frame and records the
+//! state before an edit *session* (a drag or a focused text field counts as one).
+
+pub mod analysis;
+pub mod export;
+pub mod format;
+pub mod metrics_table;
+pub mod presets;
+pub mod splane;
+pub mod state;
+pub mod step_plot;
+pub mod system_panel;
+
+use eframe::egui::{self, Key, KeyboardShortcut, Modifiers, RichText, Ui};
+use serde::{Deserialize, Serialize};
+
+use analysis::Analysis;
+use export::ExportState;
+use presets::{Preset, presets};
+use splane::SPlaneState;
+use state::{History, RootId, System};
+use step_plot::Markers;
+use system_panel::PanelAction;
+
+use crate::lti::StepInfoOptions;
 
 /// Opens the Degrau window and blocks until it is closed.
 pub fn run() -> eframe::Result {
     let options = eframe::NativeOptions {
-        viewport: eframe::egui::ViewportBuilder::default()
+        viewport: egui::ViewportBuilder::default()
             .with_title("Degrau")
-            .with_inner_size([1280.0, 800.0]),
+            .with_inner_size([1360.0, 860.0])
+            .with_min_inner_size([900.0, 600.0]),
         ..Default::default()
     };
-    eframe::run_native("Degrau", options, Box::new(|_cc| Ok(Box::new(Placeholder))))
+    eframe::run_native(
+        "Degrau",
+        options,
+        Box::new(|cc| Ok(Box::new(DegrauApp::from_storage(cc.storage)))),
+    )
 }
 
-struct Placeholder;
+/// What is kept between runs (eframe persistence).
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+pub struct Saved {
+    pub system: System,
+    pub compare: Option<(String, System)>,
+    pub splane: SPlaneState,
+    pub markers: Markers,
+    pub options: StepInfoOptions,
+    pub phase_form: bool,
+    pub dark: bool,
+}
 
-impl eframe::App for Placeholder {
-    fn ui(&mut self, ui: &mut eframe::egui::Ui, _frame: &mut eframe::Frame) {
-        ui.heading("Degrau");
+/// The app: saved state plus what is derived or transient.
+pub struct DegrauApp {
+    pub saved: Saved,
+    pub history: History,
+    pub analysis: Analysis,
+    compare_analysis: Option<Analysis>,
+    /// The response before the current/last edit session, drawn faintly.
+    ghost: Option<Vec<[f64; 2]>>,
+    /// The system as it was when the frame started.
+    frame_start: System,
+    /// True while an edit session is open (pointer held or a text field focused).
+    editing: bool,
+    presets: Vec<Preset>,
+    export: ExportState,
+    plot_rect: Option<egui::Rect>,
+}
+
+const UNDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
+const REDO: KeyboardShortcut =
+    KeyboardShortcut::new(Modifiers::COMMAND.plus(Modifiers::SHIFT), Key::Z);
+const REDO_Y: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
+
+impl Default for DegrauApp {
+    fn default() -> Self {
+        Self::new(Saved::default())
+    }
+}
+
+impl DegrauApp {
+    /// An app showing `saved`.
+    pub fn new(saved: Saved) -> Self {
+        let analysis = Analysis::new(&saved.system, saved.options);
+        let compare_analysis = saved
+            .compare
+            .as_ref()
+            .map(|(_, s)| Analysis::new(s, saved.options));
+        Self {
+            frame_start: saved.system.clone(),
+            saved,
+            history: History::default(),
+            analysis,
+            compare_analysis,
+            ghost: None,
+            editing: false,
+            presets: presets(),
+            export: ExportState::default(),
+            plot_rect: None,
+        }
+    }
+
+    /// Restores the last session, or the built-in example.
+    pub fn from_storage(storage: Option<&dyn eframe::Storage>) -> Self {
+        let saved = storage
+            .and_then(|s| eframe::get_value::<Saved>(s, eframe::APP_KEY))
+            .unwrap_or_default();
+        Self::new(saved)
+    }
+
+    /// The system being edited.
+    pub fn system(&self) -> &System {
+        &self.saved.system
+    }
+
+    /// Replaces the system as one undoable edit.
+    pub fn set_system(&mut self, system: System) {
+        self.history.record(&self.saved.system);
+        self.ghost = Some(self.analysis.curve.clone());
+        self.saved.system = system;
+        self.frame_start = self.saved.system.clone();
+        self.saved.splane.view = None;
+        self.saved.splane.selected = None;
+    }
+
+    pub fn undo(&mut self) {
+        if self.history.undo(&mut self.saved.system) {
+            self.after_history_jump();
+        }
+    }
+
+    pub fn redo(&mut self) {
+        if self.history.redo(&mut self.saved.system) {
+            self.after_history_jump();
+        }
+    }
+
+    fn after_history_jump(&mut self) {
+        self.ghost = Some(self.analysis.curve.clone());
+        self.frame_start = self.saved.system.clone();
+        self.editing = false;
+        let (poles, zeros) = (self.saved.system.poles.len(), self.saved.system.zeros.len());
+        if let Some(sel) = self.saved.splane.selected {
+            let n = match sel.role {
+                state::RootRole::Pole => poles,
+                state::RootRole::Zero => zeros,
+            };
+            if sel.index >= n {
+                self.saved.splane.selected = None;
+            }
+        }
+    }
+
+    /// Draws one frame into `ui` (the whole window).
+    pub fn show(&mut self, ui: &mut Ui) {
+        let theme = if self.saved.dark {
+            egui::Theme::Dark
+        } else {
+            egui::Theme::Light
+        };
+        if ui.ctx().theme() != theme {
+            ui.ctx().set_theme(theme);
+        }
+        self.keyboard(ui);
+        self.frame_start = self.saved.system.clone();
+
+        egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
+        let action = egui::Panel::right("system")
+            .resizable(true)
+            .default_size(330.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical()
+                    .show(ui, |ui| {
+                        system_panel::show(
+                            ui,
+                            &mut self.saved.system,
+                            &mut self.saved.splane.selected,
+                            &self.analysis,
+                            &self.presets,
+                            self.saved.compare.is_some(),
+                        )
+                    })
+                    .inner
+            })
+            .inner;
+        egui::Panel::bottom("metrics")
+            .resizable(true)
+            .default_size(230.0)
+            .show(ui, |ui| {
+                let compare = compare_pair(&self.saved.compare, &self.compare_analysis);
+                metrics_table::show(ui, &self.analysis, compare, &mut self.saved.phase_form);
+            });
+        let half = (ui.available_width() * 0.45).max(250.0);
+        egui::Panel::left("s-plane")
+            .resizable(true)
+            .default_size(half)
+            .show(ui, |ui| self.splane_panel(ui));
+        egui::CentralPanel::default().show(ui, |ui| self.plot_panel(ui));
+
+        self.apply(action);
+        self.close_edit_session(ui);
+        self.refresh();
+        let compare_curve = self.compare_analysis.as_ref().map(|a| a.curve.as_slice());
+        self.export.show(
+            ui.ctx(),
+            self.plot_rect,
+            &self.analysis.curve,
+            compare_curve,
+        );
+    }
+
+    fn menu_bar(&mut self, ui: &mut Ui) {
+        egui::MenuBar::new().ui(ui, |ui| {
+            ui.menu_button("File", |ui| {
+                if ui.button("Export…").clicked() {
+                    self.export.open = true;
+                    ui.close();
+                }
+                if ui.button("Reset to the built-in example").clicked() {
+                    self.set_system(System::default());
+                    ui.close();
+                }
+            });
+            ui.menu_button("Edit", |ui| {
+                if ui
+                    .add_enabled(
+                        self.history.can_undo(),
+                        egui::Button::new("Undo").shortcut_text(ui.ctx().format_shortcut(&UNDO)),
+                    )
+                    .clicked()
+                {
+                    self.undo();
+                    ui.close();
+                }
+                if ui
+                    .add_enabled(
+                        self.history.can_redo(),
+                        egui::Button::new("Redo").shortcut_text(ui.ctx().format_shortcut(&REDO)),
+                    )
+                    .clicked()
+                {
+                    self.redo();
+                    ui.close();
+                }
+                if ui
+                    .add_enabled(
+                        self.saved.splane.selected.is_some(),
+                        egui::Button::new("Delete selected root").shortcut_text("Delete"),
+                    )
+                    .clicked()
+                {
+                    self.delete_selected();
+                    ui.close();
+                }
+            });
+            ui.menu_button("View", |ui| {
+                ui.checkbox(&mut self.saved.dark, "Dark theme");
+                ui.checkbox(
+                    &mut self.saved.splane.damping_grid,
+                    "Constant ζ and ωn lines",
+                );
+                ui.checkbox(&mut self.saved.splane.snap, "Snap roots to the grid");
+                if ui.button("Fit the s-plane to the roots").clicked() {
+                    self.saved.splane.view = None;
+                    ui.close();
+                }
+            });
+            if ui
+                .add_enabled(self.history.can_undo(), egui::Button::new("Undo"))
+                .clicked()
+            {
+                self.undo();
+            }
+            if ui
+                .add_enabled(self.history.can_redo(), egui::Button::new("Redo"))
+                .clicked()
+            {
+                self.redo();
+            }
+        });
+    }
+
+    fn splane_panel(&mut self, ui: &mut Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.checkbox(&mut self.saved.splane.damping_grid, "ζ / ωn grid");
+            ui.checkbox(&mut self.saved.splane.snap, "Snap");
+            if ui
+                .button("Fit")
+                .on_hover_text("Fit the view to the roots")
+                .clicked()
+            {
+                self.saved.splane.view = None;
+            }
+            if self.saved.system.has_rhp_pole() {
+                ui.label(
+                    RichText::new("Unstable: a pole is in the right half plane")
+                        .color(ui.visuals().error_fg_color)
+                        .strong(),
+                );
+            }
+        });
+        let readout = self
+            .saved
+            .splane
+            .readout
+            .clone()
+            .unwrap_or_else(|| "Drag a pole (×) or zero (o); right-click to add; scroll to zoom; drag the background to pan.".into());
+        ui.weak(readout);
+        splane::show(ui, &mut self.saved.system, &mut self.saved.splane);
+    }
+
+    fn plot_panel(&mut self, ui: &mut Ui) {
+        step_plot::controls(ui, &mut self.saved.markers, &mut self.saved.options);
+        if let Err(reason) = &self.analysis.tf {
+            ui.label(
+                RichText::new(format!("No step response: {reason}"))
+                    .color(ui.visuals().error_fg_color),
+            );
+        }
+        self.plot_rect = Some(ui.available_rect_before_wrap());
+        let compare = compare_pair(&self.saved.compare, &self.compare_analysis);
+        step_plot::show(
+            ui,
+            &self.analysis,
+            compare,
+            self.ghost.as_deref(),
+            &self.saved.markers,
+        );
+    }
+
+    fn apply(&mut self, action: PanelAction) {
+        match action {
+            PanelAction::None => {}
+            PanelAction::LoadPreset(i) => {
+                if let Some(p) = self.presets.get(i) {
+                    let (system, compare) = (
+                        p.system.clone(),
+                        p.compare.as_ref().map(|(n, s)| (n.to_string(), s.clone())),
+                    );
+                    self.set_system(system);
+                    self.saved.compare = compare;
+                }
+            }
+            PanelAction::CompareWithCurrent => {
+                self.saved.compare = Some(("kept".into(), self.saved.system.clone()));
+            }
+            PanelAction::StopComparing => self.saved.compare = None,
+        }
+    }
+
+    fn keyboard(&mut self, ui: &mut Ui) {
+        let typing = ui.ctx().memory(|m| m.focused().is_some());
+        // Ctrl+Z matches Ctrl+Shift+Z too in egui's logical matching: consume redo first.
+        let redo = ui.input_mut(|i| i.consume_shortcut(&REDO) || i.consume_shortcut(&REDO_Y));
+        let undo = ui.input_mut(|i| i.consume_shortcut(&UNDO));
+        if redo {
+            self.redo();
+        } else if undo {
+            self.undo();
+        }
+        if typing {
+            return;
+        }
+        let Some(id) = self.saved.splane.selected else {
+            return;
+        };
+        if ui.input(|i| i.key_pressed(Key::Delete) || i.key_pressed(Key::Backspace)) {
+            self.delete_selected();
+            return;
+        }
+        let step = self
+            .saved
+            .splane
+            .view
+            .map_or(0.1, |v| splane::nice_step(70.0 / v.pixels_per_unit) / 10.0);
+        let (dx, dy) = ui.input(|i| {
+            let mut d = (0.0, 0.0);
+            if i.key_pressed(Key::ArrowLeft) {
+                d.0 -= step;
+            }
+            if i.key_pressed(Key::ArrowRight) {
+                d.0 += step;
+            }
+            if i.key_pressed(Key::ArrowUp) {
+                d.1 += step;
+            }
+            if i.key_pressed(Key::ArrowDown) {
+                d.1 -= step;
+            }
+            d
+        });
+        if (dx, dy) != (0.0, 0.0)
+            && let Some(root) = self.saved.system.root_mut(id)
+        {
+            let (re, im) = (root.re + dx, root.im + dy);
+            root.move_to(re, im);
+        }
+    }
+
+    fn delete_selected(&mut self) {
+        if let Some(id) = self.saved.splane.selected.take() {
+            let before = self.saved.system.clone();
+            if self.saved.system.remove(id) {
+                self.history.record(&before);
+                self.ghost = Some(self.analysis.curve.clone());
+                self.frame_start = self.saved.system.clone();
+            }
+        }
+    }
+
+    /// Records the state before an edit session and closes the session when the pointer is
+    /// released and no field has focus.
+    fn close_edit_session(&mut self, ui: &Ui) {
+        let changed = self.saved.system != self.frame_start;
+        if changed && !self.editing {
+            self.history.record(&self.frame_start);
+            self.ghost = Some(self.analysis.curve.clone());
+            self.editing = true;
+        }
+        let busy = ui.input(|i| i.pointer.any_down()) || ui.ctx().memory(|m| m.focused().is_some());
+        if !busy && !changed {
+            self.editing = false;
+        }
+    }
+
+    fn refresh(&mut self) {
+        self.analysis
+            .refresh(&self.saved.system, self.saved.options);
+        match (&self.saved.compare, &mut self.compare_analysis) {
+            (Some((_, s)), Some(a)) => a.refresh(s, self.saved.options),
+            (Some((_, s)), None) => {
+                self.compare_analysis = Some(Analysis::new(s, self.saved.options))
+            }
+            (None, _) => self.compare_analysis = None,
+        }
+    }
+
+    /// The root currently selected on the s-plane.
+    pub fn selected(&self) -> Option<RootId> {
+        self.saved.splane.selected
+    }
+}
+
+/// The comparison system's name and analysis, when comparing.
+fn compare_pair<'a>(
+    saved: &'a Option<(String, System)>,
+    analysis: &'a Option<Analysis>,
+) -> Option<(&'a str, &'a Analysis)> {
+    match (saved, analysis) {
+        (Some((name, _)), Some(a)) => Some((name.as_str(), a)),
+        _ => None,
+    }
+}
+
+impl eframe::App for DegrauApp {
+    fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
+        self.show(ui);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        eframe::set_value(storage, eframe::APP_KEY, &self.saved);
     }
 }

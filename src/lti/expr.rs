@@ -72,7 +72,9 @@ pub fn terms(response: &StepResponse) -> Vec<Term> {
     // Constant first, then by decay rate (slowest first), as the notes order them.
     out.sort_by(|a, b| {
         let key = |t: &Term| (t.sigma != 0.0 || t.omega != 0.0, -t.sigma, t.power);
-        key(a).partial_cmp(&key(b)).unwrap_or(std::cmp::Ordering::Equal)
+        key(a)
+            .partial_cmp(&key(b))
+            .unwrap_or(std::cmp::Ordering::Equal)
     });
     out
 }
@@ -137,7 +139,12 @@ fn format_term(term: &Term, var: &str, form: OscillationForm) -> (f64, String) {
                 format!("cos {w}")
             } else {
                 let sign = if beta < 0.0 { "−" } else { "+" };
-                format!("[cos {w} {sign} {} sin {w}]", factor_text(beta.abs()))
+                // [cos t + sin t], not [cos t + 1 sin t].
+                let factor = match factor_text(beta.abs()) {
+                    one if one == "1" => String::new(),
+                    factor => format!("{factor} "),
+                };
+                format!("[cos {w} {sign} {factor}sin {w}]")
             };
             let core = format!("{core}{bracket}");
             (term.cos.signum(), scaled(term.cos.abs(), &core))
@@ -182,7 +189,11 @@ fn scaled(coefficient: f64, core: &str) -> String {
 }
 
 fn join_nonempty(a: &str, b: &str) -> String {
-    if a.is_empty() { b.to_string() } else { format!("{a} {b}") }
+    if a.is_empty() {
+        b.to_string()
+    } else {
+        format!("{a} {b}")
+    }
 }
 
 /// `e^{−t}`, `e^{−5t}`, `e^{0.5(t − 0.3)}`; empty for σ = 0.
@@ -192,13 +203,21 @@ fn exponential(sigma: f64, var: &str) -> String {
     }
     let sign = if sigma < 0.0 { "−" } else { "" };
     let magnitude = sigma.abs();
-    let number = if magnitude == 1.0 { String::new() } else { format_number(magnitude) };
+    // Compare the text, not the number: a rate of 1.0000000000000002 (roots computed from
+    // coefficients) prints as "1" and must be left out just like an exact 1.
+    let number = match format_number(magnitude) {
+        one if one == "1" => String::new(),
+        number => number,
+    };
     format!("e^{{{sign}{number}{var}}}")
 }
 
 /// `2t`, `t`, `2.5(t − 0.3)`.
 fn frequency(omega: f64, var: &str) -> String {
-    if omega == 1.0 { var.to_string() } else { format!("{}{var}", format_number(omega)) }
+    match format_number(omega) {
+        one if one == "1" => var.to_string(),
+        number => format!("{number}{var}"),
+    }
 }
 
 /// A factor inside a bracket: `(4/3)`, `2`, `0.123457`.
@@ -309,7 +328,12 @@ mod tests {
     #[test]
     fn the_notes_zero_at_minus_ten_example() {
         // 0.5(s+10)/(s³+7s²+15s+25), A = 5: y = 1 − (7/8)e^{−t}[cos 2t + (6/7) sin 2t] − e^{−5t}/8.
-        let r = response(&[c(-10.0, 0.0)], &[c(-1.0, 2.0), c(-1.0, -2.0), c(-5.0, 0.0)], 0.5, 5.0);
+        let r = response(
+            &[c(-10.0, 0.0)],
+            &[c(-1.0, 2.0), c(-1.0, -2.0), c(-5.0, 0.0)],
+            0.5,
+            5.0,
+        );
         assert_eq!(
             expression(&r, OscillationForm::CosSin),
             "y(t) = 1 − (7/8)e^{−t}[cos 2t + (6/7) sin 2t] − e^{−5t}/8"

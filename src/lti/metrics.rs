@@ -180,16 +180,18 @@ impl StepInfo {
         // Normalised progress: 0 before the step, 1 at the final value.
         let e = |y: f64| sign * (y - y_init) / span;
         let level = |fraction: f64| y_init + fraction * delta;
-        let first_crossing = |fraction: f64| -> Option<f64> {
+        // The first piece that reaches `fraction`, and the instant it does.
+        let first_crossing = |fraction: f64| -> Option<(usize, f64)> {
             points.windows(2).enumerate().find_map(|(i, w)| {
                 let (a, b) = (e(w[0].1), e(w[1].1));
-                (a < fraction && b >= fraction).then(|| pieces.crossing(i, level(fraction)))
+                (a < fraction && b >= fraction).then(|| (i, pieces.crossing(i, level(fraction))))
             })
         };
 
         let (lo, hi) = options.rise_limits;
-        info.rise_start = first_crossing(lo);
-        info.rise_end = first_crossing(hi);
+        info.rise_start = first_crossing(lo).map(|(_, t)| t);
+        let rise_end = first_crossing(hi);
+        info.rise_end = rise_end.map(|(_, t)| t);
         if let (Some(a), Some(b)) = (info.rise_start, info.rise_end) {
             info.rise_time = Some(b - a);
         }
@@ -209,13 +211,25 @@ impl StepInfo {
         let (min_i, min_e) = extreme(points, |y| -e(y));
         let min_e = -min_e;
         let overshoot = max_e - 1.0;
-        info.overshoot = Some(if overshoot > NEGLIGIBLE { 100.0 * overshoot } else { 0.0 });
+        info.overshoot = Some(if overshoot > NEGLIGIBLE {
+            100.0 * overshoot
+        } else {
+            0.0
+        });
         let undershoot = -min_e;
-        info.undershoot = Some(if undershoot > NEGLIGIBLE { 100.0 * undershoot } else { 0.0 });
+        info.undershoot = Some(if undershoot > NEGLIGIBLE {
+            100.0 * undershoot
+        } else {
+            0.0
+        });
         if undershoot > NEGLIGIBLE {
             info.undershoot_time = Some(points[min_i].0);
         }
-        let (peak_i, peak_e) = if max_e >= undershoot { (max_i, max_e) } else { (min_i, undershoot) };
+        let (peak_i, peak_e) = if max_e >= undershoot {
+            (max_i, max_e)
+        } else {
+            (min_i, undershoot)
+        };
         if peak_e > 1.0 + NEGLIGIBLE {
             info.peak = Some(peak_e * span);
             info.peak_time = Some(points[peak_i].0);
@@ -223,8 +237,11 @@ impl StepInfo {
             info.peak = Some(span);
         }
 
-        if let Some(t_hi) = info.rise_end {
-            let after = points.iter().filter(|p| p.0 > t_hi).map(|p| p.1);
+        if let Some((piece, _)) = rise_end {
+            // Every breakpoint after the piece where the rise ends: those after the crossing,
+            // and y(θ⁺) when the rise ends inside the jump of a biproper system (the values
+            // just after the jump count, the 0 before it does not).
+            let after = points[piece + 1..].iter().map(|p| p.1);
             let candidates = after.chain([level(hi), y_final]);
             let (lo_y, hi_y) = candidates.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
                 (a.min(y), b.max(y))
@@ -242,13 +259,18 @@ fn extreme(points: &[(f64, f64)], score: impl Fn(f64) -> f64) -> (usize, f64) {
         .iter()
         .enumerate()
         .map(|(i, p)| (i, score(p.1)))
-        .fold((0, f64::NEG_INFINITY), |best, cur| if cur.1 > best.1 { cur } else { best })
+        .fold((0, f64::NEG_INFINITY), |best, cur| {
+            if cur.1 > best.1 { cur } else { best }
+        })
 }
 
 /// The earliest breakpoint with the largest |y − y_init| (ties within rounding go to the
 /// first, so a periodic response reports its first peak): (time, deviation).
 fn largest_deviation(points: &[(f64, f64)], y_init: f64) -> Option<(f64, f64)> {
-    let largest = points.iter().map(|p| (p.1 - y_init).abs()).fold(0.0, f64::max);
+    let largest = points
+        .iter()
+        .map(|p| (p.1 - y_init).abs())
+        .fold(0.0, f64::max);
     points
         .iter()
         .map(|&(t, y)| (t, y - y_init))
@@ -327,7 +349,8 @@ fn critical_points(response: &StepResponse, end: f64, tail: f64) -> Vec<f64> {
         let (a, b) = (w[0], w[1]);
         let live_frequency = response.max_frequency(|c| c.envelope(a) > tail);
         let periods = (b - a) * live_frequency / std::f64::consts::TAU;
-        let n = ((periods * SAMPLES_PER_PERIOD).ceil() as usize).clamp(MIN_SEGMENT_SAMPLES, MAX_SEGMENT_SAMPLES);
+        let n = ((periods * SAMPLES_PER_PERIOD).ceil() as usize)
+            .clamp(MIN_SEGMENT_SAMPLES, MAX_SEGMENT_SAMPLES);
         let h = (b - a) / n as f64;
         slope.resize(n + 1, 0.0);
         response.eval_uniform_rational(Derivative::First, a, h, &mut slope);
@@ -427,9 +450,15 @@ mod tests {
             let p = [c(-zeta * wn, wd), c(-zeta * wn, -wd)];
             let i = info(&[], &p, wn * wn);
             let os = 100.0 * (-zeta * std::f64::consts::PI / (1.0 - zeta * zeta).sqrt()).exp();
-            assert!((i.overshoot.unwrap() - os).abs() < 1e-10 * os, "zeta {zeta}");
+            assert!(
+                (i.overshoot.unwrap() - os).abs() < 1e-10 * os,
+                "zeta {zeta}"
+            );
             let tp = std::f64::consts::PI / wd;
-            assert!((i.peak_time.unwrap() - tp).abs() < 1e-12 * tp, "zeta {zeta}");
+            assert!(
+                (i.peak_time.unwrap() - tp).abs() < 1e-12 * tp,
+                "zeta {zeta}"
+            );
             assert!((i.peak.unwrap() - (1.0 + os / 100.0)).abs() < 1e-12);
         }
     }
@@ -445,7 +474,10 @@ mod tests {
     fn integrating_and_unstable_have_no_metrics() {
         let i = info(&[], &[c(0.0, 0.0), c(-1.0, 0.0)], 1.0);
         assert_eq!(i.behaviour, Behaviour::Integrating);
-        assert_eq!((i.rise_time, i.settling_time, i.steady_state), (None, None, None));
+        assert_eq!(
+            (i.rise_time, i.settling_time, i.steady_state),
+            (None, None, None)
+        );
         let u = info(&[], &[c(1.0, 0.0)], 1.0);
         assert_eq!(u.behaviour, Behaviour::Unstable);
         assert_eq!(u.peak, None);
@@ -483,8 +515,22 @@ mod tests {
         let i = StepInfo::of_response(&r, &o);
         assert!((i.settling_time.unwrap() - 20f64.ln()).abs() < 1e-14);
         assert!((i.rise_time.unwrap() - (0.95f64 / 0.05).ln()).abs() < 1e-14);
-        assert!(StepInfoOptions { settling_threshold: 0.0, ..o }.validate().is_err());
-        assert!(StepInfoOptions { rise_limits: (0.9, 0.1), ..o }.validate().is_err());
+        assert!(
+            StepInfoOptions {
+                settling_threshold: 0.0,
+                ..o
+            }
+            .validate()
+            .is_err()
+        );
+        assert!(
+            StepInfoOptions {
+                rise_limits: (0.9, 0.1),
+                ..o
+            }
+            .validate()
+            .is_err()
+        );
     }
 
     #[test]

@@ -4,6 +4,12 @@
 //! Roots come from the eigenvalues of the balanced companion matrix (nalgebra's real Schur
 //! form), are polished by a few guarded Newton steps, and are returned closed under
 //! conjugation: every complex root is followed by its exact conjugate.
+//!
+//! Roots are only known to rounding, and for two questions that matters: whether a root is
+//! real, and whether it lies on the imaginary axis (s³ + s² + s + 1 = (s + 1)(s² + 1) gives
+//! ±j with a real part of about 2e-17, whose sign would decide between "oscillates forever"
+//! and "unstable"). So a root within [`REAL_AXIS_TOLERANCE`] of its modulus of either axis
+//! is put exactly on it.
 
 use nalgebra::{Complex, DMatrix};
 
@@ -12,7 +18,8 @@ use super::LtiError;
 /// A complex number of `f64`s, as used for poles and zeros.
 pub type C64 = Complex<f64>;
 
-/// Roots whose imaginary part is below this fraction of their modulus are taken as real.
+/// Roots whose imaginary part is below this fraction of their modulus are taken as real;
+/// complex roots of [`roots`] whose real part is below it, as purely imaginary.
 const REAL_AXIS_TOLERANCE: f64 = 1e-10;
 
 /// Checks that every coefficient is finite; `what` names the polynomial in the message.
@@ -74,9 +81,22 @@ pub fn roots(coeffs: &[f64]) -> Result<Vec<C64>, LtiError> {
         2 => quadratic_roots(reduced[0], reduced[1], reduced[2]),
         _ => companion_roots(reduced)?,
     };
-    found.extend(raw.into_iter().map(|r| polish(reduced, r)));
+    for (root, multiplicity) in multiple_roots(reduced, raw) {
+        if multiplicity == 1 {
+            found.push(polish(reduced, root));
+        } else {
+            found.extend(std::iter::repeat_n(root, multiplicity));
+        }
+    }
     debug_assert_eq!(found.len(), n);
-    Ok(conjugate_closed(found))
+    let mut closed = conjugate_closed(found);
+    for r in closed.iter_mut() {
+        if r.im != 0.0 && r.re.abs() <= REAL_AXIS_TOLERANCE * r.norm() {
+            r.re = 0.0;
+        }
+    }
+    sort_roots(&mut closed);
+    Ok(closed)
 }
 
 /// Roots of a·s² + b·s + c without cancellation (the citardauq form for the smaller root).
@@ -96,12 +116,17 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<C64> {
 }
 
 /// Eigenvalues of the balanced companion matrix of a polynomial of degree ≥ 3.
+///
+/// The matrix is built for the polynomial in x = s/2^e (see [`scaled_monic`]), whose
+/// coefficients are all of order 1, and the eigenvalues are scaled back by 2^e. Without
+/// this, coefficient ratios beyond ~1e154 overflow the squared norms inside nalgebra's
+/// Parlett–Reinsch balancing (∞ ≥ 2·∞ forever), which then never returns.
 fn companion_roots(coeffs: &[f64]) -> Result<Vec<C64>, LtiError> {
     let n = coeffs.len() - 1;
-    let lead = coeffs[0];
+    let (monic, e) = scaled_monic(coeffs);
     let mut m = DMatrix::<f64>::zeros(n, n);
     for j in 0..n {
-        m[(0, j)] = -coeffs[j + 1] / lead;
+        m[(0, j)] = -monic[j + 1];
     }
     for i in 1..n {
         m[(i, i - 1)] = 1.0;
@@ -109,7 +134,146 @@ fn companion_roots(coeffs: &[f64]) -> Result<Vec<C64>, LtiError> {
     nalgebra::linalg::balancing::balance_parlett_reinsch(&mut m);
     let schur = nalgebra::linalg::Schur::try_new(m, f64::EPSILON, 10_000)
         .ok_or(LtiError::RootsDidNotConverge { degree: n })?;
-    Ok(schur.complex_eigenvalues().iter().copied().collect())
+    Ok(schur
+        .complex_eigenvalues()
+        .iter()
+        .map(|x| C64::new(mul_pow2(x.re, e), mul_pow2(x.im, e)))
+        .collect())
+}
+
+/// The monic coefficients bⱼ = cⱼ/(c₀·2^{je}) of the polynomial in x = s/2^e, with e chosen
+/// so that every |bⱼ| ≲ 2 (a power of two, so the scaling itself is exact), and e.
+///
+/// Leading coefficient non-zero and all coefficients finite. Ratios cⱼ/c₀ are never formed
+/// directly (they may overflow); a bⱼ far below 1 may underflow to 0, harmlessly.
+fn scaled_monic(coeffs: &[f64]) -> (Vec<f64>, i32) {
+    let log_lead = coeffs[0].abs().log2();
+    let e = coeffs
+        .iter()
+        .enumerate()
+        .skip(1)
+        .filter(|(_, c)| **c != 0.0)
+        .map(|(j, c)| ((c.abs().log2() - log_lead) / j as f64).ceil())
+        .fold(f64::NEG_INFINITY, f64::max);
+    let e = if e.is_finite() { e as i32 } else { 0 };
+    // c₀ = m₀·2^{x₀} with m₀ near 1: divide by m₀ only once everything is of order 1.
+    let x0 = log_lead.floor() as i32;
+    let m0 = mul_pow2(coeffs[0], -x0);
+    let monic = coeffs
+        .iter()
+        .enumerate()
+        .map(|(j, &c)| mul_pow2(c, -(j as i32) * e - x0) / m0)
+        .collect();
+    (monic, e)
+}
+
+/// x·2^k without overflow or underflow in the intermediate power of two.
+fn mul_pow2(mut x: f64, mut k: i32) -> f64 {
+    while k > 1000 && x.is_finite() && x != 0.0 {
+        x *= 2f64.powi(1000);
+        k -= 1000;
+    }
+    while k < -1000 && x.is_finite() && x != 0.0 {
+        x *= 2f64.powi(-1000);
+        k += 1000;
+    }
+    x * 2f64.powi(k.clamp(-1000, 1000))
+}
+
+/// Computed roots closer than this (relative) are candidates for one multiple root.
+const MULTIPLE_SEARCH: f64 = 0.5;
+/// A Taylor coefficient of p at a candidate multiple root counts as zero when it is below
+/// this many unit roundings (times the degree) of its size (see [`is_multiple_root`]).
+const MULTIPLE_TOLERANCE: f64 = 32.0;
+
+/// Groups the computed roots of p into (root, multiplicity): a group of m computed roots is
+/// one m-fold root at their mean when p has one there, to rounding.
+///
+/// An m-fold root comes out of any eigenvalue solver split into m roots about eps^{1/m}
+/// apart ((s + 1)³: 1e-5, (s + 1)⁸: 2e-2), while their mean is accurate to rounding. Kept
+/// apart, such roots make partial fractions cancel catastrophically (error eps/δ^{m−1}: 2e-3
+/// in the step response of 1/(s + 1)⁵ typed as coefficients); polished one by one by Newton,
+/// they lose the symmetry that makes their mean accurate. Merging is backward stable: the
+/// test is that p's Taylor coefficients at the mean, of order below m, all vanish to
+/// rounding, i.e. that p is within rounding of a polynomial with an m-fold root there.
+/// Candidate groups are formed by single linkage, the tolerance shrinking from
+/// [`MULTIPLE_SEARCH`] until every group passes the test or is a single root.
+fn multiple_roots(coeffs: &[f64], raw: Vec<C64>) -> Vec<(C64, usize)> {
+    fn split(coeffs: &[f64], group: Vec<C64>, tolerance: f64, out: &mut Vec<(C64, usize)>) {
+        let m = group.len();
+        if m == 1 {
+            out.push((group[0], 1));
+            return;
+        }
+        let mean = group.iter().sum::<C64>() / m as f64;
+        if is_multiple_root(coeffs, mean, m) {
+            out.push((mean, m));
+        } else if tolerance < 1e-12 {
+            out.extend(group.into_iter().map(|r| (r, 1)));
+        } else {
+            for sub in single_linkage(group, tolerance / 3.0) {
+                split(coeffs, sub, tolerance / 3.0, out);
+            }
+        }
+    }
+    let mut out = Vec::with_capacity(raw.len());
+    for group in single_linkage(raw, MULTIPLE_SEARCH) {
+        split(coeffs, group, MULTIPLE_SEARCH, &mut out);
+    }
+    out
+}
+
+/// Groups of roots connected by links |a − b| ≤ tolerance·max(|a|, |b|).
+fn single_linkage(roots: Vec<C64>, tolerance: f64) -> Vec<Vec<C64>> {
+    let n = roots.len();
+    let mut group: Vec<usize> = (0..n).collect();
+    for i in 0..n {
+        for j in (i + 1)..n {
+            let (a, b) = (roots[i], roots[j]);
+            if (a - b).norm() <= tolerance * a.norm().max(b.norm()) && group[i] != group[j] {
+                let (gi, gj) = (group[i], group[j]);
+                group.iter_mut().filter(|g| **g == gj).for_each(|g| *g = gi);
+            }
+        }
+    }
+    let mut labels: Vec<usize> = group.clone();
+    labels.sort_unstable();
+    labels.dedup();
+    labels
+        .into_iter()
+        .map(|l| {
+            (0..n)
+                .filter(|&i| group[i] == l)
+                .map(|i| roots[i])
+                .collect()
+        })
+        .collect()
+}
+
+/// True when the Taylor coefficients p^{(k)}(c)/k!, k < m, all vanish to rounding: each
+/// below [`MULTIPLE_TOLERANCE`]·n·eps times the same coefficient of Σ|aᵢ|·x^i at x = |c|
+/// (the size of the terms it sums, so the scale of its rounding error).
+fn is_multiple_root(coeffs: &[f64], c: C64, m: usize) -> bool {
+    let n = coeffs.len() - 1;
+    if m > n {
+        return false;
+    }
+    let limit = MULTIPLE_TOLERANCE * n as f64 * f64::EPSILON;
+    let mut p: Vec<C64> = coeffs.iter().map(|&a| C64::new(a, 0.0)).collect();
+    let mut size: Vec<f64> = coeffs.iter().map(|a| a.abs()).collect();
+    let r = c.norm();
+    for _ in 0..m {
+        // Synthetic division by (s − c): the remainder is the next Taylor coefficient.
+        for i in 1..p.len() {
+            p[i] = p[i] + p[i - 1] * c;
+            size[i] += size[i - 1] * r;
+        }
+        let (taylor, bound) = (p.pop().unwrap_or_default(), size.pop().unwrap_or_default());
+        if !(taylor.norm() <= limit * bound) {
+            return false;
+        }
+    }
+    true
 }
 
 /// A few Newton steps on p, each kept only if it lowers |p|; returns the better root.
@@ -224,7 +388,11 @@ mod tests {
     #[test]
     fn roots_of_the_notes_third_order_denominator() {
         let r = roots(&[1.0, 7.0, 15.0, 25.0]).unwrap();
-        let expected = [C64::new(-1.0, 2.0), C64::new(-1.0, -2.0), C64::new(-5.0, 0.0)];
+        let expected = [
+            C64::new(-1.0, 2.0),
+            C64::new(-1.0, -2.0),
+            C64::new(-5.0, 0.0),
+        ];
         assert_eq!(r.len(), 3);
         for (a, b) in r.iter().zip(expected.iter()) {
             assert!((a - b).norm() < 1e-12, "{a} vs {b}");
@@ -258,7 +426,10 @@ mod tests {
 
     #[test]
     fn degenerate_polynomials_are_refused() {
-        assert!(matches!(roots(&[0.0, 0.0]), Err(LtiError::ZeroPolynomial { .. })));
+        assert!(matches!(
+            roots(&[0.0, 0.0]),
+            Err(LtiError::ZeroPolynomial { .. })
+        ));
         assert!(matches!(
             roots(&[1.0, f64::NAN]),
             Err(LtiError::NonFiniteCoefficient { index: 1, .. })
@@ -268,7 +439,10 @@ mod tests {
 
     #[test]
     fn formats_like_matlab_printsys() {
-        assert_eq!(format_poly(&[1.0, 7.0, 15.0, 25.5]), "s^3 + 7 s^2 + 15 s + 25.5");
+        assert_eq!(
+            format_poly(&[1.0, 7.0, 15.0, 25.5]),
+            "s^3 + 7 s^2 + 15 s + 25.5"
+        );
         assert_eq!(format_poly(&[-2.0, 0.0, 1.0]), "-2 s^2 + 1");
     }
 }

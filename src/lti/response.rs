@@ -17,9 +17,9 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::LtiError;
 use super::poly::C64;
 use super::tf::TransferFunction;
-use super::LtiError;
 
 /// Poles this close (relative to their modulus) are treated as one repeated pole.
 pub const CLUSTER_RELATIVE: f64 = 1e-6;
@@ -206,7 +206,11 @@ impl StepResponse {
 
     /// y at `n` evenly spaced instants from `t_start` to `t_end` inclusive: (times, values).
     pub fn sample_uniform(&self, t_start: f64, t_end: f64, n: usize) -> (Vec<f64>, Vec<f64>) {
-        let dt = if n > 1 { (t_end - t_start) / (n - 1) as f64 } else { 0.0 };
+        let dt = if n > 1 {
+            (t_end - t_start) / (n - 1) as f64
+        } else {
+            0.0
+        };
         let times: Vec<f64> = (0..n).map(|i| t_start + dt * i as f64).collect();
         let mut values = vec![0.0; n];
         let first = times.iter().position(|&t| t >= self.delay).unwrap_or(n);
@@ -222,7 +226,13 @@ impl StepResponse {
     }
 
     /// Fills `out[i]` with the rational part's derivative at τ₀ + i·h (τ₀ ≥ 0).
-    pub(crate) fn eval_uniform_rational(&self, which: Derivative, tau0: f64, h: f64, out: &mut [f64]) {
+    pub(crate) fn eval_uniform_rational(
+        &self,
+        which: Derivative,
+        tau0: f64,
+        h: f64,
+        out: &mut [f64],
+    ) {
         out.iter_mut().for_each(|v| *v = 0.0);
         for c in &self.clusters {
             let poly = c.poly(which);
@@ -230,7 +240,11 @@ impl StepResponse {
             let mut e = C64::new(0.0, 0.0);
             for (i, v) in out.iter_mut().enumerate() {
                 let tau = tau0 + h * i as f64;
-                e = if i % REANCHOR == 0 { (c.center * tau).exp() } else { e * step };
+                e = if i % REANCHOR == 0 {
+                    (c.center * tau).exp()
+                } else {
+                    e * step
+                };
                 *v += c.weight * (e * horner(poly, tau)).re;
             }
         }
@@ -304,7 +318,8 @@ impl StepResponse {
                     .iter()
                     .map(|c| c.center.re)
                     .fold(0.0, f64::max);
-                let repeated_axis = self.max_frequency(|c| c.center.re == 0.0 && c.multiplicity > 1);
+                let repeated_axis =
+                    self.max_frequency(|c| c.center.re == 0.0 && c.multiplicity > 1);
                 let by_growth = if growth > 0.0 { 4.0 / growth } else { 0.0 };
                 let by_period = if repeated_axis > 0.0 {
                     5.0 * std::f64::consts::TAU / repeated_axis
@@ -349,7 +364,9 @@ fn term_decay_time(magnitude: f64, j: usize, sigma: f64, eps: f64) -> f64 {
     let rate = -sigma;
     let j = j as f64;
     // h(τ) = ln|q| + j ln τ − rate τ − ln eps is concave; start where it decreases.
-    let h = |tau: f64| magnitude.ln() + if j > 0.0 { j * tau.ln() } else { 0.0 } - rate * tau - eps.ln();
+    let h = |tau: f64| {
+        magnitude.ln() + if j > 0.0 { j * tau.ln() } else { 0.0 } - rate * tau - eps.ln()
+    };
     let mut tau = if j > 0.0 { 2.0 * j / rate } else { 0.0 };
     for _ in 0..60 {
         let value = h(tau);
@@ -370,7 +387,9 @@ fn cluster(poles: &[C64]) -> Vec<(C64, usize, f64)> {
     let fastest = poles.iter().map(|p| p.norm()).fold(0.0, f64::max);
     let close = |a: C64, b: C64| {
         let d = (a - b).norm();
-        d == 0.0 || d <= CLUSTER_RELATIVE * a.norm().max(b.norm()) || d <= CLUSTER_ABSOLUTE * fastest
+        d == 0.0
+            || d <= CLUSTER_RELATIVE * a.norm().max(b.norm())
+            || d <= CLUSTER_ABSOLUTE * fastest
     };
     let n = poles.len();
     let mut group: Vec<usize> = (0..n).collect();
@@ -392,10 +411,14 @@ fn cluster(poles: &[C64]) -> Vec<(C64, usize, f64)> {
             continue;
         }
         seen.push(g);
-        let members: Vec<C64> = (0..n).filter(|&k| group[k] == g).map(|k| poles[k]).collect();
+        let members: Vec<C64> = (0..n)
+            .filter(|&k| group[k] == g)
+            .map(|k| poles[k])
+            .collect();
         let m = members.len();
         let mean = members.iter().sum::<C64>() / m as f64;
-        let self_conjugate = members.iter().any(|p| p.im <= 0.0) && members.iter().any(|p| p.im >= 0.0);
+        let self_conjugate =
+            members.iter().any(|p| p.im <= 0.0) && members.iter().any(|p| p.im >= 0.0);
         if self_conjugate {
             out.push((C64::new(mean.re, 0.0), m, 1.0));
         } else if mean.im > 0.0 {
@@ -483,7 +506,9 @@ fn partial_fractions(groups: &[(C64, usize, f64)], zeros: &[C64], scale: f64) ->
 fn differentiate(center: C64, p: &[C64]) -> Vec<C64> {
     (0..p.len())
         .map(|j| {
-            let from_derivative = p.get(j + 1).map_or(C64::new(0.0, 0.0), |&q| q * (j + 1) as f64);
+            let from_derivative = p
+                .get(j + 1)
+                .map_or(C64::new(0.0, 0.0), |&q| q * (j + 1) as f64);
             center * p[j] + from_derivative
         })
         .collect()
@@ -495,10 +520,18 @@ fn classify(tf: &TransferFunction) -> Behaviour {
     if poles.iter().any(|p| p.re > 0.0) {
         return Behaviour::Unstable;
     }
-    let on_axis: Vec<C64> = poles.iter().copied().filter(|p| p.re == 0.0 && p.im != 0.0).collect();
-    let repeated_axis = on_axis
+    let on_axis: Vec<C64> = poles
         .iter()
-        .any(|p| on_axis.iter().filter(|q| *q == p).count() > 1);
+        .copied()
+        .filter(|p| p.re == 0.0 && p.im != 0.0)
+        .collect();
+    // "Repeated" with the tolerance the closed form merges poles with (see [`cluster`]):
+    // j(1 ± 1e-9) from the roots of (s² + 1)² is one double pair there, so y grows as t·sin t.
+    let repeated_axis = on_axis.iter().enumerate().any(|(i, p)| {
+        on_axis[i + 1..]
+            .iter()
+            .any(|q| (p - q).norm() <= CLUSTER_RELATIVE * p.norm().max(q.norm()))
+    });
     if repeated_axis {
         Behaviour::Unstable
     } else if poles.iter().any(|p| p.re == 0.0 && p.im == 0.0) {
@@ -546,15 +579,21 @@ mod tests {
             let exact = 1.0 / 25.0
                 - 0.03 * e * ((2.0 * t).cos() + 4.0 / 3.0 * (2.0 * t).sin())
                 - (-5.0 * t as f64).exp() / 100.0;
-            assert!((r.value(t) - exact).abs() < 1e-16 + 1e-14 * exact.abs(), "t={t}");
+            assert!(
+                (r.value(t) - exact).abs() < 1e-16 + 1e-14 * exact.abs(),
+                "t={t}"
+            );
         }
     }
 
     #[test]
     fn double_pole_is_exact() {
         // (s+5)/(s+10)^2: y = 1/20 − e^{−10t}/20 + (1/2)t e^{−10t}.
-        let r = StepResponse::new(&zpk(&[c(-5.0, 0.0)], &[c(-10.0, 0.0), c(-10.0, 0.0)], 1.0), 1.0)
-            .unwrap();
+        let r = StepResponse::new(
+            &zpk(&[c(-5.0, 0.0)], &[c(-10.0, 0.0), c(-10.0, 0.0)], 1.0),
+            1.0,
+        )
+        .unwrap();
         for t in [0.0, 0.05, 0.1, 0.3, 1.0] {
             let e = (-10.0 * t as f64).exp();
             let exact = 0.05 - e / 20.0 + 0.5 * t * e;
@@ -574,7 +613,11 @@ mod tests {
             let y0 = 1.0 - e * (1.0 + t);
             let y1 = -(1.0 - e * (1.0 + t + t * t / 2.0)); // d/dd of 1/(1+d)·… at d = 0
             let exact = y0 + d * y1;
-            assert!((r.value(t) - exact).abs() < 1e-11, "t={t}: {} vs {exact}", r.value(t));
+            assert!(
+                (r.value(t) - exact).abs() < 1e-11,
+                "t={t}: {} vs {exact}",
+                r.value(t)
+            );
         }
     }
 
@@ -612,9 +655,13 @@ mod tests {
         let r = StepResponse::new(&g, 1.0).unwrap();
         for t in [1e-4, 1e-2, 1.0, 100.0, 1000.0] {
             let (a, b) = (0.01_f64, 1000.0_f64);
-            let exact = 10.0 / (a * b) + 10.0 / (a * (a - b)) * (-a * t).exp()
+            let exact = 10.0 / (a * b)
+                + 10.0 / (a * (a - b)) * (-a * t).exp()
                 + 10.0 / (b * (b - a)) * (-b * t).exp();
-            assert!((r.value(t) - exact).abs() < 1e-12 * exact.abs().max(1e-3), "t={t}");
+            assert!(
+                (r.value(t) - exact).abs() < 1e-12 * exact.abs().max(1e-3),
+                "t={t}"
+            );
         }
     }
 
@@ -628,9 +675,13 @@ mod tests {
 
     #[test]
     fn uniform_sampling_matches_pointwise() {
-        let g = zpk(&[c(-0.5, 0.0)], &[c(-1.0, 2.0), c(-1.0, -2.0), c(-5.0, 0.0)], 0.5)
-            .with_delay(0.2)
-            .unwrap();
+        let g = zpk(
+            &[c(-0.5, 0.0)],
+            &[c(-1.0, 2.0), c(-1.0, -2.0), c(-5.0, 0.0)],
+            0.5,
+        )
+        .with_delay(0.2)
+        .unwrap();
         let r = StepResponse::new(&g, 2.0).unwrap();
         let (t, y) = r.sample_uniform(0.0, 8.0, 2001);
         for (ti, yi) in t.iter().zip(&y) {
@@ -640,7 +691,11 @@ mod tests {
 
     #[test]
     fn derivative_is_the_impulse_response() {
-        let g = zpk(&[c(-3.0, 0.0)], &[c(-1.0, 2.0), c(-1.0, -2.0), c(-5.0, 0.0)], 0.5);
+        let g = zpk(
+            &[c(-3.0, 0.0)],
+            &[c(-1.0, 2.0), c(-1.0, -2.0), c(-5.0, 0.0)],
+            0.5,
+        );
         let r = StepResponse::new(&g, 1.0).unwrap();
         for t in [0.3, 1.0, 2.5] {
             let h = 1e-5;

@@ -7,8 +7,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::poly::{self, C64};
 use super::LtiError;
+use super::poly::{self, C64};
 
 /// The largest order accepted: far above anything taught, and it keeps every computation
 /// (roots, partial fractions, metrics) inside its accuracy and time budget.
@@ -248,7 +248,13 @@ impl TransferFunction {
 
 /// `(s+1-2j)` for the root −1+2j, `s` for the origin.
 fn linear_factor(root: C64) -> String {
-    let signed = |v: f64| if v < 0.0 { format!("-{}", -v) } else { format!("+{v}") };
+    let signed = |v: f64| {
+        if v < 0.0 {
+            format!("-{}", -v)
+        } else {
+            format!("+{v}")
+        }
+    };
     match (root.re == 0.0, root.im == 0.0) {
         (true, true) => "s".into(),
         (_, true) => format!("(s{})", signed(-root.re)),
@@ -275,8 +281,14 @@ fn product_neg_nonzero(roots: &[C64]) -> f64 {
 /// Validates user roots: finite, complex ones in conjugate pairs; returns them exactly
 /// conjugate-closed and sorted.
 fn paired(roots: &[C64], what: &'static str) -> Result<Vec<C64>, LtiError> {
-    if let Some(index) = roots.iter().position(|r| !r.re.is_finite() || !r.im.is_finite()) {
-        return Err(LtiError::NonFiniteRoot { what, index: index + 1 });
+    if let Some(index) = roots
+        .iter()
+        .position(|r| !r.re.is_finite() || !r.im.is_finite())
+    {
+        return Err(LtiError::NonFiniteRoot {
+            what,
+            index: index + 1,
+        });
     }
     let mut lower: Vec<C64> = roots.iter().copied().filter(|r| r.im < 0.0).collect();
     for upper in roots.iter().filter(|r| r.im > 0.0) {
@@ -329,17 +341,30 @@ mod tests {
             assert!((a - b).abs() < 1e-12, "{a} vs {b}");
         }
         // The notes' zpk(FTMF): (s+5.025)(s^2 + 1.975s + 5.075).
-        assert!(cl.poles().iter().any(|p| (p.re + 5.025).abs() < 1e-3 && p.im == 0.0));
+        assert!(
+            cl.poles()
+                .iter()
+                .any(|p| (p.re + 5.025).abs() < 1e-3 && p.im == 0.0)
+        );
     }
 
     #[test]
     fn improper_and_degenerate_systems_are_refused() {
         assert!(matches!(
             TransferFunction::from_coeffs(&[1.0, 0.0, 0.0], &[1.0, 1.0]),
-            Err(LtiError::Improper { num_degree: 2, den_degree: 1 })
+            Err(LtiError::Improper {
+                num_degree: 2,
+                den_degree: 1
+            })
         ));
-        assert_eq!(TransferFunction::from_zpk(&[], &[], 1.0), Err(LtiError::NoPoles));
-        assert_eq!(TransferFunction::from_coeffs(&[1.0], &[3.0]), Err(LtiError::NoPoles));
+        assert_eq!(
+            TransferFunction::from_zpk(&[], &[], 1.0),
+            Err(LtiError::NoPoles)
+        );
+        assert_eq!(
+            TransferFunction::from_coeffs(&[1.0], &[3.0]),
+            Err(LtiError::NoPoles)
+        );
         assert!(TransferFunction::from_coeffs(&[f64::NAN], &[1.0, 1.0]).is_err());
         assert!(TransferFunction::from_coeffs(&[1.0], &[1.0, f64::INFINITY]).is_err());
         assert!(TransferFunction::from_coeffs(&[0.0], &[1.0, 1.0]).is_err());

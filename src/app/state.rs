@@ -1,0 +1,360 @@
+//! The system a student edits, as the app holds it: roots (a real root or a conjugate pair
+//! σ ± jω), the gain, the dead time and the step amplitude, with undo/redo history.
+//! Nothing here draws; the panels read and change these structs.
+
+use serde::{Deserialize, Serialize};
+
+use crate::lti::{C64, LtiError, TransferFunction};
+
+/// Whether a handle on the s-plane is one real root or a conjugate pair.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum RootKind {
+    /// One root on the real axis at `re`.
+    Real,
+    /// Two roots re ± j·im (im ≥ 0; im = 0 is a double real root).
+    Pair,
+}
+
+/// A pole or zero as the student places it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Root {
+    pub kind: RootKind,
+    /// Real part σ (1/s).
+    pub re: f64,
+    /// Imaginary part ω ≥ 0 of the upper member of a pair (rad/s); 0 for a real root.
+    pub im: f64,
+}
+
+impl Root {
+    pub fn real(re: f64) -> Self {
+        Self {
+            kind: RootKind::Real,
+            re,
+            im: 0.0,
+        }
+    }
+
+    pub fn pair(re: f64, im: f64) -> Self {
+        Self {
+            kind: RootKind::Pair,
+            re,
+            im: im.abs(),
+        }
+    }
+
+    /// How many roots of the polynomial this handle stands for.
+    pub fn count(&self) -> usize {
+        match self.kind {
+            RootKind::Real => 1,
+            RootKind::Pair => 2,
+        }
+    }
+
+    /// The roots themselves (a pair gives re + jω, re − jω).
+    pub fn roots(&self) -> Vec<C64> {
+        match self.kind {
+            RootKind::Real => vec![C64::new(self.re, 0.0)],
+            RootKind::Pair => vec![C64::new(self.re, self.im), C64::new(self.re, -self.im)],
+        }
+    }
+
+    /// Moves the root to s (a real root stays on the axis; a pair follows |Im s|).
+    pub fn move_to(&mut self, re: f64, im: f64) {
+        self.re = re;
+        if self.kind == RootKind::Pair {
+            self.im = im.abs();
+        }
+    }
+
+    /// Natural frequency ωn = |s| (rad/s).
+    pub fn natural_frequency(&self) -> f64 {
+        self.re.hypot(self.im)
+    }
+
+    /// Damping ratio ζ = −σ/ωn (1 for a stable real root, undefined at the origin).
+    pub fn damping(&self) -> Option<f64> {
+        let wn = self.natural_frequency();
+        (wn > 0.0).then(|| -self.re / wn)
+    }
+
+    /// The `−1 ± 2j` text of the handle.
+    pub fn label(&self) -> String {
+        let re = crate::lti::expr::format_number(self.re);
+        match self.kind {
+            RootKind::Real => re,
+            RootKind::Pair => format!("{re} ± {}j", crate::lti::expr::format_number(self.im)),
+        }
+    }
+}
+
+/// Which list a root belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum RootRole {
+    Pole,
+    Zero,
+}
+
+impl RootRole {
+    pub fn name(self) -> &'static str {
+        match self {
+            RootRole::Pole => "pole",
+            RootRole::Zero => "zero",
+        }
+    }
+}
+
+/// A root addressed by role and position (0-based) in its list.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub struct RootId {
+    pub role: RootRole,
+    pub index: usize,
+}
+
+impl RootId {
+    /// The accessible label of the handle: "pole 1", "zero 2" (1-based, as people count).
+    pub fn label(&self) -> String {
+        format!("{} {}", self.role.name(), self.index + 1)
+    }
+}
+
+/// What "gain" means in the system panel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum GainMode {
+    /// k of k·Π(s − zᵢ)/Π(s − pⱼ) (MATLAB's zpk gain): moving roots changes G(0).
+    Zpk,
+    /// The static gain G(0) (the notes' "ganho estático"): moving roots keeps it.
+    Static,
+}
+
+/// The system the student edits.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct System {
+    pub poles: Vec<Root>,
+    pub zeros: Vec<Root>,
+    pub gain: f64,
+    pub gain_mode: GainMode,
+    /// Transport delay θ (s).
+    pub delay: f64,
+    /// Step amplitude A.
+    pub amplitude: f64,
+}
+
+impl Default for System {
+    /// The course notes' third-order example: 0.5/((s² + 2s + 5)(s + 5)), step of 2.
+    fn default() -> Self {
+        Self {
+            poles: vec![Root::pair(-1.0, 2.0), Root::real(-5.0)],
+            zeros: vec![],
+            gain: 0.5,
+            gain_mode: GainMode::Zpk,
+            delay: 0.0,
+            amplitude: 2.0,
+        }
+    }
+}
+
+impl System {
+    /// The transfer function, or why there is none (e.g. more zeros than poles).
+    pub fn transfer_function(&self) -> Result<TransferFunction, LtiError> {
+        let roots = |list: &[Root]| list.iter().flat_map(Root::roots).collect::<Vec<_>>();
+        let (zeros, poles) = (roots(&self.zeros), roots(&self.poles));
+        let tf = match self.gain_mode {
+            GainMode::Zpk => TransferFunction::from_zpk(&zeros, &poles, self.gain)?,
+            GainMode::Static => {
+                TransferFunction::from_zpk(&zeros, &poles, 1.0)?.with_dc_gain(self.gain)?
+            }
+        };
+        tf.with_delay(self.delay)
+    }
+
+    pub fn roots(&self, role: RootRole) -> &[Root] {
+        match role {
+            RootRole::Pole => &self.poles,
+            RootRole::Zero => &self.zeros,
+        }
+    }
+
+    pub fn roots_mut(&mut self, role: RootRole) -> &mut Vec<Root> {
+        match role {
+            RootRole::Pole => &mut self.poles,
+            RootRole::Zero => &mut self.zeros,
+        }
+    }
+
+    pub fn root(&self, id: RootId) -> Option<&Root> {
+        self.roots(id.role).get(id.index)
+    }
+
+    pub fn root_mut(&mut self, id: RootId) -> Option<&mut Root> {
+        self.roots_mut(id.role).get_mut(id.index)
+    }
+
+    /// Adds a root and returns its id.
+    pub fn add(&mut self, role: RootRole, root: Root) -> RootId {
+        let list = self.roots_mut(role);
+        list.push(root);
+        RootId {
+            role,
+            index: list.len() - 1,
+        }
+    }
+
+    /// Removes a root; false if there was none with that id.
+    pub fn remove(&mut self, id: RootId) -> bool {
+        let list = self.roots_mut(id.role);
+        if id.index < list.len() {
+            list.remove(id.index);
+            true
+        } else {
+            false
+        }
+    }
+
+    /// Turns a real root into a pair σ ± jω (adding its mirror) or a pair into two real roots.
+    pub fn toggle_pair(&mut self, id: RootId, new_im: f64) {
+        let Some(root) = self.root(id).copied() else {
+            return;
+        };
+        match root.kind {
+            RootKind::Real => {
+                if let Some(r) = self.root_mut(id) {
+                    *r = Root::pair(root.re, new_im);
+                }
+            }
+            RootKind::Pair => {
+                if let Some(r) = self.root_mut(id) {
+                    *r = Root::real(root.re);
+                }
+                self.roots_mut(id.role)
+                    .insert(id.index + 1, Root::real(root.re));
+            }
+        }
+    }
+
+    /// Number of poles (the order) and of zeros, counting pairs twice.
+    pub fn counts(&self) -> (usize, usize) {
+        let count = |l: &[Root]| l.iter().map(Root::count).sum();
+        (count(&self.poles), count(&self.zeros))
+    }
+
+    /// True when some pole lies in the right half plane.
+    pub fn has_rhp_pole(&self) -> bool {
+        self.poles.iter().any(|p| p.re > 0.0)
+    }
+
+    /// Every root id, poles first.
+    pub fn ids(&self) -> Vec<RootId> {
+        let ids = |role: RootRole, n: usize| (0..n).map(move |index| RootId { role, index });
+        ids(RootRole::Pole, self.poles.len())
+            .chain(ids(RootRole::Zero, self.zeros.len()))
+            .collect()
+    }
+}
+
+/// Undo/redo of whole-system snapshots.
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+pub struct History {
+    undo: Vec<System>,
+    redo: Vec<System>,
+}
+
+/// Most snapshots kept.
+const HISTORY_LIMIT: usize = 500;
+
+impl History {
+    /// Records `before` as the state to return to; clears the redo list.
+    pub fn record(&mut self, before: &System) {
+        if self.undo.last() != Some(before) {
+            self.undo.push(before.clone());
+            if self.undo.len() > HISTORY_LIMIT {
+                self.undo.remove(0);
+            }
+        }
+        self.redo.clear();
+    }
+
+    /// Replaces `current` by the previous snapshot; false if there is none.
+    pub fn undo(&mut self, current: &mut System) -> bool {
+        match self.undo.pop() {
+            Some(previous) => {
+                self.redo.push(std::mem::replace(current, previous));
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Re-applies an undone edit; false if there is none.
+    pub fn redo(&mut self, current: &mut System) -> bool {
+        match self.redo.pop() {
+            Some(next) => {
+                self.undo.push(std::mem::replace(current, next));
+                true
+            }
+            None => false,
+        }
+    }
+
+    pub fn can_undo(&self) -> bool {
+        !self.undo.is_empty()
+    }
+
+    pub fn can_redo(&self) -> bool {
+        !self.redo.is_empty()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_is_the_notes_example() {
+        let tf = System::default().transfer_function().unwrap();
+        let den = tf.den();
+        assert!((den[3] - 25.0).abs() < 1e-12 && (den[1] - 7.0).abs() < 1e-12);
+        assert_eq!(tf.gain(), 0.5);
+    }
+
+    #[test]
+    fn static_gain_mode_keeps_g0() {
+        let mut s = System {
+            gain_mode: GainMode::Static,
+            gain: 3.0,
+            ..System::default()
+        };
+        s.poles[1].move_to(-2.0, 0.7);
+        assert!((s.transfer_function().unwrap().dc_gain() - 3.0).abs() < 1e-12);
+        assert_eq!(s.poles[1].im, 0.0, "a real root stays on the axis");
+    }
+
+    #[test]
+    fn undo_and_redo_restore_exactly() {
+        let mut s = System::default();
+        let mut h = History::default();
+        let original = s.clone();
+        h.record(&s);
+        s.poles[0].move_to(-0.3, 1.7);
+        let moved = s.clone();
+        assert!(h.undo(&mut s));
+        assert_eq!(s, original);
+        assert!(h.redo(&mut s));
+        assert_eq!(s, moved);
+        assert!(!h.redo(&mut s));
+    }
+
+    #[test]
+    fn pairs_split_and_join() {
+        let mut s = System::default();
+        let id = RootId {
+            role: RootRole::Pole,
+            index: 0,
+        };
+        s.toggle_pair(id, 0.0);
+        assert_eq!(s.counts(), (3, 0));
+        assert_eq!(s.poles[0], Root::real(-1.0));
+        assert_eq!(s.poles[1], Root::real(-1.0));
+        s.toggle_pair(id, 1.5);
+        assert_eq!(s.counts(), (4, 0));
+    }
+}

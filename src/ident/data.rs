@@ -1,0 +1,1 @@
+//! Loading measured step tests from text files.

@@ -1,0 +1,296 @@
+//! Automatic initial guesses read off the measured curve, the way the notes teach them:
+//! the static gain from the final level, time constants from the 28.3 % and 63.2 % times
+//! (two-point method), ζ from the overshoot, ωd from the oscillation period between
+//! crossings of the final level (or π over the peak time), an integrator's gain from the
+//! final slope. The dead time is the data's 5 % time minus the 5 % time of the guessed model
+//! without delay, which works for every structure alike.
+
+use super::fit::FitData;
+use super::models::{Model, Param, StepSetup, Structure, Values};
+
+/// What the curve shows, relative to the operating point y0 and the final level.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CurveFeatures {
+    pub y0: f64,
+    pub y_final: f64,
+    /// Final slope (units per second) over the last fifth of the record.
+    pub final_slope: f64,
+    /// First times (from t0) at which the normalised response reaches 5 %, 28.3 %, 63.2 %.
+    pub t5: Option<f64>,
+    pub t28: Option<f64>,
+    pub t63: Option<f64>,
+    /// Largest normalised excursion beyond 1 and when (from t0).
+    pub overshoot: f64,
+    pub t_peak: Option<f64>,
+    /// Deepest normalised excursion below 0 (inverse response) and when.
+    pub undershoot: f64,
+    pub t_dip: Option<f64>,
+    /// Period of the oscillation about the final level, from successive upward crossings.
+    pub period: Option<f64>,
+}
+
+/// Mean of y before the step, if there are samples before it.
+pub fn level_before(data: &FitData) -> Option<f64> {
+    let before: Vec<f64> = data
+        .times
+        .iter()
+        .zip(&data.y)
+        .filter(|(t, _)| **t < data.setup.t0)
+        .map(|(_, y)| *y)
+        .collect();
+    (!before.is_empty()).then(|| before.iter().sum::<f64>() / before.len() as f64)
+}
+
+/// Reads the features of the curve; `y0` overrides the level before the step.
+pub fn features(data: &FitData, y0: Option<f64>) -> CurveFeatures {
+    let n = data.y.len();
+    let y0 = y0
+        .or_else(|| level_before(data))
+        .unwrap_or_else(|| data.y.first().copied().unwrap_or(0.0));
+    let tail = (n / 10).max(3).min(n.max(1));
+    let y_final = data.y[n - tail..].iter().sum::<f64>() / tail as f64;
+    let fifth = (n / 5).max(2).min(n);
+    let final_slope = slope(&data.times[n - fifth..], &data.y[n - fifth..]);
+    let span = y_final - y0;
+    let e: Vec<(f64, f64)> = data
+        .times
+        .iter()
+        .zip(&data.y)
+        .filter(|(t, _)| **t >= data.setup.t0)
+        .map(|(t, y)| {
+            (
+                t - data.setup.t0,
+                if span != 0.0 { (y - y0) / span } else { 0.0 },
+            )
+        })
+        .collect();
+    let crossing = |level: f64| first_crossing(&e, level);
+    let (peak_i, peak) =
+        e.iter().enumerate().fold(
+            (0, f64::NEG_INFINITY),
+            |b, (i, p)| if p.1 > b.1 { (i, p.1) } else { b },
+        );
+    let (dip_i, dip) =
+        e.iter().enumerate().fold(
+            (0, f64::INFINITY),
+            |b, (i, p)| if p.1 < b.1 { (i, p.1) } else { b },
+        );
+    let t63 = crossing(0.632);
+    let undershoot = (-dip).max(0.0);
+    CurveFeatures {
+        y0,
+        y_final,
+        final_slope,
+        t5: crossing(0.05),
+        t28: crossing(0.283),
+        t63,
+        overshoot: (peak - 1.0).max(0.0),
+        t_peak: (peak > 1.0).then(|| e[peak_i].0),
+        undershoot,
+        t_dip: (undershoot > 0.0 && dip_i < peak_i).then(|| e[dip_i].0),
+        period: upward_period(&e),
+    }
+}
+
+/// First instant at which the normalised curve reaches `level`, interpolated.
+fn first_crossing(e: &[(f64, f64)], level: f64) -> Option<f64> {
+    e.windows(2).find_map(|w| {
+        let ((ta, a), (tb, b)) = (w[0], w[1]);
+        (a < level && b >= level).then(|| ta + (tb - ta) * (level - a) / (b - a))
+    })
+}
+
+/// Mean time between successive upward crossings of the final level (1), if at least two.
+fn upward_period(e: &[(f64, f64)]) -> Option<f64> {
+    let ups: Vec<f64> = e
+        .windows(2)
+        .filter(|w| w[0].1 < 1.0 && w[1].1 >= 1.0)
+        .map(|w| w[0].0 + (w[1].0 - w[0].0) * (1.0 - w[0].1) / (w[1].1 - w[0].1))
+        .collect();
+    (ups.len() >= 2).then(|| (ups[ups.len() - 1] - ups[0]) / (ups.len() - 1) as f64)
+}
+
+/// Least-squares slope of y over t.
+fn slope(t: &[f64], y: &[f64]) -> f64 {
+    let n = t.len() as f64;
+    let (mt, my) = (t.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
+    let (num, den) = t.iter().zip(y).fold((0.0, 0.0), |(a, b), (t, y)| {
+        (a + (t - mt) * (y - my), b + (t - mt).powi(2))
+    });
+    if den > 0.0 { num / den } else { 0.0 }
+}
+
+/// An initial guess for `structure`; `y0` is the operating point when known.
+pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Values {
+    let f = features(data, y0);
+    let duration = data.duration();
+    let ts = data.sampling_period();
+    let du = data.setup.du;
+    let mut v = Values::default();
+    v.set(Param::Y0, f.y0);
+    v.set(Param::Drift, 0.0);
+    let positive = |x: f64| x.max(2.0 * ts).min(10.0 * duration);
+    // Total lag (sum of time constants plus dead time) from the 63.2 % time.
+    let t63 = f.t63.unwrap_or(duration / 3.0);
+    let two_point = f.t28.map(|t28| 1.5 * (t63 - t28)).filter(|tau| *tau > 0.0);
+    let lag = if structure.delay {
+        two_point.unwrap_or(t63)
+    } else {
+        t63
+    };
+    if structure.integrator {
+        v.set(Param::Kp, f.final_slope / du);
+        // The ramp's asymptote y = y0 + Kp·du·(t − t0 − Td − Tp) crosses y0 at the total lag.
+        let last_t = data.times.last().copied().unwrap_or(data.setup.t0) - data.setup.t0;
+        let last_y = data.y.last().copied().unwrap_or(f.y0);
+        let intercept = if f.final_slope != 0.0 {
+            last_t - (last_y - f.y0) / f.final_slope
+        } else {
+            duration / 5.0
+        };
+        set_lags(&mut v, structure, positive(intercept));
+    } else {
+        v.set(Param::Kp, (f.y_final - f.y0) / du);
+        set_lags(&mut v, structure, positive(lag));
+    }
+    if structure.underdamped {
+        let zeta = if f.overshoot > 1e-3 {
+            let l = f.overshoot.ln();
+            (-l / (std::f64::consts::PI.powi(2) + l * l).sqrt()).clamp(0.02, 0.95)
+        } else {
+            0.8
+        };
+        let omega_d = f.period.map(|p| std::f64::consts::TAU / p);
+        let wn = match omega_d {
+            Some(wd) => wd / (1.0 - zeta * zeta).sqrt(),
+            None => 1.8 / positive(lag),
+        };
+        v.set(Param::Zeta, zeta);
+        v.set(Param::Tw, positive(1.0 / wn));
+    }
+    if structure.zero {
+        let tp = if structure.underdamped {
+            v.get(Param::Tw)
+        } else {
+            v.get(Param::Tp1)
+        };
+        v.set(
+            Param::Tz,
+            if f.t_dip.is_some() {
+                -0.5 * tp
+            } else {
+                0.3 * tp
+            },
+        );
+    }
+    if structure.delay {
+        let own = own_five_percent_time(structure, v, data).unwrap_or(0.0);
+        let td = f.t5.map_or(0.0, |t5| (t5 - own).max(0.0));
+        v.set(Param::Td, td.min(0.9 * duration));
+        if structure.underdamped
+            && f.period.is_none()
+            && let Some(tp) = f.t_peak
+        {
+            let wd = std::f64::consts::PI / (tp - td).max(2.0 * ts);
+            let zeta = v.get(Param::Zeta);
+            v.set(Param::Tw, positive((1.0 - zeta * zeta).sqrt() / wd));
+        }
+    }
+    v
+}
+
+/// Splits a total lag among the structure's time constants.
+fn set_lags(v: &mut Values, structure: Structure, lag: f64) {
+    let shares: &[f64] = match (structure.underdamped, structure.poles) {
+        (true, 3) => &[0.7, 0.3],
+        (true, _) => &[1.0],
+        (false, 1) => &[1.0],
+        (false, 2) => &[0.75, 0.25],
+        (false, _) => &[0.6, 0.25, 0.15],
+    };
+    if structure.underdamped {
+        v.set(Param::Tw, lag * shares[0] / 2.0);
+        if let Some(s) = shares.get(1) {
+            v.set(Param::Tp3, lag * s);
+        }
+    } else {
+        for (p, s) in [Param::Tp1, Param::Tp2, Param::Tp3].into_iter().zip(shares) {
+            v.set(p, lag * s);
+        }
+    }
+}
+
+/// The guessed model's own 5 % time (no delay), from a fine simulation.
+fn own_five_percent_time(structure: Structure, values: Values, data: &FitData) -> Option<f64> {
+    let mut s = structure;
+    s.delay = false;
+    s.drift = false;
+    let mut v = values;
+    v.set(Param::Y0, 0.0);
+    let model = Model::new(s, v);
+    let horizon = data.duration();
+    let times: Vec<f64> = (0..=2000).map(|k| horizon * k as f64 / 2000.0).collect();
+    let y = model
+        .simulate(&StepSetup { t0: 0.0, du: 1.0 }, &times)
+        .ok()?;
+    let kp = v.get(Param::Kp);
+    if kp == 0.0 {
+        return None;
+    }
+    let e: Vec<(f64, f64)> = times.iter().zip(&y).map(|(t, y)| (*t, y / kp)).collect();
+    first_crossing(&e, 0.05)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn guesses_a_p1d_close_to_the_truth() {
+        let s = Structure::parse("P1D").unwrap();
+        let mut truth = Values::default();
+        truth.set(Param::Kp, 2.0);
+        truth.set(Param::Tp1, 5.0);
+        truth.set(Param::Td, 1.5);
+        truth.set(Param::Y0, 10.0);
+        let setup = StepSetup { t0: 3.0, du: 0.5 };
+        let times: Vec<f64> = (0..300).map(|k| 0.1 * k as f64).collect();
+        let y = Model::new(s, truth).simulate(&setup, &times).unwrap();
+        let data = FitData { times, y, setup };
+        let g = auto_guess(&data, s, None);
+        assert!((g.get(Param::Y0) - 10.0).abs() < 1e-12);
+        assert!(
+            (g.get(Param::Kp) - 2.0).abs() < 0.05,
+            "{}",
+            g.get(Param::Kp)
+        );
+        assert!(
+            (g.get(Param::Tp1) - 5.0).abs() < 0.5,
+            "{}",
+            g.get(Param::Tp1)
+        );
+        assert!((g.get(Param::Td) - 1.5).abs() < 0.3, "{}", g.get(Param::Td));
+    }
+
+    #[test]
+    fn guesses_an_underdamped_pair_from_the_period() {
+        let s = Structure::parse("P2U").unwrap();
+        let mut truth = Values::default();
+        truth.set(Param::Kp, 1.0);
+        truth.set(Param::Tw, 1.0 / 0.9659);
+        truth.set(Param::Zeta, 0.1948);
+        truth.set(Param::Y0, 50.0);
+        let setup = StepSetup { t0: 5.0, du: 10.0 };
+        let times: Vec<f64> = (0..400).map(|k| 5.0 + 0.1 * k as f64).collect();
+        let y = Model::new(s, truth).simulate(&setup, &times).unwrap();
+        let data = FitData { times, y, setup };
+        let g = auto_guess(&data, s, Some(50.0));
+        let wn = 1.0 / g.get(Param::Tw);
+        assert!((wn - 0.9659).abs() < 0.1, "{wn}");
+        assert!(
+            (g.get(Param::Zeta) - 0.1948).abs() < 0.05,
+            "{}",
+            g.get(Param::Zeta)
+        );
+    }
+}

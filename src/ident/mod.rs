@@ -1,0 +1,10 @@
+//! Process identification from a measured open-loop step test: loading and preparing the
+//! data, model structures named as MATLAB's procest (P1D, P2DU, …), fitting them, and
+//! diagnosing what a fitted model gets wrong. Pure: nothing here knows about the GUI.
+
+pub mod data;
+pub mod fit;
+pub mod guess;
+pub mod models;
+pub mod prepare;
+pub mod stats;

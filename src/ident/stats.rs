@@ -1,0 +1,112 @@
+//! Small statistics needed by the fit report and the residual diagnosis: quantiles of the
+//! normal and Student-t distributions. Written here because they are a few lines each and a
+//! statistics crate would add a second linear-algebra stack to the build.
+
+/// The standard normal quantile Φ⁻¹(p), 0 < p < 1 (Acklam's rational approximation refined
+/// (relative error below 1.15e-9).
+#[allow(clippy::excessive_precision)] // the published coefficients, digit for digit
+pub fn normal_quantile(p: f64) -> f64 {
+    if p.is_nan() || p <= 0.0 || p >= 1.0 {
+        return f64::NAN;
+    }
+    const A: [f64; 6] = [
+        -3.969683028665376e1,
+        2.209460984245205e2,
+        -2.759285104469687e2,
+        1.383577518672690e2,
+        -3.066479806614716e1,
+        2.506628277459239,
+    ];
+    const B: [f64; 5] = [
+        -5.447609879822406e1,
+        1.615858368580409e2,
+        -1.556989798598866e2,
+        6.680131188771972e1,
+        -1.328068155288572e1,
+    ];
+    const C: [f64; 6] = [
+        -7.784894002430293e-3,
+        -3.223964580411365e-1,
+        -2.400758277161838,
+        -2.549732539343734,
+        4.374664141464968,
+        2.938163982698783,
+    ];
+    const D: [f64; 4] = [
+        7.784695709041462e-3,
+        3.224671290700398e-1,
+        2.445134137142996,
+        3.754408661907416,
+    ];
+    let tail = |q: f64| {
+        (((((C[0] * q + C[1]) * q + C[2]) * q + C[3]) * q + C[4]) * q + C[5])
+            / ((((D[0] * q + D[1]) * q + D[2]) * q + D[3]) * q + 1.0)
+    };
+    if p < 0.02425 {
+        tail((-2.0 * p.ln()).sqrt())
+    } else if p > 1.0 - 0.02425 {
+        -tail((-2.0 * (1.0 - p).ln()).sqrt())
+    } else {
+        let q = p - 0.5;
+        let r = q * q;
+        (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
+            / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
+    }
+}
+
+/// The Student-t quantile t_p(ν): exact for ν = 1, 2, 4; otherwise the Cornish–Fisher
+/// expansion in 1/ν to fourth order (error below 1e-4 at ν = 3, shrinking fast with ν).
+pub fn student_t_quantile(p: f64, dof: f64) -> f64 {
+    if p.is_nan() || p <= 0.0 || p >= 1.0 || dof.is_nan() || dof <= 0.0 {
+        return f64::NAN;
+    }
+    if dof == 1.0 {
+        return (std::f64::consts::PI * (p - 0.5)).tan();
+    }
+    if dof == 2.0 {
+        return (2.0 * p - 1.0) / (2.0 * p * (1.0 - p)).sqrt();
+    }
+    if dof == 4.0 {
+        let a = 4.0 * p * (1.0 - p);
+        let q = (a.sqrt().acos() / 3.0).cos() / a.sqrt();
+        return (p - 0.5).signum() * 2.0 * (q - 1.0).max(0.0).sqrt();
+    }
+    let z = normal_quantile(p);
+    let (z2, v) = (z * z, dof);
+    let g1 = (z2 + 1.0) * z / 4.0;
+    let g2 = ((5.0 * z2 + 16.0) * z2 + 3.0) * z / 96.0;
+    let g3 = (((3.0 * z2 + 19.0) * z2 + 17.0) * z2 - 15.0) * z / 384.0;
+    let g4 = ((((79.0 * z2 + 776.0) * z2 + 1482.0) * z2 - 1920.0) * z2 - 945.0) * z / 92160.0;
+    z + g1 / v + g2 / (v * v) + g3 / (v * v * v) + g4 / (v * v * v * v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normal_quantiles_match_tables() {
+        assert!((normal_quantile(0.975) - 1.959963984540054).abs() < 1e-8);
+        assert!((normal_quantile(0.995) - 2.5758293035489).abs() < 1e-8);
+        assert!((normal_quantile(0.5)).abs() < 1e-12);
+        assert!((normal_quantile(0.001) + 3.090232306167813).abs() < 1e-8);
+    }
+
+    #[test]
+    fn student_t_quantiles_match_tables() {
+        // Two-sided 95 %: t_{0.975}(ν).
+        for (dof, t) in [
+            (1.0, 12.706204736),
+            (2.0, 4.302652730),
+            (3.0, 3.182446305),
+            (4.0, 2.776445105),
+            (10.0, 2.228138852),
+            (30.0, 2.042272456),
+            (100.0, 1.983971519),
+        ] {
+            let got = student_t_quantile(0.975, dof);
+            assert!((got - t).abs() < 2e-3 * t, "ν={dof}: {got} vs {t}");
+        }
+        assert!((student_t_quantile(0.975, 30.0) - 2.042272456).abs() < 1e-5);
+    }
+}
