@@ -1,1 +1,61 @@
-fn main() {}
+//! Cost of loading a measured step test: a generated CSV of 10⁶ rows (t, u, y; a unit step
+//! into 1/(s + 1) sampled at 1 ms, about 24 MB) read from a temporary file by `load_file`,
+//! columns detected automatically. Target: ≤ 1 s.
+//!
+//! Run: `cargo bench --bench data_load`.
+
+use std::fmt::Write as _;
+use std::hint::black_box;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use degrau::ident::data::{LoadOptions, load_file};
+
+const ROWS: u32 = 1_000_000;
+
+/// The file, written once into a temporary directory.
+fn generated_file() -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("degrau-bench-data-load-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let path = dir.join("million.csv");
+    let mut text = String::with_capacity(32 * ROWS as usize);
+    text.push_str("t,u,y\n");
+    for k in 0..ROWS {
+        let t = f64::from(k) * 0.001;
+        let (u, y) = if k >= 10 {
+            (1.0, 1.0 - (-(t - 0.01)).exp())
+        } else {
+            (0.0, 0.0)
+        };
+        // Writing to a String cannot fail.
+        let _ = writeln!(text, "{t},{u},{y:.6}");
+    }
+    std::fs::write(&path, text).expect("the generated file");
+    path
+}
+
+fn bench(c: &mut Criterion) {
+    let path = generated_file();
+    let options = LoadOptions::default();
+    let start = Instant::now();
+    let test = load_file(&path, &options).expect("the generated file loads");
+    println!(
+        "one load of {} rows ({} MB): {:.3} s (target ≤ 1 s)",
+        test.time.len(),
+        std::fs::metadata(&path).map_or(0, |m| m.len() / 1_000_000),
+        start.elapsed().as_secs_f64()
+    );
+    let mut group = c.benchmark_group("data_load");
+    group.sample_size(10);
+    group.bench_function("csv 10^6 rows t,u,y", |b| {
+        b.iter(|| load_file(black_box(&path), black_box(&options)))
+    });
+    group.finish();
+    if let Some(dir) = path.parent() {
+        let _ = std::fs::remove_dir_all(dir);
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -7,5 +7,6 @@
 
 pub mod app;
 pub mod cli;
+pub mod format;
 pub mod ident;
 pub mod lti;

@@ -1,8 +1,9 @@
 //! Properties of the LTI core over random systems (proptest, fixed seed, moderate counts).
 //!
 //! Random stable systems: order 1–8 made of real poles and conjugate pairs with
-//! Re ∈ [−10, −0.05] and Im ∈ [0.05, 10]; up to as many zeros as poles, anywhere (right half
-//! plane included); a random zpk gain of either sign; an optional dead time; a step
+//! Re ∈ [−10, −0.05] and Im ∈ [0.05, 10], a quarter of them with one pole repeated exactly
+//! or nearly (relative offset 1e-10 … 1e-1); up to as many zeros as poles, anywhere (right
+//! half plane included); a random zpk gain of either sign; an optional dead time; a step
 //! amplitude of either sign.
 //!
 //! The metrics are checked against a brute-force `stepinfo` on a dense uniform grid of the
@@ -91,8 +92,21 @@ prop_compose! {
         gain in signed(log_uniform(1e-2, 1e2)),
         delay in prop_oneof![3 => Just(0.0), 1 => 0.0..2.0f64],
         amplitude in signed(log_uniform(0.1, 10.0)),
+        repeat in prop::option::weighted(0.25, (any::<prop::sample::Index>(), -10.0..-1.0f64, any::<bool>())),
     ) -> System {
-        let poles = expand(&pole_specs, order);
+        let mut poles = expand(&pole_specs, order);
+        // Sometimes a repeated or nearly repeated pole (relative offset 0 or 1e-10 … 1e-1):
+        // the clustering of the closed form is part of what is checked.
+        if let Some((which, log_offset, exact)) = repeat {
+            let p = poles[which.index(poles.len())];
+            let factor = if exact { 1.0 } else { 1.0 + 10f64.powf(log_offset) };
+            let q = C64::new(p.re * factor, p.im);
+            if p.im == 0.0 && poles.len() < 8 {
+                poles.push(q);
+            } else if p.im != 0.0 && poles.len() < 7 {
+                poles.extend([q, q.conj()]);
+            }
+        }
         let zeros = expand(&zero_specs, zero_count.min(poles.len()));
         System { poles, zeros, gain, delay, amplitude }
     }
@@ -262,11 +276,11 @@ fn check_metrics(sys: &System) -> Result<(), TestCaseError> {
     let peak_time = i.peak_time.unwrap_or(0.0);
     let span = delta.abs();
     // The grid covers [θ, 1.5·settling] (and the peak), and further until the transients are
-    // below 1e-9·|Δ|: an overshoot inside the band may come late. Longer windows get more
-    // samples, up to 4× as many.
+    // below 1e-9·|Δ|: an overshoot inside the band may come late. 20 000 cells on the first
+    // part; longer windows get more, up to 4× as many.
     let window = (1.5 * settling).max(1.2 * peak_time).max(r.delay() + 1e-3);
     let end = window.max(r.delay() + transient_end(&r, 1e-9 * span));
-    let n = ((40_000.0 * (end - r.delay()) / (window - r.delay())) as usize).clamp(40_000, 160_000);
+    let n = ((20_000.0 * (end - r.delay()) / (window - r.delay())) as usize).clamp(20_000, 80_000);
     let g = dense_grid(&r, end, n + 1);
     let e = |y: f64| y / delta;
 
@@ -280,8 +294,10 @@ fn check_metrics(sys: &System) -> Result<(), TestCaseError> {
     // and on a coarse grid of the tail far beyond), and the grid's last exit agrees.
     let band = 0.02 * span;
     let off = |y: f64| (y - delta).abs() - band;
+    // Inside the jump of a biproper system when y(θ⁺) is already in the band.
+    let at_jump = settling == r.delay() && off(r.value(settling)) <= 0.0;
     prop_assert!(
-        off(r.value(settling)).abs() <= g.eps_y,
+        at_jump || off(r.value(settling)).abs() <= g.eps_y,
         "settling: |y − y∞| − band = {} at {settling}",
         off(r.value(settling))
     );
@@ -307,6 +323,7 @@ fn check_metrics(sys: &System) -> Result<(), TestCaseError> {
     });
     match last_out {
         Some(tg) if (tg - settling).abs() <= g.h * (1.0 + 1e-9) => {}
+        None if at_jump => {}
         Some(tg) if tg > settling => prop_assert!(
             off(g.y[index(&g, tg)]) <= g.eps_y,
             "settling {settling}: the grid is outside the band at {tg}"
@@ -318,11 +335,9 @@ fn check_metrics(sys: &System) -> Result<(), TestCaseError> {
     }
 
     // Extremes of e = y/Δ on the grid.
-    let (mut max_e, mut min_e, mut k_max, mut k_min, mut k_abs) = (f64::MIN, f64::MAX, 0, 0, 0);
+    let (mut max_e, mut min_e, mut k_min, mut k_abs) = (f64::MIN, f64::MAX, 0, 0);
     for (k, &y) in g.y.iter().enumerate() {
-        if e(y) > max_e {
-            (max_e, k_max) = (e(y), k);
-        }
+        max_e = max_e.max(e(y));
         if e(y) < min_e {
             (min_e, k_min) = (e(y), k);
         }
@@ -423,7 +438,7 @@ fn check_no_change(r: &StepResponse, i: &StepInfo) -> Result<(), TestCaseError> 
     let (peak, tp) = (i.peak.unwrap(), i.peak_time.unwrap());
     prop_assert!((r.value(tp).abs() - peak).abs() <= 1e-11 * term_scale(r, tp));
     let end = 1.2 * r.auto_horizon();
-    let g = dense_grid(r, end, 40_001);
+    let g = dense_grid(r, end, 20_001);
     let grid_peak = g.y.iter().fold(0.0f64, |m, y| m.max(y.abs()));
     prop_assert!(grid_peak <= peak + g.eps_y, "peak {peak}, grid {grid_peak}");
     prop_assert!(
@@ -517,8 +532,16 @@ proptest! {
         let scale = term_scale(&r, 1.0);
         let tau = transient_end(&r, 1e-13 * scale);
         let y = r.value(sys.delay + tau);
+        // Poles within 1e-6 (relative) of each other are merged at their mean by the closed
+        // form (documented); that moves its constant term by O(δ²): allow 1e-10 then.
+        let merged = sys.poles.iter().enumerate().any(|(k, p)| {
+            sys.poles[k + 1..]
+                .iter()
+                .any(|q| *q != *p && (p - q).norm() <= 1e-5 * p.norm().max(q.norm()))
+        });
+        let merge_error = if merged { 1e-10 } else { 1e-14 };
         prop_assert!(
-            (y - expected).abs() <= 1e-13 * scale + 1e-14 * expected.abs(),
+            (y - expected).abs() <= 1e-13 * scale + merge_error * expected.abs(),
             "y({}) = {y}, A·G(0) = {expected}",
             sys.delay + tau
         );
@@ -567,7 +590,7 @@ proptest! {
 
 fn any_coefficient() -> impl Strategy<Value = f64> {
     prop_oneof![
-        4 => -100.0..100.0f64,
+        30 => -100.0..100.0f64,
         2 => Just(0.0),
         1 => Just(-0.0),
         1 => Just(1.0),
@@ -593,7 +616,11 @@ proptest! {
         den in prop::collection::vec(any_coefficient(), 0..=8),
         amplitude in any_coefficient(),
         delay in prop_oneof![Just(0.0), any_coefficient()],
+        positive_den in prop::bool::weighted(0.7),
     ) {
+        // Mostly positive denominator coefficients (necessary for stability), so that the
+        // settling path is exercised too, not only the unstable one.
+        let den: Vec<f64> = if positive_den { den.iter().map(|c| c.abs()).collect() } else { den };
         let Ok(g) = TransferFunction::from_coeffs(&num, &den) else { return Ok(()) };
         let _ = (g.dc_gain(), g.stability(), g.describe(), g.num(), g.den());
         let g = match g.clone().with_delay(delay) {

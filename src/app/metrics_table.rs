@@ -4,8 +4,8 @@
 use eframe::egui::{self, Ui};
 
 use crate::app::analysis::Analysis;
-use crate::app::format::sig;
 use crate::app::step_plot::definitions;
+use crate::format::sig;
 use crate::lti::expr::format_number;
 use crate::lti::{Behaviour, StepInfo};
 

@@ -8,7 +8,10 @@
 
 pub mod analysis;
 pub mod export;
-pub mod format;
+pub mod ident_plot;
+pub mod identify;
+pub mod job;
+pub mod landscape_view;
 pub mod metrics_table;
 pub mod presets;
 pub mod splane;
@@ -31,6 +34,12 @@ use crate::lti::StepInfoOptions;
 
 /// Opens the Degrau window and blocks until it is closed.
 pub fn run() -> eframe::Result {
+    run_with(None)
+}
+
+/// Opens the window; with a step test (path and how to read it), in the identification
+/// mode with that file loaded.
+pub fn run_with(test: Option<identify::IdentSettings>) -> eframe::Result {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("Degrau")
@@ -41,13 +50,35 @@ pub fn run() -> eframe::Result {
     eframe::run_native(
         "Degrau",
         options,
-        Box::new(|cc| Ok(Box::new(DegrauApp::from_storage(cc.storage)))),
+        Box::new(move |cc| {
+            let mut app = DegrauApp::from_storage(cc.storage);
+            if let Some(settings) = test {
+                let path = settings.path.clone();
+                app.ident.settings = settings;
+                app.saved.mode = Mode::Identify;
+                app.ident.load_path(&path);
+            }
+            Ok(Box::new(app))
+        }),
     )
+}
+
+/// The two things the app does.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Mode {
+    /// Place poles and zeros, watch the step response.
+    #[default]
+    Design,
+    /// Fit a process model to a measured step test.
+    Identify,
 }
 
 /// What is kept between runs (eframe persistence).
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
+#[serde(default)]
 pub struct Saved {
+    pub mode: Mode,
+    pub ident: identify::IdentSettings,
     pub system: System,
     pub compare: Option<(String, System)>,
     pub splane: SPlaneState,
@@ -72,6 +103,21 @@ pub struct DegrauApp {
     presets: Vec<Preset>,
     export: ExportState,
     plot_rect: Option<egui::Rect>,
+    /// The identification view (its settings live in `saved.ident`).
+    pub ident: identify::IdentView,
+    fonts_ready: bool,
+}
+
+/// Adds egui's bundled monospace font (Hack) as a fallback of the proportional one, so
+/// arrows, ○ and box-drawing characters in the text a student reads are drawn.
+fn use_math_fallback_font(ctx: &egui::Context) {
+    let mut fonts = egui::FontDefinitions::default();
+    if let Some(family) = fonts.families.get_mut(&egui::FontFamily::Proportional)
+        && !family.iter().any(|f| f == "Hack")
+    {
+        family.push("Hack".to_owned());
+    }
+    ctx.set_fonts(fonts);
 }
 
 const UNDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
@@ -88,6 +134,7 @@ impl Default for DegrauApp {
 impl DegrauApp {
     /// An app showing `saved`.
     pub fn new(saved: Saved) -> Self {
+        let saved_ident = saved.ident.clone();
         let analysis = Analysis::new(&saved.system, saved.options);
         let compare_analysis = saved
             .compare
@@ -104,6 +151,8 @@ impl DegrauApp {
             presets: presets(),
             export: ExportState::default(),
             plot_rect: None,
+            ident: identify::IdentView::with_settings(saved_ident),
+            fonts_ready: false,
         }
     }
 
@@ -160,6 +209,10 @@ impl DegrauApp {
 
     /// Draws one frame into `ui` (the whole window).
     pub fn show(&mut self, ui: &mut Ui) {
+        if !self.fonts_ready {
+            use_math_fallback_font(ui.ctx());
+            self.fonts_ready = true;
+        }
         let theme = if self.saved.dark {
             egui::Theme::Dark
         } else {
@@ -172,6 +225,11 @@ impl DegrauApp {
         self.frame_start = self.saved.system.clone();
 
         egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
+        self.dropped_and_pasted(ui);
+        if self.saved.mode == Mode::Identify {
+            self.identify(ui);
+            return;
+        }
         let action = egui::Panel::right("system")
             .resizable(true)
             .default_size(330.0)
@@ -218,7 +276,17 @@ impl DegrauApp {
 
     fn menu_bar(&mut self, ui: &mut Ui) {
         egui::MenuBar::new().ui(ui, |ui| {
+            ui.selectable_value(&mut self.saved.mode, Mode::Design, "Poles and zeros");
+            ui.selectable_value(&mut self.saved.mode, Mode::Identify, "Identify a step test");
+            ui.separator();
             ui.menu_button("File", |ui| {
+                if ui.button("Open a step test…").clicked() {
+                    self.saved.mode = Mode::Identify;
+                    if let Some(p) = rfd::FileDialog::new().pick_file() {
+                        self.ident.load_path(&p.display().to_string());
+                    }
+                    ui.close();
+                }
                 if ui.button("Export…").clicked() {
                     self.export.open = true;
                     ui.close();
@@ -442,6 +510,68 @@ impl DegrauApp {
         }
     }
 
+    /// The identification mode: settings panel on the right, plots in the middle.
+    fn identify(&mut self, ui: &mut Ui) {
+        let action = egui::Panel::right("identification")
+            .resizable(true)
+            .default_size(380.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical()
+                    .show(ui, |ui| self.ident.panel(ui))
+                    .inner
+            })
+            .inner;
+        egui::CentralPanel::default().show(ui, |ui| {
+            ident_plot::marker_controls(ui, &mut self.ident.markers);
+            ident_plot::show(ui, &mut self.ident);
+        });
+        let data = self.ident.fitted.as_ref().map(|f| f.1.clone());
+        let report = self.ident.report.clone();
+        self.ident
+            .landscape
+            .show(ui.ctx(), report.as_ref(), data.as_ref());
+        if let identify::IdentAction::ShowOnSPlane(model) = action {
+            self.show_model(&model);
+        }
+    }
+
+    /// Opens a fitted model in the pole-zero view, stepped by the test's Δu.
+    fn show_model(&mut self, model: &crate::ident::models::Model) {
+        let du = self.ident.fitted.as_ref().map_or(1.0, |f| f.1.setup.du);
+        if let Ok(tf) = model.transfer_function() {
+            self.set_system(System::from_transfer_function(&tf, du));
+            self.saved.mode = Mode::Design;
+        }
+    }
+
+    /// Files dropped on the window load as step tests; text pasted in the identification
+    /// mode (outside a text field) loads as columns.
+    fn dropped_and_pasted(&mut self, ui: &Ui) {
+        let dropped: Vec<String> = ui.input(|i| {
+            i.raw
+                .dropped_files
+                .iter()
+                .map(|f| f.path().display().to_string())
+                .collect()
+        });
+        if let Some(path) = dropped.first() {
+            self.saved.mode = Mode::Identify;
+            self.ident.load_path(path);
+        }
+        let typing = ui.ctx().memory(|m| m.focused().is_some());
+        if self.saved.mode == Mode::Identify && !typing {
+            let pasted: Option<String> = ui.input(|i| {
+                i.events.iter().find_map(|e| match e {
+                    egui::Event::Paste(text) => Some(text.clone()),
+                    _ => None,
+                })
+            });
+            if let Some(text) = pasted {
+                self.ident.load_text(&text);
+            }
+        }
+    }
+
     /// The root currently selected on the s-plane.
     pub fn selected(&self) -> Option<RootId> {
         self.saved.splane.selected
@@ -465,6 +595,7 @@ impl eframe::App for DegrauApp {
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        self.saved.ident = self.ident.settings.clone();
         eframe::set_value(storage, eframe::APP_KEY, &self.saved);
     }
 }

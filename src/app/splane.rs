@@ -8,8 +8,8 @@ use eframe::egui::{
 };
 use serde::{Deserialize, Serialize};
 
-use crate::app::format::sig;
 use crate::app::state::{Root, RootId, RootKind, RootRole, System};
+use crate::format::sig;
 use crate::lti::expr::format_number;
 
 /// Pixels around a handle that grab it.

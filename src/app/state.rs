@@ -242,6 +242,32 @@ impl System {
         self.poles.iter().any(|p| p.re > 0.0)
     }
 
+    /// The system of a transfer function (its roots as handles, its k, its delay), stepped
+    /// by `amplitude`.
+    pub fn from_transfer_function(tf: &TransferFunction, amplitude: f64) -> Self {
+        let handles = |roots: &[C64]| -> Vec<Root> {
+            roots
+                .iter()
+                .filter(|r| r.im >= 0.0)
+                .map(|r| {
+                    if r.im == 0.0 {
+                        Root::real(r.re)
+                    } else {
+                        Root::pair(r.re, r.im)
+                    }
+                })
+                .collect()
+        };
+        Self {
+            poles: handles(tf.poles()),
+            zeros: handles(tf.zeros()),
+            gain: tf.gain(),
+            gain_mode: GainMode::Zpk,
+            delay: tf.delay(),
+            amplitude,
+        }
+    }
+
     /// Every root id, poles first.
     pub fn ids(&self) -> Vec<RootId> {
         let ids = |role: RootRole, n: usize| (0..n).map(move |index| RootId { role, index });
@@ -341,6 +367,16 @@ mod tests {
         assert!(h.redo(&mut s));
         assert_eq!(s, moved);
         assert!(!h.redo(&mut s));
+    }
+
+    #[test]
+    fn a_transfer_function_round_trips() {
+        let s = System {
+            delay: 0.4,
+            ..System::default()
+        };
+        let tf = s.transfer_function().unwrap();
+        assert_eq!(System::from_transfer_function(&tf, s.amplitude), s);
     }
 
     #[test]

@@ -12,7 +12,7 @@ use egui_plot::{
 use serde::{Deserialize, Serialize};
 
 use crate::app::analysis::Analysis;
-use crate::app::format::sig;
+use crate::format::sig;
 use crate::lti::StepInfoOptions;
 use crate::lti::expr::format_number;
 
@@ -220,7 +220,7 @@ fn draw_markers(
     let (Some(info), Some(response)) = (&analysis.info, &analysis.response) else {
         return;
     };
-    let Some(y_final) = info.steady_state else {
+    if info.steady_state.is_none() {
         let y_end = analysis.curve.last().map_or(0.0, |p| p[1]);
         plot.text(
             Text::new(
@@ -235,7 +235,34 @@ fn draw_markers(
             plot.points(point(&format!("peak {}", sig(peak, 4)), tp, y, color));
         }
         return;
+    }
+    let value_at = |t: f64| response.value(t);
+    draw_step_markers(
+        plot,
+        info,
+        &analysis.options,
+        &value_at,
+        0.0,
+        markers,
+        color,
+    );
+}
+
+/// The markers of any step response: `value_at(t)` evaluates the curve, `shift` is added
+/// to the metric times (the step instant of a measured test).
+pub fn draw_step_markers(
+    plot: &mut egui_plot::PlotUi<'_>,
+    info: &crate::lti::StepInfo,
+    options: &StepInfoOptions,
+    value_at: &dyn Fn(f64) -> f64,
+    shift: f64,
+    markers: &Markers,
+    color: Color32,
+) {
+    let Some(y_final) = info.steady_state else {
+        return;
     };
+    let shifted = |t: Option<f64>| t.map(|t| t + shift);
     let delta = y_final - info.initial_value;
     let at = |fraction: f64| info.initial_value + fraction * delta;
     if markers.steady_state {
@@ -246,8 +273,8 @@ fn draw_markers(
         );
     }
     if markers.settling {
-        let band = analysis.options.settling_threshold * delta.abs();
-        let name = format!("±{} % band", pct(analysis.options.settling_threshold));
+        let band = options.settling_threshold * delta.abs();
+        let name = format!("±{} % band", pct(options.settling_threshold));
         for y in [y_final - band, y_final + band] {
             plot.hline(
                 HLine::new(name.clone(), y)
@@ -255,20 +282,24 @@ fn draw_markers(
                     .style(LineStyle::dotted_dense()),
             );
         }
-        if let Some(ts) = info.settling_time {
+        if let Some(ts) = shifted(info.settling_time) {
             let name = format!("settling time {} s", sig(ts, 4));
             plot.vline(
                 VLine::new(name.clone(), ts)
                     .color(color)
                     .style(LineStyle::dashed_dense()),
             );
-            plot.points(point(&name, ts, response.value(ts), color));
+            plot.points(point(&name, ts, value_at(ts), color));
         }
     }
     if markers.rise
-        && let (Some(a), Some(b), Some(tr)) = (info.rise_start, info.rise_end, info.rise_time)
+        && let (Some(a), Some(b), Some(tr)) = (
+            shifted(info.rise_start),
+            shifted(info.rise_end),
+            info.rise_time,
+        )
     {
-        let (lo, hi) = analysis.options.rise_limits;
+        let (lo, hi) = options.rise_limits;
         plot.span(
             Span::new(format!("rise time {} s", sig(tr, 4)), a..=b)
                 .fill(color.gamma_multiply(0.12)),
@@ -277,9 +308,9 @@ fn draw_markers(
         plot.points(point(&format!("{} % crossing", pct(hi)), b, at(hi), color));
     }
     if markers.peak
-        && let (Some(tp), Some(os)) = (info.peak_time, info.overshoot)
+        && let (Some(tp), Some(os)) = (shifted(info.peak_time), info.overshoot)
     {
-        let y = response.value(tp);
+        let y = value_at(tp);
         let name = format!("peak, overshoot {} %", sig(os, 4));
         plot.points(
             point(&name, tp, y, color)
@@ -293,9 +324,9 @@ fn draw_markers(
         );
     }
     if markers.undershoot
-        && let (Some(tu), Some(us)) = (info.undershoot_time, info.undershoot)
+        && let (Some(tu), Some(us)) = (shifted(info.undershoot_time), info.undershoot)
     {
-        let y = response.value(tu);
+        let y = value_at(tu);
         plot.points(
             point(&format!("undershoot {} %", sig(us, 4)), tu, y, color).shape(MarkerShape::Down),
         );

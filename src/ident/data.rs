@@ -1,1 +1,1358 @@
-//! Loading measured step tests from text files.
+//! Loading measured step tests from text files: what a student exports from a data logger,
+//! a spreadsheet, an oscilloscope or MATLAB, turned into time, output and (optionally)
+//! input columns, with errors that name the line and the problem in plain words.
+//!
+//! # Formats
+//! Comma-, tab- or semicolon-separated values, or whitespace-separated numbers as MATLAB's
+//! `load` reads them (runs of spaces collapse); decimal commas (`0,5;1,25`, as Portuguese
+//! spreadsheets export) are read as decimal points. The separator is detected from up to 20
+//! data lines: the first of `;`, tab, `,`, whitespace that splits them into the same number
+//! (≥ 2) of numeric cells. Blank lines and lines starting with `#` or `%` are skipped; the
+//! first non-numeric line is the header. Without one, the last comment line before the data
+//! with as many fields as the data (`# time, control output, …`) names the columns.
+//! `skip_rows` drops metadata lines at the top (counted as lines of the file). Header and
+//! cells may be quoted. A UTF-8 BOM is ignored, UTF-16 (with BOM) is decoded, and a file that
+//! is not UTF-8 is read as Latin-1 (with a note); a zero byte means a binary file.
+//!
+//! # Columns
+//! Each of time, output and input is [`ColumnChoice::Auto`], chosen by name (case-insensitive;
+//! a trailing unit in brackets, `time (s)`, `y [°C]`, is ignored) or by 1-based position, or
+//! [`ColumnChoice::None`]. Automatically:
+//! - **time** is the first column named as in [`TIME_NAMES`]; failing that, with a sampling
+//!   period the file has no time column (t = k·Ts, k counting data rows from 0), and in a file
+//!   without a header column 1 is the time (MATLAB's `[t y]` convention). A time column by
+//!   name wins over a given sampling period (said in a note); choose `None` to force k·Ts.
+//! - **output** and **input** are the first columns named as in [`OUTPUT_NAMES`] and
+//!   [`INPUT_NAMES`] (earlier names in the list first).
+//! - An unnamed input is guessed among the remaining columns: a column is *step-like* when
+//!   it takes at most [`MAX_INPUT_LEVELS`] distinct values and changes between at most 1 in
+//!   10 consecutive rows (a constant column qualifies); exactly one step-like candidate is
+//!   taken as the input (with a note), several are left alone (with a note).
+//! - An unnamed output is the one column left; several left is an error listing them.
+//! - A column with an empty header name (or pandas' `Unnamed: 0`), the row index pandas
+//!   writes, is never chosen automatically.
+//!
+//! # Rows
+//! Every row needs a time: a missing (empty, NaN) time is an error, as is a time smaller than
+//! the previous one. Equal consecutive times are kept with a note; when the input changes
+//! between them, the first row is the state just before the step (TCLab logs t = 0 twice).
+//! Rows whose output or input is missing (empty, `NaN`, `NA`, `N/A`, `null`, `none`) are
+//! skipped with a note naming their lines. Text (or ±inf) in a chosen column is an error;
+//! columns that are not used are not read. Every row must have as many cells as the header
+//! (one extra empty cell from a trailing separator is tolerated). At least [`MIN_SAMPLES`]
+//! samples must remain. Nothing here panics, whatever the bytes.
+//!
+//! Hand-written rather than with the `csv` crate: `csv` cannot collapse runs of whitespace
+//! (MATLAB `.dat`/`.txt`), knows no comment headers or decimal commas, and the formats are
+//! line-based and simple. Cells are borrowed slices of the text (no allocation per cell), so
+//! 10⁶ rows load well within a second.
+
+use std::borrow::Cow;
+use std::convert::Infallible;
+use std::fmt;
+use std::path::Path;
+use std::str::FromStr;
+
+use serde::{Deserialize, Serialize};
+
+/// The fewest samples a step test can have.
+pub const MIN_SAMPLES: usize = 3;
+/// Header names recognised as the time (after lower-casing and dropping a unit in brackets).
+pub const TIME_NAMES: [&str; 8] = [
+    "t", "time", "tempo", "tiempo", "t_s", "time_s", "tempo_s", "seconds",
+];
+/// Header names recognised as the output.
+pub const OUTPUT_NAMES: [&str; 8] = [
+    "y", "output", "saida", "saída", "pv", "t1", "salida", "resposta",
+];
+/// Header names recognised as the input.
+pub const INPUT_NAMES: [&str; 8] = [
+    "u",
+    "input",
+    "entrada",
+    "control output",
+    "q1",
+    "q",
+    "mv",
+    "op",
+];
+/// A step-like column takes at most this many distinct values.
+pub const MAX_INPUT_LEVELS: usize = 8;
+/// Lines looked at to detect the separator.
+const SAMPLE_LINES: usize = 20;
+/// Lines listed in a note before "and N more".
+const LISTED_LINES: usize = 8;
+
+/// How a column is chosen.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum ColumnChoice {
+    /// By the rules of the module docs.
+    #[default]
+    Auto,
+    /// By header name, case-insensitive.
+    Name(String),
+    /// By 1-based position in the file (an index column counts).
+    Position(usize),
+    /// There is no such column (time: t = k·Ts; input: none).
+    None,
+}
+
+impl FromStr for ColumnChoice {
+    type Err = Infallible;
+
+    /// `auto` (or empty), `none`, a 1-based position, or a name: as a command line takes it.
+    fn from_str(s: &str) -> Result<Self, Infallible> {
+        let s = s.trim();
+        Ok(if s.is_empty() || s.eq_ignore_ascii_case("auto") {
+            Self::Auto
+        } else if s.eq_ignore_ascii_case("none") {
+            Self::None
+        } else if let Ok(p) = s.parse::<usize>() {
+            Self::Position(p)
+        } else {
+            Self::Name(s.to_string())
+        })
+    }
+}
+
+/// What to read from a file.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct LoadOptions {
+    pub time: ColumnChoice,
+    pub output: ColumnChoice,
+    pub input: ColumnChoice,
+    /// Seconds between samples, for a file without a time column.
+    pub sampling_period: Option<f64>,
+    /// Lines of the file dropped before anything else (metadata).
+    pub skip_rows: usize,
+}
+
+/// A measured step test, one sample per kept row.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepTest {
+    /// Time of each sample (s), non-decreasing.
+    pub time: Vec<f64>,
+    pub output: Vec<f64>,
+    pub input: Option<Vec<f64>>,
+    /// The time column's header name, `column k` without a header, `k·Ts` when generated.
+    pub time_name: String,
+    pub output_name: String,
+    pub input_name: Option<String>,
+    /// The sampling period the time was generated from, when the file had no time column.
+    pub sampling_period: Option<f64>,
+    /// What the loader decided or skipped, in plain words.
+    pub notes: Vec<String>,
+}
+
+/// Which column a message is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    Time,
+    Output,
+    Input,
+}
+
+impl fmt::Display for Role {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Role::Time => "time",
+            Role::Output => "output",
+            Role::Input => "input",
+        })
+    }
+}
+
+/// Why a file could not be loaded; lines are 1-based, as an editor shows them.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DataError {
+    #[error("could not read {path}: {reason}")]
+    Io { path: String, reason: String },
+    #[error(
+        "line {line} contains a zero byte: this is a binary file (a .mat or a spreadsheet?), \
+         not text; export it as CSV or text"
+    )]
+    Binary { line: usize },
+    #[error("the file is empty")]
+    Empty,
+    #[error("the file has no data: its {lines} line(s) are blank, comments or skipped rows")]
+    NoData { lines: usize },
+    #[error(
+        "line {line}: the data end with {found} sample(s) (rows with a time and an output); \
+         at least {needed} samples are needed"
+    )]
+    TooFewSamples {
+        line: usize,
+        found: usize,
+        needed: usize,
+    },
+    #[error("line {line}, column \"{column}\": \"{text}\" is not a number")]
+    NotANumber {
+        line: usize,
+        column: String,
+        text: String,
+    },
+    #[error(
+        "line {line}, column \"{column}\": the time is missing (empty or NaN); every row needs a time"
+    )]
+    TimeMissing { line: usize, column: String },
+    #[error("line {line}: time {time} comes after {previous}; the time must not decrease")]
+    TimeNotIncreasing {
+        line: usize,
+        time: f64,
+        previous: f64,
+    },
+    #[error("line {line} has {found} value(s), but line {reference} has {expected}")]
+    Ragged {
+        line: usize,
+        found: usize,
+        expected: usize,
+        reference: usize,
+    },
+    #[error(
+        "line {line}: there is no column named \"{name}\" for the {role}; the columns are {available}"
+    )]
+    UnknownColumn {
+        line: usize,
+        role: Role,
+        name: String,
+        available: String,
+    },
+    #[error(
+        "line {line}: column {position} was chosen for the {role}, but the columns are {available}"
+    )]
+    NoSuchPosition {
+        line: usize,
+        role: Role,
+        position: usize,
+        available: String,
+    },
+    #[error(
+        "line {line}: no column is named like a time (t, time, tempo, …) and no sampling period \
+         was given; choose the time column or give the sampling period (the columns are {available})"
+    )]
+    NoTime { line: usize, available: String },
+    #[error("line {line}: the {first} and the {second} are the same column, \"{name}\"")]
+    SameColumn {
+        line: usize,
+        first: Role,
+        second: Role,
+        name: String,
+    },
+    #[error(
+        "line {line}: several columns could be the output ({candidates}); choose one by name or position"
+    )]
+    AmbiguousOutput { line: usize, candidates: String },
+    #[error("line {line}: no column is left for the output (the columns are {available})")]
+    NoOutput { line: usize, available: String },
+    #[error("the sampling period must be a positive number of seconds, not {0}")]
+    BadSamplingPeriod(f64),
+    #[error("line {line} has {found} column(s); a paste needs 2 (t, y) or 3 (t, u, y)")]
+    PasteColumns { line: usize, found: usize },
+}
+
+/// Loads a step test from a file (any of the formats of the module docs).
+pub fn load_file(path: impl AsRef<Path>, options: &LoadOptions) -> Result<StepTest, DataError> {
+    let path = path.as_ref();
+    let bytes = std::fs::read(path).map_err(|e| DataError::Io {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    })?;
+    load_bytes(&bytes, options)
+}
+
+/// Loads a step test from the raw bytes of a file: UTF-8, UTF-16 with BOM, else Latin-1.
+pub fn load_bytes(bytes: &[u8], options: &LoadOptions) -> Result<StepTest, DataError> {
+    let (text, note) = decode(bytes)?;
+    let mut test = load_str(&text, options)?;
+    if let Some(note) = note {
+        test.notes.insert(0, note.to_string());
+    }
+    Ok(test)
+}
+
+/// Loads a step test from text.
+pub fn load_str(text: &str, options: &LoadOptions) -> Result<StepTest, DataError> {
+    if let Some(ts) = options.sampling_period
+        && !(ts.is_finite() && ts > 0.0)
+    {
+        return Err(DataError::BadSamplingPeriod(ts));
+    }
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let layout = Layout::detect(text, options.skip_rows)?;
+    load_with_layout(text, &layout, options, false)
+}
+
+/// Two or three columns pasted from a spreadsheet or the clipboard: names are used when
+/// recognised; otherwise column 1 is the time, and of three columns the step-like one is the
+/// input (t, u, y when that does not decide).
+pub fn from_columns(text: &str) -> Result<StepTest, DataError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let layout = Layout::detect(text, 0)?;
+    if !(2..=3).contains(&layout.columns) {
+        return Err(DataError::PasteColumns {
+            line: layout.defined_at,
+            found: layout.columns,
+        });
+    }
+    load_with_layout(text, &layout, &LoadOptions::default(), true)
+}
+
+/// Decodes a file's bytes; the note says when it was not UTF-8.
+fn decode(bytes: &[u8]) -> Result<(Cow<'_, str>, Option<&'static str>), DataError> {
+    let utf16 = |rest: &[u8], unit: fn([u8; 2]) -> u16| {
+        let units = rest.chunks_exact(2).map(|c| unit([c[0], c[1]]));
+        let text: String = char::decode_utf16(units)
+            .map(|c| c.unwrap_or(char::REPLACEMENT_CHARACTER))
+            .collect();
+        (Cow::Owned(text), Some("the file is UTF-16 text"))
+    };
+    if let Some(rest) = bytes.strip_prefix(&[0xFF, 0xFE]) {
+        return Ok(utf16(rest, u16::from_le_bytes));
+    }
+    if let Some(rest) = bytes.strip_prefix(&[0xFE, 0xFF]) {
+        return Ok(utf16(rest, u16::from_be_bytes));
+    }
+    if let Some(zero) = bytes.iter().position(|&b| b == 0) {
+        let line = 1 + bytes.iter().take(zero).filter(|&&b| b == b'\n').count();
+        return Err(DataError::Binary { line });
+    }
+    Ok(match std::str::from_utf8(bytes) {
+        Ok(text) => (Cow::Borrowed(text), None),
+        Err(_) => (
+            Cow::Owned(bytes.iter().map(|&b| char::from(b)).collect()),
+            Some("the file is not UTF-8: it was read as Latin-1 (Windows) text"),
+        ),
+    })
+}
+
+// ---------------------------------------------------------------------------------------
+// Lines, cells and fields
+
+/// A non-blank line after the skipped rows.
+enum Line<'a> {
+    Comment(&'a str),
+    Data(&'a str),
+}
+
+/// Non-blank lines with their 1-based numbers, the first `skip` lines dropped.
+fn lines(text: &str, skip: usize) -> impl Iterator<Item = (usize, Line<'_>)> {
+    text.split('\n')
+        .enumerate()
+        .skip(skip)
+        .filter_map(|(i, raw)| {
+            let trimmed = raw.trim();
+            if trimmed.is_empty() {
+                None
+            } else if trimmed.starts_with('#') || trimmed.starts_with('%') {
+                Some((i + 1, Line::Comment(trimmed)))
+            } else {
+                // Untrimmed: a leading tab is an empty first cell of a tab-separated row.
+                Some((i + 1, Line::Data(raw.strip_suffix('\r').unwrap_or(raw))))
+            }
+        })
+}
+
+/// A cell's content.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Cell {
+    Value(f64),
+    Missing,
+    Text,
+}
+
+/// Reads a cell: a finite number (decimal point or a single decimal comma), a missing value,
+/// or text.
+fn parse_cell(s: &str) -> Cell {
+    if s.is_empty() {
+        return Cell::Missing;
+    }
+    match s.parse::<f64>() {
+        Ok(v) if v.is_finite() => Cell::Value(v),
+        Ok(v) if v.is_nan() => Cell::Missing,
+        Ok(_) => Cell::Text,
+        Err(_) if is_missing_word(s) => Cell::Missing,
+        Err(_) if s.contains(',') => parse_decimal_comma(s),
+        Err(_) => Cell::Text,
+    }
+}
+
+fn is_missing_word(s: &str) -> bool {
+    ["na", "n/a", "null", "none"]
+        .iter()
+        .any(|w| s.eq_ignore_ascii_case(w))
+}
+
+/// `1,25` as 1.25, through a stack buffer (no allocation).
+fn parse_decimal_comma(s: &str) -> Cell {
+    let mut buf = [0u8; 64];
+    let bytes = s.as_bytes();
+    let commas = bytes.iter().filter(|&&b| b == b',').count();
+    if commas != 1 || bytes.contains(&b'.') {
+        return Cell::Text;
+    }
+    let Some(out) = buf.get_mut(..bytes.len()) else {
+        return Cell::Text;
+    };
+    for (o, &b) in out.iter_mut().zip(bytes) {
+        *o = if b == b',' { b'.' } else { b };
+    }
+    match std::str::from_utf8(out).map(str::parse::<f64>) {
+        Ok(Ok(v)) if v.is_finite() => Cell::Value(v),
+        _ => Cell::Text,
+    }
+}
+
+/// How the cells of a line are separated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Delimiter {
+    Char(char),
+    Whitespace,
+}
+
+/// In order of preference when several split the data equally well.
+const DELIMITERS: [Delimiter; 4] = [
+    Delimiter::Char(';'),
+    Delimiter::Char('\t'),
+    Delimiter::Char(','),
+    Delimiter::Whitespace,
+];
+
+impl Delimiter {
+    fn describe(self) -> &'static str {
+        match self {
+            Delimiter::Char(';') => "semicolon-separated",
+            Delimiter::Char('\t') => "tab-separated",
+            Delimiter::Char(_) => "comma-separated",
+            Delimiter::Whitespace => "whitespace-separated (as MATLAB's load)",
+        }
+    }
+}
+
+/// The cells of a line, trimmed and unquoted, as slices of it.
+struct Fields<'a> {
+    rest: Option<&'a str>,
+    delimiter: Delimiter,
+}
+
+fn fields(line: &str, delimiter: Delimiter) -> Fields<'_> {
+    Fields {
+        rest: Some(line),
+        delimiter,
+    }
+}
+
+/// A quoted cell's content and what follows the closing quote.
+fn split_quoted(s: &str) -> Option<(&str, &str)> {
+    let q = s.strip_prefix('"')?;
+    Some(match q.find('"') {
+        Some(j) => (&q[..j], &q[j + 1..]),
+        None => (q, ""),
+    })
+}
+
+impl<'a> Iterator for Fields<'a> {
+    type Item = &'a str;
+
+    fn next(&mut self) -> Option<&'a str> {
+        let rest = self.rest?;
+        match self.delimiter {
+            Delimiter::Whitespace => {
+                let s = rest.trim_start();
+                if s.is_empty() {
+                    self.rest = None;
+                    return None;
+                }
+                let (field, after) = split_quoted(s).unwrap_or_else(|| {
+                    let end = s.find(char::is_whitespace).unwrap_or(s.len());
+                    s.split_at(end)
+                });
+                self.rest = Some(after);
+                Some(field.trim())
+            }
+            Delimiter::Char(d) => {
+                let s = rest.trim_start_matches(|c: char| c == ' ' || (c == '\t' && d != '\t'));
+                if let Some((field, after)) = split_quoted(s) {
+                    self.rest = after.find(d).map(|k| &after[k + d.len_utf8()..]);
+                    return Some(field.trim());
+                }
+                Some(match s.find(d) {
+                    Some(k) => {
+                        self.rest = Some(&s[k + d.len_utf8()..]);
+                        s[..k].trim()
+                    }
+                    None => {
+                        self.rest = None;
+                        s.trim()
+                    }
+                })
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Layout: separator, header, number of columns
+
+/// Where the column names came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Header {
+    /// A header row on this line.
+    Row(usize),
+    /// A comment line before the data.
+    Comment(usize),
+}
+
+/// How a file's table is laid out.
+#[derive(Debug, Clone, PartialEq)]
+struct Layout {
+    delimiter: Delimiter,
+    decimal_comma: bool,
+    header: Option<Header>,
+    /// One per column: the header's, or `column k`.
+    names: Vec<String>,
+    columns: usize,
+    /// The line that defines the columns: the header row, else the first data row.
+    defined_at: usize,
+    /// Mean length of the sampled data lines (bytes), to size the columns.
+    row_bytes: usize,
+}
+
+impl Layout {
+    fn detect(text: &str, skip: usize) -> Result<Self, DataError> {
+        let mut comments = Vec::new();
+        let mut data = Vec::new();
+        for (no, line) in lines(text, skip) {
+            match line {
+                Line::Comment(c) if data.is_empty() => comments.push((no, c)),
+                Line::Comment(_) => {}
+                Line::Data(d) => data.push((no, d)),
+            }
+            if data.len() > SAMPLE_LINES {
+                break;
+            }
+        }
+        let Some(&(first_no, first)) = data.first() else {
+            return Err(if text.trim().is_empty() {
+                DataError::Empty
+            } else {
+                DataError::NoData {
+                    lines: text.lines().count(),
+                }
+            });
+        };
+        let sample: Vec<&str> = data
+            .iter()
+            .skip(usize::from(data.len() > 1))
+            .map(|d| d.1)
+            .collect();
+        let delimiter = choose_delimiter(&sample);
+        let decimal_comma = sample.iter().any(|l| {
+            fields(l, delimiter).any(|c| c.contains(',') && matches!(parse_cell(c), Cell::Value(_)))
+        });
+        let first_cells: Vec<&str> = fields(first, delimiter).collect();
+        let is_header = first_cells.iter().any(|c| parse_cell(c) == Cell::Text);
+        let mut layout = Self {
+            delimiter,
+            decimal_comma,
+            header: None,
+            names: Vec::new(),
+            columns: first_cells.len(),
+            defined_at: first_no,
+            row_bytes: 1 + sample.iter().map(|l| l.len() + 1).sum::<usize>() / sample.len().max(1),
+        };
+        if is_header {
+            let mut names: Vec<String> = first_cells.iter().map(|c| c.to_string()).collect();
+            let next_count = data.get(1).map(|d| fields(d.1, delimiter).count());
+            if names.len() > 1
+                && names.last().is_some_and(String::is_empty)
+                && next_count == Some(names.len() - 1)
+            {
+                names.pop(); // a trailing separator after the last name
+            }
+            layout.columns = names.len();
+            layout.names = names;
+            layout.header = Some(Header::Row(first_no));
+        } else if let Some((no, names)) = comment_header(&comments, delimiter, layout.columns) {
+            layout.names = names;
+            layout.header = Some(Header::Comment(no));
+        } else {
+            layout.names = (1..=layout.columns)
+                .map(|k| format!("column {k}"))
+                .collect();
+        }
+        Ok(layout)
+    }
+
+    /// The line of the header row, which is not data.
+    fn header_row(&self) -> Option<usize> {
+        match self.header {
+            Some(Header::Row(no)) => Some(no),
+            _ => None,
+        }
+    }
+
+    /// A column by name: exactly (ignoring case and quotes), else ignoring units.
+    fn find(&self, name: &str) -> Option<usize> {
+        let exact = name.trim().trim_matches('"').to_lowercase();
+        self.names
+            .iter()
+            .position(|n| n.to_lowercase() == exact)
+            .or_else(|| {
+                let wanted = normalise(name);
+                self.names.iter().position(|n| normalise(n) == wanted)
+            })
+            .filter(|_| !exact.is_empty())
+    }
+
+    fn name(&self, column: usize) -> String {
+        self.names
+            .get(column)
+            .cloned()
+            .unwrap_or_else(|| format!("column {}", column + 1))
+    }
+
+    /// The columns, for a message.
+    fn available(&self) -> String {
+        if self.header.is_none() {
+            return format!(
+                "{} unnamed column(s) (no header row): choose by position, 1 to {}",
+                self.columns, self.columns
+            );
+        }
+        self.names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| format!("{} \"{n}\"", i + 1))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    fn describe(&self) -> String {
+        let decimal = if self.decimal_comma {
+            " with decimal commas"
+        } else {
+            ""
+        };
+        let header = match self.header {
+            Some(Header::Row(no)) => format!("header on line {no}"),
+            Some(Header::Comment(no)) => format!("column names from the comment on line {no}"),
+            None => "no header row".to_string(),
+        };
+        format!("read as {}{decimal}, {header}", self.delimiter.describe())
+    }
+}
+
+/// The separator that splits the sample lines into the most rows of equally many (≥ 2)
+/// numeric cells; if none does, the first that splits the first line in two or more.
+fn choose_delimiter(sample: &[&str]) -> Delimiter {
+    let score = |d: Delimiter| -> usize {
+        let Some(first) = sample.first() else {
+            return 0;
+        };
+        let k = fields(first, d).count();
+        if k < 2 {
+            return 0;
+        }
+        let numeric_row = |l: &str| {
+            let mut n = 0;
+            fields(l, d).all(|c| {
+                n += 1;
+                parse_cell(c) != Cell::Text
+            }) && n == k
+        };
+        sample.iter().filter(|l| numeric_row(l)).count()
+    };
+    let mut best = (0, None);
+    for d in DELIMITERS {
+        let s = score(d);
+        if s > best.0 {
+            best = (s, Some(d));
+        }
+    }
+    best.1
+        .or_else(|| {
+            let first = sample.first()?;
+            DELIMITERS
+                .into_iter()
+                .find(|&d| fields(first, d).count() >= 2)
+        })
+        .unwrap_or(Delimiter::Whitespace)
+}
+
+/// The last comment before the data that splits into `columns` names, not all numbers.
+fn comment_header(
+    comments: &[(usize, &str)],
+    delimiter: Delimiter,
+    columns: usize,
+) -> Option<(usize, Vec<String>)> {
+    comments.iter().rev().find_map(|&(no, c)| {
+        let body = c.trim_start_matches(['#', '%']);
+        let names: Vec<String> = fields(body, delimiter).map(str::to_string).collect();
+        let named = names.iter().any(|n| parse_cell(n) == Cell::Text);
+        (names.len() == columns && named).then_some((no, names))
+    })
+}
+
+/// A header name as matched against the known names: lower case, unquoted, without a
+/// trailing unit in brackets (`Time (s)` → `time`, `y(t)` → `y`).
+fn normalise(name: &str) -> String {
+    let mut n = name.trim().trim_matches('"').trim().to_lowercase();
+    for (open, close) in [('(', ')'), ('[', ']')] {
+        if n.ends_with(close)
+            && let Some(k) = n.rfind(open)
+            && k > 0
+        {
+            n.truncate(k);
+            n = n.trim_end().to_string();
+        }
+    }
+    n
+}
+
+/// A pandas row index: no name, or `Unnamed: k`.
+fn is_index_name(name: &str) -> bool {
+    let n = normalise(name);
+    n.is_empty() || n.starts_with("unnamed")
+}
+
+// ---------------------------------------------------------------------------------------
+// Choosing the columns
+
+/// The columns to read, decided before reading the rows (guesses need the values).
+#[derive(Debug, Clone)]
+struct Plan {
+    time: Option<usize>,
+    output: Option<usize>,
+    input: Option<usize>,
+    /// The input is to be guessed among `candidates`.
+    guess_input: bool,
+    /// Columns an automatic output or input may come from.
+    candidates: Vec<usize>,
+    notes: Vec<String>,
+}
+
+impl Plan {
+    fn new(layout: &Layout, options: &LoadOptions, paste: bool) -> Result<Self, DataError> {
+        let excluded: Vec<bool> = (0..layout.columns)
+            .map(|i| layout.header.is_some() && is_index_name(&layout.name(i)))
+            .collect();
+        let by_alias = |aliases: &[&str], taken: &[Option<usize>]| {
+            aliases.iter().find_map(|alias| {
+                (0..layout.columns).find(|&i| {
+                    !excluded[i]
+                        && !taken.contains(&Some(i))
+                        && normalise(&layout.name(i)) == *alias
+                })
+            })
+        };
+        let mut notes = Vec::new();
+        let time = match explicit(layout, Role::Time, &options.time)? {
+            Some(i) => Some(i),
+            None if options.time != ColumnChoice::Auto => None,
+            None => by_alias(&TIME_NAMES, &[]).or_else(|| {
+                let first_is_time = options.sampling_period.is_none()
+                    && layout.columns >= 2
+                    && (layout.header.is_none() || paste);
+                first_is_time.then_some(0)
+            }),
+        };
+        match (time, options.sampling_period) {
+            (None, None) => {
+                return Err(DataError::NoTime {
+                    line: layout.defined_at,
+                    available: layout.available(),
+                });
+            }
+            (Some(i), Some(ts)) => notes.push(format!(
+                "the sampling period given ({ts} s) was not used: the time is read from column \"{}\"",
+                layout.name(i)
+            )),
+            _ => {}
+        }
+        let output = match &options.output {
+            ColumnChoice::None => {
+                return Err(DataError::NoOutput {
+                    line: layout.defined_at,
+                    available: layout.available(),
+                });
+            }
+            ColumnChoice::Auto => by_alias(&OUTPUT_NAMES, &[time]),
+            choice => explicit(layout, Role::Output, choice)?,
+        };
+        let input = match &options.input {
+            ColumnChoice::Auto => by_alias(&INPUT_NAMES, &[time, output]),
+            choice => explicit(layout, Role::Input, choice)?,
+        };
+        check_distinct(
+            layout,
+            [
+                (Role::Time, time),
+                (Role::Output, output),
+                (Role::Input, input),
+            ],
+        )?;
+        let guess_input = options.input == ColumnChoice::Auto && input.is_none();
+        let candidates = (0..layout.columns)
+            .filter(|&i| !excluded[i] && ![time, output, input].contains(&Some(i)))
+            .collect();
+        if excluded.iter().any(|&e| e) && (output.is_none() || guess_input || time.is_none()) {
+            let ignored: Vec<String> = (0..layout.columns)
+                .filter(|&i| excluded[i])
+                .map(|i| (i + 1).to_string())
+                .collect();
+            notes.push(format!(
+                "column(s) {} have no name (a row index, as pandas writes): not used",
+                ignored.join(", ")
+            ));
+        }
+        Ok(Self {
+            time,
+            output,
+            input,
+            guess_input,
+            candidates,
+            notes,
+        })
+    }
+
+    /// The columns whose values must be read.
+    fn needed(&self, columns: usize) -> Vec<bool> {
+        let guessing = self.guess_input || self.output.is_none();
+        (0..columns)
+            .map(|i| {
+                [self.time, self.output, self.input].contains(&Some(i))
+                    || (guessing && self.candidates.contains(&i))
+            })
+            .collect()
+    }
+
+    /// Fills in the guessed input and the output left over, from the values read.
+    fn finish(&mut self, layout: &Layout, rows: &Rows, paste: bool) -> Result<(), DataError> {
+        if self.guess_input {
+            self.guess_input_column(layout, rows);
+        }
+        if self.output.is_some() {
+            return Ok(());
+        }
+        let left: Vec<usize> = self
+            .candidates
+            .iter()
+            .copied()
+            .filter(|&i| Some(i) != self.input)
+            .collect();
+        match left[..] {
+            [only] => {
+                self.output = Some(only);
+                if layout.header.is_some() {
+                    self.notes.push(format!(
+                        "column \"{}\" was taken as the output: it is the only column left",
+                        layout.name(only)
+                    ));
+                }
+                Ok(())
+            }
+            [] => Err(DataError::NoOutput {
+                line: layout.defined_at,
+                available: layout.available(),
+            }),
+            [.., last] if paste && self.input.is_none() && left.len() == 2 => {
+                // A pasted t, u, y.
+                self.output = Some(last);
+                self.input = left.first().copied();
+                self.notes
+                    .push("the pasted columns were read as t, u, y".to_string());
+                Ok(())
+            }
+            _ => Err(DataError::AmbiguousOutput {
+                line: layout.defined_at,
+                candidates: left
+                    .iter()
+                    .map(|&i| format!("{} \"{}\"", i + 1, layout.name(i)))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            }),
+        }
+    }
+
+    fn guess_input_column(&mut self, layout: &Layout, rows: &Rows) {
+        let step_like: Vec<usize> = self
+            .candidates
+            .iter()
+            .copied()
+            .filter(|&i| rows.bad_at(i).is_none() && rows.column(i).is_some_and(is_step_like))
+            .collect();
+        let leaves_output = self.output.is_some() || self.candidates.len() >= 2;
+        match step_like[..] {
+            [only] if leaves_output => {
+                self.input = Some(only);
+                self.notes.push(format!(
+                    "column \"{}\" was taken as the input: it is piecewise constant with few levels",
+                    layout.name(only)
+                ));
+            }
+            [_, _, ..] => self.notes.push(format!(
+                "columns {} all look like an input (piecewise constant): none was taken; choose one",
+                step_like
+                    .iter()
+                    .map(|&i| format!("\"{}\"", layout.name(i)))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )),
+            _ => {}
+        }
+    }
+}
+
+/// A column chosen by name or position (`None` for Auto and None).
+fn explicit(
+    layout: &Layout,
+    role: Role,
+    choice: &ColumnChoice,
+) -> Result<Option<usize>, DataError> {
+    match choice {
+        ColumnChoice::Name(name) => {
+            layout
+                .find(name)
+                .map(Some)
+                .ok_or_else(|| DataError::UnknownColumn {
+                    line: layout.defined_at,
+                    role,
+                    name: name.clone(),
+                    available: layout.available(),
+                })
+        }
+        ColumnChoice::Position(p) if (1..=layout.columns).contains(p) => Ok(Some(p - 1)),
+        ColumnChoice::Position(p) => Err(DataError::NoSuchPosition {
+            line: layout.defined_at,
+            role,
+            position: *p,
+            available: layout.available(),
+        }),
+        ColumnChoice::Auto | ColumnChoice::None => Ok(None),
+    }
+}
+
+fn check_distinct(layout: &Layout, chosen: [(Role, Option<usize>); 3]) -> Result<(), DataError> {
+    for (k, &(first, a)) in chosen.iter().enumerate() {
+        for &(second, b) in &chosen[k + 1..] {
+            if let (Some(a), Some(b)) = (a, b)
+                && a == b
+            {
+                return Err(DataError::SameColumn {
+                    line: layout.defined_at,
+                    first,
+                    second,
+                    name: layout.name(a),
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// At most [`MAX_INPUT_LEVELS`] distinct values, changing between at most 1 in 10 rows.
+fn is_step_like(values: &[f64]) -> bool {
+    let present: Vec<f64> = values.iter().copied().filter(|v| !v.is_nan()).collect();
+    let changes = present.windows(2).filter(|w| w[0] != w[1]).count();
+    if present.is_empty() || changes * 10 > present.len() {
+        return false;
+    }
+    let mut levels: Vec<f64> = Vec::new();
+    for &v in &present {
+        if !levels.contains(&v) {
+            if levels.len() == MAX_INPUT_LEVELS {
+                return false;
+            }
+            levels.push(v);
+        }
+    }
+    true
+}
+
+// ---------------------------------------------------------------------------------------
+// Reading the rows
+
+/// The needed columns of every data row; NaN marks a missing cell.
+struct Rows {
+    /// File line of each row.
+    lines: Vec<usize>,
+    values: Vec<Option<Vec<f64>>>,
+    /// The first text cell of each needed column.
+    bad: Vec<Option<(usize, String)>>,
+    /// The last line looked at.
+    last_line: usize,
+}
+
+impl Rows {
+    fn read(text: &str, skip: usize, layout: &Layout, needed: &[bool]) -> Result<Self, DataError> {
+        let estimate = text.len() / layout.row_bytes.max(1) + 1;
+        let mut rows = Self {
+            lines: Vec::with_capacity(estimate),
+            values: needed
+                .iter()
+                .map(|&n| n.then(|| Vec::with_capacity(estimate)))
+                .collect(),
+            bad: vec![None; needed.len()],
+            last_line: layout.defined_at,
+        };
+        let header_row = layout.header_row();
+        for (no, line) in lines(text, skip) {
+            rows.last_line = no;
+            let Line::Data(line) = line else { continue };
+            if Some(no) == header_row {
+                continue;
+            }
+            rows.read_row(no, line, layout)?;
+        }
+        Ok(rows)
+    }
+
+    fn read_row(&mut self, no: usize, line: &str, layout: &Layout) -> Result<(), DataError> {
+        let mut count = 0;
+        let mut last_empty = false;
+        for (c, cell) in fields(line, layout.delimiter).enumerate() {
+            count += 1;
+            last_empty = cell.is_empty();
+            let Some(Some(column)) = self.values.get_mut(c) else {
+                continue;
+            };
+            column.push(match parse_cell(cell) {
+                Cell::Value(v) => v,
+                Cell::Missing => f64::NAN,
+                Cell::Text => {
+                    if let Some(slot @ None) = self.bad.get_mut(c) {
+                        *slot = Some((no, cell.to_string()));
+                    }
+                    f64::NAN
+                }
+            });
+        }
+        let tolerated = count == layout.columns + 1 && last_empty;
+        if count != layout.columns && !tolerated {
+            return Err(DataError::Ragged {
+                line: no,
+                found: count,
+                expected: layout.columns,
+                reference: layout.defined_at,
+            });
+        }
+        self.lines.push(no);
+        Ok(())
+    }
+
+    fn column(&self, i: usize) -> Option<&[f64]> {
+        self.values.get(i)?.as_deref()
+    }
+
+    fn bad_at(&self, i: usize) -> Option<&(usize, String)> {
+        self.bad.get(i)?.as_ref()
+    }
+
+    fn take(&mut self, i: usize) -> Vec<f64> {
+        self.values
+            .get_mut(i)
+            .and_then(Option::take)
+            .unwrap_or_default()
+    }
+}
+
+fn load_with_layout(
+    text: &str,
+    layout: &Layout,
+    options: &LoadOptions,
+    paste: bool,
+) -> Result<StepTest, DataError> {
+    let mut plan = Plan::new(layout, options, paste)?;
+    let mut rows = Rows::read(
+        text,
+        options.skip_rows,
+        layout,
+        &plan.needed(layout.columns),
+    )?;
+    plan.finish(layout, &rows, paste)?;
+    let output = plan.output.ok_or_else(|| DataError::NoOutput {
+        line: layout.defined_at,
+        available: layout.available(),
+    })?;
+    let chosen = [plan.time, Some(output), plan.input];
+    if let Some((line, column, text)) = chosen
+        .iter()
+        .flatten()
+        .filter_map(|&i| rows.bad_at(i).map(|(l, t)| (*l, layout.name(i), t.clone())))
+        .min_by_key(|b| b.0)
+    {
+        return Err(DataError::NotANumber { line, column, text });
+    }
+
+    let time = match plan.time {
+        Some(i) => {
+            let time = rows.take(i);
+            check_time(&time, &rows.lines, &layout.name(i))?;
+            time
+        }
+        None => {
+            let ts = options.sampling_period.unwrap_or(1.0);
+            plan.notes.push(format!(
+                "the file has no time column: t = k·Ts with Ts = {ts} s (k = 0, 1, …)"
+            ));
+            (0..rows.lines.len()).map(|k| k as f64 * ts).collect()
+        }
+    };
+    let output_values = rows.take(output);
+    let input_values = plan.input.map(|i| rows.take(i));
+    let mut test = StepTest {
+        time,
+        output: output_values,
+        input: input_values,
+        time_name: plan
+            .time
+            .map_or_else(|| "k·Ts".to_string(), |i| layout.name(i)),
+        output_name: layout.name(output),
+        input_name: plan.input.map(|i| layout.name(i)),
+        sampling_period: plan
+            .time
+            .is_none()
+            .then_some(options.sampling_period)
+            .flatten(),
+        notes: vec![layout.describe()],
+    };
+    test.notes.append(&mut plan.notes);
+    let lines = drop_missing(&mut test, &rows.lines);
+    note_equal_times(&mut test, &lines);
+    if test.time.len() < MIN_SAMPLES {
+        return Err(DataError::TooFewSamples {
+            line: rows.last_line,
+            found: test.time.len(),
+            needed: MIN_SAMPLES,
+        });
+    }
+    Ok(test)
+}
+
+/// Every row has a time, and it never decreases.
+fn check_time(time: &[f64], lines: &[usize], column: &str) -> Result<(), DataError> {
+    let line = |k: usize| lines.get(k).copied().unwrap_or(0);
+    if let Some(k) = time.iter().position(|t| t.is_nan()) {
+        return Err(DataError::TimeMissing {
+            line: line(k),
+            column: column.to_string(),
+        });
+    }
+    match time.windows(2).position(|w| w[1] < w[0]) {
+        Some(k) => Err(DataError::TimeNotIncreasing {
+            line: line(k + 1),
+            time: time[k + 1],
+            previous: time[k],
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Drops the rows whose output or input is missing, with a note; returns the kept rows' lines.
+fn drop_missing(test: &mut StepTest, lines: &[usize]) -> Vec<usize> {
+    let input = test.input.as_deref();
+    let keep: Vec<bool> = (0..test.output.len())
+        .map(|k| {
+            !test.output[k].is_nan() && input.is_none_or(|u| u.get(k).is_some_and(|v| !v.is_nan()))
+        })
+        .collect();
+    let dropped: Vec<usize> = lines
+        .iter()
+        .zip(&keep)
+        .filter(|(_, k)| !**k)
+        .map(|(l, _)| *l)
+        .collect();
+    if dropped.is_empty() {
+        return lines.to_vec();
+    }
+    let filter = |v: &mut Vec<f64>| {
+        let mut flags = keep.iter();
+        v.retain(|_| flags.next().copied().unwrap_or(false));
+    };
+    filter(&mut test.time);
+    filter(&mut test.output);
+    if let Some(u) = test.input.as_mut() {
+        filter(u);
+    }
+    test.notes.push(format!(
+        "{}: the output or input is missing (empty or NaN); {} skipped",
+        list_lines(&dropped),
+        if dropped.len() == 1 {
+            "that row was"
+        } else {
+            "those rows were"
+        }
+    ));
+    lines
+        .iter()
+        .zip(&keep)
+        .filter(|(_, k)| **k)
+        .map(|(l, _)| *l)
+        .collect()
+}
+
+/// "line 4" / "lines 4, 9 and 12" / "lines 4, 9, … and 37 more".
+fn list_lines(lines: &[usize]) -> String {
+    match lines {
+        [one] => format!("line {one}"),
+        _ if lines.len() > LISTED_LINES => {
+            let shown: Vec<String> = lines[..LISTED_LINES].iter().map(usize::to_string).collect();
+            format!(
+                "lines {} and {} more",
+                shown.join(", "),
+                lines.len() - LISTED_LINES
+            )
+        }
+        [init @ .., last] => {
+            let shown: Vec<String> = init.iter().map(usize::to_string).collect();
+            format!("lines {} and {last}", shown.join(", "))
+        }
+        [] => "no line".to_string(),
+    }
+}
+
+/// Notes the consecutive samples that share a time, saying which is before a step.
+fn note_equal_times(test: &mut StepTest, lines: &[usize]) {
+    let equal: Vec<usize> = (1..test.time.len())
+        .filter(|&k| test.time[k] == test.time[k - 1])
+        .collect();
+    let line = |k: usize| lines.get(k).copied().unwrap_or(0);
+    let mut notes = Vec::new();
+    for &k in equal.iter().take(LISTED_LINES) {
+        let (a, b, t) = (line(k - 1), line(k), test.time[k]);
+        let change = test.input.as_deref().and_then(|u| {
+            let (before, after) = (*u.get(k - 1)?, *u.get(k)?);
+            (before != after).then_some((before, after))
+        });
+        notes.push(match change {
+            Some((before, after)) => format!(
+                "lines {a} and {b} have the same time {t} and the input changes between them \
+                 ({before} → {after}): line {a} is the state just before the step (TCLab logs \
+                 t = 0 twice this way)"
+            ),
+            None => format!("lines {a} and {b} have the same time {t}; both were kept"),
+        });
+    }
+    if equal.len() > LISTED_LINES {
+        notes.push(format!(
+            "{} more pairs of rows share a time",
+            equal.len() - LISTED_LINES
+        ));
+    }
+    test.notes.append(&mut notes);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cells(line: &str, d: Delimiter) -> Vec<&str> {
+        fields(line, d).collect()
+    }
+
+    #[test]
+    fn fields_split_trim_and_unquote() {
+        let ws = Delimiter::Whitespace;
+        assert_eq!(
+            cells("   0.00   9.000  129.320", ws),
+            ["0.00", "9.000", "129.320"]
+        );
+        assert_eq!(cells("\"time (s)\" y", ws), ["time (s)", "y"]);
+        let comma = Delimiter::Char(',');
+        assert_eq!(cells("0.00000, 0.77618", comma), ["0.00000", "0.77618"]);
+        assert_eq!(cells(",Time,Q1", comma), ["", "Time", "Q1"]);
+        assert_eq!(cells("\"a, b\",c,", comma), ["a, b", "c", ""]);
+        assert_eq!(cells("1\t\t3", Delimiter::Char('\t')), ["1", "", "3"]);
+    }
+
+    #[test]
+    fn cells_read_numbers_missing_and_text() {
+        assert_eq!(parse_cell("1.5e3"), Cell::Value(1500.0));
+        assert_eq!(parse_cell("0,5"), Cell::Value(0.5));
+        assert_eq!(parse_cell("-1,25"), Cell::Value(-1.25));
+        assert_eq!(parse_cell("NaN"), Cell::Missing);
+        assert_eq!(parse_cell("N/A"), Cell::Missing);
+        assert_eq!(parse_cell(""), Cell::Missing);
+        assert_eq!(parse_cell("inf"), Cell::Text);
+        assert_eq!(parse_cell("1,2,3"), Cell::Text);
+        assert_eq!(parse_cell("1.234,5"), Cell::Text);
+        assert_eq!(parse_cell(&format!("0,{}", "1".repeat(80))), Cell::Text);
+    }
+
+    #[test]
+    fn delimiter_is_detected() {
+        assert_eq!(
+            choose_delimiter(&["0,5;1,25", "1,0;2"]),
+            Delimiter::Char(';')
+        );
+        assert_eq!(choose_delimiter(&["0.5\t1.25"]), Delimiter::Char('\t'));
+        assert_eq!(choose_delimiter(&["0.5, 1.25"]), Delimiter::Char(','));
+        assert_eq!(choose_delimiter(&["0,5 1,25"]), Delimiter::Whitespace);
+        assert_eq!(choose_delimiter(&["  1  2  3"]), Delimiter::Whitespace);
+        assert_eq!(choose_delimiter(&["t,y"]), Delimiter::Char(','));
+        assert_eq!(choose_delimiter(&["42"]), Delimiter::Whitespace);
+    }
+
+    #[test]
+    fn names_normalise_units_away() {
+        assert_eq!(normalise(" \"Time (s)\" "), "time");
+        assert_eq!(normalise("y [°C]"), "y");
+        assert_eq!(normalise("u(t)"), "u");
+        assert_eq!(normalise("SAÍDA"), "saída");
+        assert_eq!(normalise("(s)"), "(s)");
+        assert!(is_index_name("") && is_index_name("Unnamed: 0") && !is_index_name("t"));
+    }
+
+    #[test]
+    fn step_like_rule() {
+        let mut u = vec![0.0; 50];
+        u.extend(vec![50.0; 50]);
+        assert!(is_step_like(&u));
+        assert!(is_step_like(&[3.0; 10]));
+        let ramp: Vec<f64> = (0..100).map(f64::from).collect();
+        assert!(!is_step_like(&ramp));
+        let many_levels: Vec<f64> = (0..100).map(|k| f64::from(k / 10)).collect();
+        assert!(!is_step_like(&many_levels), "10 levels");
+    }
+
+    #[test]
+    fn column_choice_parses_like_a_command_line() {
+        assert_eq!("T1".parse(), Ok(ColumnChoice::Name("T1".into())));
+        assert_eq!("2".parse(), Ok(ColumnChoice::Position(2)));
+        assert_eq!("none".parse(), Ok(ColumnChoice::None));
+        assert_eq!("".parse(), Ok(ColumnChoice::Auto));
+    }
+
+    #[test]
+    fn lines_are_listed_briefly() {
+        assert_eq!(list_lines(&[4]), "line 4");
+        assert_eq!(list_lines(&[4, 9, 12]), "lines 4, 9 and 12");
+        let many: Vec<usize> = (1..=20).collect();
+        assert_eq!(
+            list_lines(&many),
+            "lines 1, 2, 3, 4, 5, 6, 7, 8 and 12 more"
+        );
+    }
+
+    #[test]
+    fn latin1_and_utf16_are_decoded() {
+        let latin1 = b"tempo;sa\xedda\n0;1\n1;2\n2;3\n";
+        let t = load_bytes(latin1, &LoadOptions::default()).unwrap();
+        assert_eq!(t.output_name, "saída");
+        assert!(t.notes[0].contains("Latin-1"));
+        let utf16: Vec<u8> = [0xFF, 0xFE]
+            .into_iter()
+            .chain(
+                "t\ty\n0\t1\n1\t2\n2\t3\n"
+                    .encode_utf16()
+                    .flat_map(u16::to_le_bytes),
+            )
+            .collect();
+        let t = load_bytes(&utf16, &LoadOptions::default()).unwrap();
+        assert_eq!(t.output, [1.0, 2.0, 3.0]);
+        assert_eq!(
+            load_bytes(b"t,y\n0,1\n\x00\x01", &LoadOptions::default()),
+            Err(DataError::Binary { line: 3 })
+        );
+    }
+}

@@ -3,8 +3,11 @@
 //! diagnosing what a fitted model gets wrong. Pure: nothing here knows about the GUI.
 
 pub mod data;
+pub mod experiment;
 pub mod fit;
 pub mod guess;
+pub mod handles;
+pub mod landscape;
 pub mod models;
 pub mod prepare;
 pub mod stats;

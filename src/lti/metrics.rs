@@ -290,7 +290,9 @@ const SAMPLES_PER_PERIOD: f64 = 12.0;
 const MIN_SEGMENT_SAMPLES: usize = 24;
 /// Maximum samples per grid segment.
 const MAX_SEGMENT_SAMPLES: usize = 20_000;
-/// The grid covers the response until its transients are below this fraction of its size.
+/// The grid covers the response until its transients are below this fraction of its size
+/// (and below a tenth of a [`NEGLIGIBLE`] excursion from the final value, see
+/// [`LtiPieces::new`]).
 const TAIL_FRACTION: f64 = 1e-9;
 
 impl<'a> LtiPieces<'a> {
@@ -298,7 +300,18 @@ impl<'a> LtiPieces<'a> {
     /// [0, horizon] (horizon: until the transients are negligible when `None`), and the end.
     pub fn new(response: &'a StepResponse, horizon: Option<f64>) -> Self {
         let scale = response.magnitude_scale().max(f64::MIN_POSITIVE);
-        let tail = TAIL_FRACTION * scale;
+        // Beyond the end nothing may count any more: no overshoot above NEGLIGIBLE·|Δ|, no
+        // exit from the settling band. When zeros make the final value small next to the
+        // transient terms (|Δ| ≪ scale), 1e-9·scale alone is not enough: the response of
+        // 0.0185(s² + 4.9s + 84.9)(s² + 9.4s + 85)(s + 16.2)/(7 poles) rose by 1e-8·|Δ|
+        // above its final value after the grid had stopped, and the overshoot read 0.
+        let tail = match response.final_value() {
+            Some(y_final) if y_final != 0.0 => {
+                (TAIL_FRACTION * scale).min(0.1 * NEGLIGIBLE * y_final.abs())
+            }
+            _ => TAIL_FRACTION * scale,
+        }
+        .max(f64::MIN_POSITIVE);
         let end = horizon.unwrap_or_else(|| response.envelope_time(tail, |_| true));
         let end = if end.is_finite() && end > 0.0 {
             end
@@ -339,7 +352,14 @@ impl MonotonePieces for LtiPieces<'_> {
 
 /// Zeros of y' on (0, end): sign changes on segmented uniform grids, refined.
 fn critical_points(response: &StepResponse, end: f64, tail: f64) -> Vec<f64> {
-    let fastest = response.fastest_rate().unwrap_or(1.0 / end);
+    // The first segment spans 10/rate or less; rate includes the zeros (see initial_rate):
+    // 0.14(s² − 30s + 319)(s + 1.3)·…/(two near-double pairs at −1.13 ± 1.1j) rises, dips
+    // below zero and turns back within 0.15 s, all inside one cell of a grid sized for
+    // the poles alone, and its undershoot read 0.
+    let fastest = response
+        .fastest_rate()
+        .unwrap_or(1.0 / end)
+        .max(response.initial_rate());
     let decades = ((end * fastest).log10().ceil() as i64 - 1).clamp(0, 12) as i32;
     let mut bounds = vec![0.0];
     bounds.extend((0..=decades).rev().map(|k| end * 10f64.powi(-k)));
@@ -354,6 +374,13 @@ fn critical_points(response: &StepResponse, end: f64, tail: f64) -> Vec<f64> {
         let h = (b - a) / n as f64;
         slope.resize(n + 1, 0.0);
         response.eval_uniform_rational(Derivative::First, a, h, &mut slope);
+        if a == 0.0 && response.initial_slope_sign() != 0.0 {
+            // y'(0) = 0 exactly here, computed as noise of either sign: with the wrong one, a
+            // critical point in the first cell went unseen (the 0.0016 % undershoot of
+            // 0.19·1.91(s − 20)/((s² + 3s + 2.9)(s + 0.075)) read 0). Use the true sign of
+            // y' just after the step instead.
+            slope[0] = response.initial_slope_sign();
+        }
         for i in 0..n {
             let (ta, tb) = (a + h * i as f64, a + h * (i + 1) as f64);
             let (fa, fb) = (slope[i], slope[i + 1]);

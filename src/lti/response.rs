@@ -124,6 +124,14 @@ pub struct StepResponse {
     clusters: Vec<Cluster>,
     behaviour: Behaviour,
     final_value: Option<f64>,
+    /// The sign of y' just after the step when y'(θ⁺) = 0 exactly (relative degree r ≥ 2:
+    /// y ≈ A·k·τ^r/r!, so y' has the sign of A·k), where the computed y'(θ⁺) is rounding
+    /// noise of either sign; 0 when y'(θ⁺) itself is meaningful.
+    initial_slope_sign: f64,
+    /// Σ|pⱼ| + Σ|zᵢ| (rad/s): bounds the growth rate of y's derivatives at the step, so
+    /// 1/it is the shortest time scale on which y can turn right after the step (fast zeros
+    /// make early wiggles even when every pole is slow).
+    initial_rate: f64,
 }
 
 impl StepResponse {
@@ -138,12 +146,20 @@ impl StepResponse {
         let clusters = partial_fractions(&groups, tf.zeros(), amplitude * tf.gain());
         let behaviour = classify(tf);
         let final_value = (behaviour == Behaviour::Settles).then(|| amplitude * tf.dc_gain());
+        let initial_slope_sign = if tf.relative_degree() >= 2 {
+            (amplitude * tf.gain()).signum()
+        } else {
+            0.0
+        };
+        let initial_rate = tf.poles().iter().chain(tf.zeros()).map(|r| r.norm()).sum();
         Ok(Self {
             amplitude,
             delay: tf.delay(),
             clusters,
             behaviour,
             final_value,
+            initial_slope_sign,
+            initial_rate,
         })
     }
 
@@ -189,6 +205,17 @@ impl StepResponse {
             return 0.0;
         }
         self.eval_rational(which, tau)
+    }
+
+    /// The sign of y' just after the step when the computed y'(θ⁺) is only rounding noise
+    /// (relative degree ≥ 2, where y'(θ⁺) = 0 exactly); 0 otherwise.
+    pub(crate) fn initial_slope_sign(&self) -> f64 {
+        self.initial_slope_sign
+    }
+
+    /// Σ|pⱼ| + Σ|zᵢ| (rad/s): 1/it is the shortest time scale of y just after the step.
+    pub(crate) fn initial_rate(&self) -> f64 {
+        self.initial_rate
     }
 
     /// The rational part (no delay) at τ ≥ 0.

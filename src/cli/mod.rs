@@ -1,6 +1,7 @@
 //! The command line of the `degrau` binary: no arguments open the app; `degrau step`
 //! prints the exact step response of one system (text or `--json`), or of one system per
-//! JSON line on stdin (`--batch`).
+//! JSON line on stdin (`--batch`); `degrau fit` fits a process model to a measured step
+//! test ([`fit`]).
 //!
 //! This module owns the argument syntax, the JSON request and report formats, the human
 //! report, and the exit codes: 0 success, 1 the window could not be opened, 2 bad input or
@@ -10,6 +11,8 @@
 
 use std::io::{self, BufRead, BufWriter, Write};
 use std::process::ExitCode;
+
+pub mod fit;
 
 use clap::{Args, Parser, Subcommand};
 use serde::{Deserialize, Serialize};
@@ -45,6 +48,10 @@ pub struct Cli {
 pub enum Command {
     /// Exact step response, step metrics and closed-form y(t) of a transfer function.
     Step(StepArgs),
+    /// Fit a process model (procest codes: P1D, P2DU, …) to a measured step test.
+    Fit(fit::FitArgs),
+    /// Open the app on a measured step test.
+    Open(fit::OpenArgs),
 }
 
 const STEP_EXAMPLES: &str = "\
@@ -420,21 +427,32 @@ pub fn main() -> ExitCode {
     };
     match cli.command {
         None => open_app(),
-        Some(Command::Step(args)) => match run_step(&args) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(CliError::WriteOutput(e)) if e.kind() == io::ErrorKind::BrokenPipe => {
-                ExitCode::SUCCESS // the reader stopped reading: nothing left to do
-            }
-            Err(e) => {
-                eprintln!("error: {e}");
-                ExitCode::from(EXIT_BAD_INPUT)
-            }
-        },
+        Some(Command::Step(args)) => finish(run_step(&args)),
+        Some(Command::Fit(args)) => finish(fit::run_fit(&args)),
+        Some(Command::Open(args)) => open_app_with(Some(args.settings())),
+    }
+}
+
+/// The exit code of a headless command, its error printed in words.
+fn finish(result: Result<(), CliError>) -> ExitCode {
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(CliError::WriteOutput(e)) if e.kind() == io::ErrorKind::BrokenPipe => {
+            ExitCode::SUCCESS // the reader stopped reading: nothing left to do
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(EXIT_BAD_INPUT)
+        }
     }
 }
 
 fn open_app() -> ExitCode {
-    match crate::app::run() {
+    open_app_with(None)
+}
+
+fn open_app_with(test: Option<crate::app::identify::IdentSettings>) -> ExitCode {
+    match crate::app::run_with(test) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!(

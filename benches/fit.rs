@@ -1,0 +1,83 @@
+//! Fitting speed (issue 4 targets, on the 2-core machine):
+//! - a P2DU fit of the LECI data from the automatic guess: ≤ 1 ms
+//!   (scipy's least_squares takes 3.4 ms on the same problem from a good guess);
+//! - a 32-start global fit of an 800-sample test: ≤ 150 ms.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use degrau::ident::fit::{FitData, FitOptions, fit};
+use degrau::ident::guess::auto_guess;
+use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
+
+fn leci() -> FitData {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../shared/data/seed/leci_step.csv"
+    ))
+    .expect("LECI data");
+    let (times, y) = text
+        .lines()
+        .skip(1)
+        .filter_map(|l| {
+            let (a, b) = l.split_once(',')?;
+            Some((a.trim().parse::<f64>().ok()?, b.trim().parse::<f64>().ok()?))
+        })
+        .unzip();
+    FitData {
+        times,
+        y,
+        setup: StepSetup { t0: 5.0, du: 10.0 },
+    }
+}
+
+/// 800 samples of a P2DU with ±1 % uniform noise (deterministic).
+fn synthetic_800() -> FitData {
+    let s = Structure::parse("P2DU").unwrap();
+    let mut v = Values::default();
+    v.set(Param::Kp, 0.8);
+    v.set(Param::Tw, 4.0);
+    v.set(Param::Zeta, 0.3);
+    v.set(Param::Td, 6.0);
+    v.set(Param::Y0, 20.0);
+    let setup = StepSetup { t0: 10.0, du: 5.0 };
+    let times: Vec<f64> = (0..800).map(|k| 0.25 * k as f64).collect();
+    let mut y = Model::new(s, v).simulate(&setup, &times).unwrap();
+    let mut state = 12345u64;
+    for v in y.iter_mut() {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        *v += 0.04 * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
+    }
+    FitData { times, y, setup }
+}
+
+fn benches(c: &mut Criterion) {
+    let data = leci();
+    let mut s = Structure::parse("P2DU").unwrap();
+    s.free_offset = false;
+    let guess = auto_guess(&data, s, Some(50.0));
+    let one = FitOptions {
+        starts: 1,
+        ..Default::default()
+    };
+    c.bench_function("LECI P2DU fit from the automatic guess", |b| {
+        b.iter(|| fit(&data, s, guess, &one, &mut ()).unwrap())
+    });
+
+    let data = synthetic_800();
+    let s = Structure::parse("P2DU").unwrap();
+    let guess = auto_guess(&data, s, None);
+    let many = FitOptions {
+        starts: 32,
+        ..Default::default()
+    };
+    let mut group = c.benchmark_group("global");
+    group.sample_size(20);
+    group.bench_function("32-start P2DU fit, 800 samples", |b| {
+        b.iter(|| fit(&data, s, guess, &many, &mut ()).unwrap())
+    });
+    group.finish();
+}
+
+criterion_group!(fits, benches);
+criterion_main!(fits);

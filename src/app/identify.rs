@@ -1,0 +1,705 @@
+//! The identification view: load a measured step test (path, file dialog, drop, paste),
+//! say how to read it (columns, sampling period, step, operating point, window, filter),
+//! drag a model's guesses on the plot, fit it off the UI thread with progress and a cancel
+//! button, then read the parameters with their intervals and the residuals.
+//! Everything computed here comes from [`crate::ident`].
+
+use eframe::egui::{self, Color32, DragValue, RichText, Ui};
+use serde::{Deserialize, Serialize};
+
+use crate::app::job::Job;
+use crate::format::sig;
+use crate::ident::data::{self, ColumnChoice, LoadOptions, StepTest};
+use crate::ident::experiment::{Experiment, Offset};
+use crate::ident::fit::{FitData, FitError, FitOptions, FitReport, Method, Progress, fit};
+use crate::ident::models::{Model, Param, Structure, Values, pair_poles};
+
+/// The model codes offered, in the order of the notes.
+pub const CODES: [&str; 13] = [
+    "P1", "P1D", "P2", "P2D", "P2U", "P2DU", "P2Z", "P2DZ", "P2DUZ", "P3", "P3D", "P1I", "P1DI",
+];
+
+/// Choices kept between runs.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct IdentSettings {
+    pub path: String,
+    pub time_col: String,
+    pub y_col: String,
+    pub u_col: String,
+    /// Sampling period for files without a time column (text as typed).
+    pub sampling_period: String,
+    pub code: String,
+    pub drift: bool,
+    pub method: Method,
+    pub multistart: bool,
+    pub starts: usize,
+}
+
+impl Default for IdentSettings {
+    fn default() -> Self {
+        Self {
+            path: String::new(),
+            time_col: String::new(),
+            y_col: String::new(),
+            u_col: String::new(),
+            sampling_period: String::new(),
+            code: "P2DU".into(),
+            drift: false,
+            method: Method::LevenbergMarquardt,
+            multistart: true,
+            starts: 16,
+        }
+    }
+}
+
+/// A loaded test and what was chosen on it.
+pub struct Loaded {
+    pub test: StepTest,
+    pub experiment: Experiment,
+    /// The samples the fit sees (window and filter applied).
+    pub data: Result<FitData, String>,
+    pub structure: Structure,
+    /// The model shown before a fit: the guess the student drags.
+    pub guess: Values,
+}
+
+/// The view's state.
+#[derive(Default)]
+pub struct IdentView {
+    pub settings: IdentSettings,
+    pub loaded: Option<Loaded>,
+    /// The last message about loading: (is an error, text).
+    pub message: Option<(bool, String)>,
+    job: Option<Job<Progress, Result<FitReport, FitError>>>,
+    pub report: Option<FitReport>,
+    /// The structure and data the report belongs to.
+    pub fitted: Option<(Structure, FitData)>,
+    pub status: String,
+    pub landscape: crate::app::landscape_view::LandscapeView,
+    pub markers: crate::app::step_plot::Markers,
+}
+
+/// What the view asks of the app.
+pub enum IdentAction {
+    None,
+    /// Show this model's transfer function on the s-plane.
+    ShowOnSPlane(Model),
+}
+
+impl IdentView {
+    /// A view with nothing loaded and the given settings.
+    pub fn with_settings(settings: IdentSettings) -> Self {
+        Self {
+            settings,
+            ..Default::default()
+        }
+    }
+
+    /// Loads a file by path; a failure keeps what was loaded before.
+    pub fn load_path(&mut self, path: &str) {
+        self.settings.path = path.to_string();
+        let options = self.load_options();
+        match options.and_then(|o| {
+            data::load_file(std::path::Path::new(path), &o).map_err(|e| e.to_string())
+        }) {
+            Ok(test) => self.accept(test, path),
+            Err(e) => {
+                self.message = Some((
+                    true,
+                    format!("Not loaded ({path}): {e}. What was loaded before is kept."),
+                ))
+            }
+        }
+    }
+
+    /// Loads columns pasted as text.
+    pub fn load_text(&mut self, text: &str) {
+        match data::from_columns(text) {
+            Ok(test) => self.accept(test, "pasted data"),
+            Err(e) => {
+                self.message = Some((
+                    true,
+                    format!(
+                        "The pasted text is not a step test: {e}. What was loaded before is kept."
+                    ),
+                ))
+            }
+        }
+    }
+
+    fn load_options(&self) -> Result<LoadOptions, String> {
+        let choice = |text: &str| -> ColumnChoice {
+            let t = text.trim();
+            if t.is_empty() {
+                ColumnChoice::Auto
+            } else if let Ok(k) = t.parse::<usize>() {
+                ColumnChoice::Position(k)
+            } else {
+                ColumnChoice::Name(t.to_string())
+            }
+        };
+        let ts = self.settings.sampling_period.trim();
+        let sampling_period =
+            if ts.is_empty() {
+                None
+            } else {
+                Some(ts.replace(',', ".").parse::<f64>().map_err(|_| {
+                    format!("the sampling period \"{ts}\" is not a number of seconds")
+                })?)
+            };
+        let mut o = LoadOptions::default();
+        o.time = if sampling_period.is_some() && self.settings.time_col.trim().is_empty() {
+            ColumnChoice::None
+        } else {
+            choice(&self.settings.time_col)
+        };
+        o.output = choice(&self.settings.y_col);
+        o.input = choice(&self.settings.u_col);
+        o.sampling_period = sampling_period;
+        Ok(o)
+    }
+
+    fn accept(&mut self, test: StepTest, source: &str) {
+        let (experiment, step_note) = match Experiment::new(&test, None, None, None) {
+            Ok(e) => (e, None),
+            Err(e) => {
+                let t0 = test.time.first().copied().unwrap_or(0.0);
+                let fallback = Experiment {
+                    t0,
+                    du: 1.0,
+                    offset: Offset::Auto,
+                    window: None,
+                    filter_hz: None,
+                };
+                (
+                    fallback,
+                    Some(format!("{e}. Set t0 and Δu below (now t0 = {t0}, Δu = 1).")),
+                )
+            }
+        };
+        let mut notes = vec![format!("Loaded {} samples from {source}.", test.time.len())];
+        notes.extend(test.notes.iter().cloned());
+        notes.extend(step_note);
+        self.message = Some((false, notes.join(" ")));
+        let structure = Structure::parse(&self.settings.code)
+            .unwrap_or_else(|_| Structure::parse("P1D").expect("a valid code"));
+        self.report = None;
+        self.fitted = None;
+        self.loaded = Some(Loaded {
+            test,
+            experiment,
+            data: Err(String::new()),
+            structure,
+            guess: Values::default(),
+        });
+        self.rebuild(true);
+    }
+
+    /// Recomputes the fit data and structure after a change; `reguess` resets the guess.
+    pub fn rebuild(&mut self, reguess: bool) {
+        let Some(l) = self.loaded.as_mut() else {
+            return;
+        };
+        l.data = l.experiment.fit_data(&l.test).map_err(|e| e.to_string());
+        if let Ok(d) = &l.data {
+            match l
+                .experiment
+                .structure(&self.settings.code, self.settings.drift, d)
+            {
+                Ok(s) => {
+                    let changed = s != l.structure;
+                    l.structure = s;
+                    if reguess || changed {
+                        l.guess = l.experiment.guess(s, d);
+                    }
+                }
+                Err(e) => self.status = e.to_string(),
+            }
+        }
+    }
+
+    /// The model shown: the running fit's latest, the fit's, or the guess.
+    pub fn shown_model(&self) -> Option<Model> {
+        if let Some(p) = self.job.as_ref().and_then(|j| j.progress.as_ref()) {
+            return Some(p.model);
+        }
+        let l = self.loaded.as_ref()?;
+        match (&self.report, &self.fitted) {
+            (Some(r), Some((s, _))) if *s == l.structure => Some(r.model),
+            _ => Some(Model::new(l.structure, l.guess)),
+        }
+    }
+
+    /// Sets the guess (a drag on the plot); a previous fit no longer describes what is shown.
+    pub fn set_guess(&mut self, model: Model) {
+        if let Some(l) = self.loaded.as_mut() {
+            l.guess = model.values;
+            l.structure = model.structure;
+            self.report = None;
+            self.fitted = None;
+        }
+    }
+
+    pub fn is_fitting(&self) -> bool {
+        self.job.is_some()
+    }
+
+    /// Starts a fit from the current guess.
+    pub fn start_fit(&mut self, ctx: Option<egui::Context>) {
+        let Some(l) = self.loaded.as_ref() else {
+            return;
+        };
+        let Ok(data) = l.data.clone() else { return };
+        let (structure, guess) = (l.structure, l.guess);
+        let options = FitOptions {
+            method: self.settings.method,
+            starts: if self.settings.multistart {
+                self.settings.starts.max(1)
+            } else {
+                1
+            },
+            ..FitOptions::default()
+        };
+        self.fitted = Some((structure, data.clone()));
+        self.status = "Fitting…".into();
+        self.job = Some(Job::spawn(ctx, move |job| {
+            struct Relay<'a>(
+                &'a crate::app::job::Context<Progress, Result<FitReport, FitError>>,
+                usize,
+            );
+            impl crate::ident::fit::FitObserver for Relay<'_> {
+                fn progress(&mut self, p: &Progress) {
+                    // Every 4th iteration is enough for a smooth animation.
+                    self.1 += 1;
+                    if self.1 % 4 == 1 {
+                        self.0.report(p.clone());
+                    }
+                }
+                fn cancelled(&self) -> bool {
+                    self.0.cancelled()
+                }
+            }
+            fit(&data, structure, guess, &options, &mut Relay(job, 0))
+        }));
+    }
+
+    pub fn cancel_fit(&mut self) {
+        if let Some(j) = &self.job {
+            j.cancel();
+            self.status = "Cancelling…".into();
+        }
+    }
+
+    /// Collects a finished fit.
+    pub fn poll(&mut self) {
+        let Some(job) = self.job.as_mut() else { return };
+        match job.poll() {
+            Some(Ok(report)) => {
+                self.status = format!(
+                    "{} · {} start(s), {} iterations",
+                    report.termination.describe(),
+                    report.starts,
+                    report.iterations
+                );
+                if let Some(l) = self.loaded.as_mut() {
+                    l.guess = report.model.values;
+                }
+                self.report = Some(report);
+                self.job = None;
+            }
+            Some(Err(e)) => {
+                self.status = format!("The fit did not run: {e}");
+                self.fitted = None;
+                self.job = None;
+            }
+            None => {
+                if let Some(p) = &job.progress {
+                    self.status = format!(
+                        "start {}/{} · iteration {} · MSE {} (best {})",
+                        p.start + 1,
+                        p.starts,
+                        p.iteration,
+                        sig(p.cost, 5),
+                        sig(p.best_cost, 5)
+                    );
+                }
+            }
+        }
+    }
+
+    /// Draws the side panel; returns a request for the app.
+    pub fn panel(&mut self, ui: &mut Ui) -> IdentAction {
+        let mut action = IdentAction::None;
+        self.poll();
+        ui.heading("Step test");
+        self.data_section(ui);
+        if self.loaded.is_some() {
+            ui.separator();
+            self.step_section(ui);
+            ui.separator();
+            self.model_section(ui);
+            ui.separator();
+            self.fit_section(ui);
+            if let Some(a) = self.results(ui) {
+                action = a;
+            }
+        }
+        action
+    }
+
+    fn data_section(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            let label = ui.label("Step test file");
+            ui.add(egui::TextEdit::singleline(&mut self.settings.path).desired_width(190.0))
+                .labelled_by(label.id);
+            if ui.button("Load").clicked() {
+                let path = self.settings.path.clone();
+                self.load_path(&path);
+            }
+            if ui.button("Open…").clicked()
+                && let Some(p) = rfd::FileDialog::new()
+                    .add_filter("step tests", &["csv", "tsv", "txt", "dat"])
+                    .pick_file()
+            {
+                self.load_path(&p.display().to_string());
+            }
+        });
+        egui::CollapsingHeader::new("How to read the file").show(ui, |ui| {
+            egui::Grid::new("columns").num_columns(2).show(ui, |ui| {
+                for (name, field, hint) in [
+                    (
+                        "Time column",
+                        &mut self.settings.time_col,
+                        "name or number; empty: automatic",
+                    ),
+                    (
+                        "Output column",
+                        &mut self.settings.y_col,
+                        "name or number; empty: automatic",
+                    ),
+                    (
+                        "Input column",
+                        &mut self.settings.u_col,
+                        "name or number; empty: automatic",
+                    ),
+                    (
+                        "Sampling period (s)",
+                        &mut self.settings.sampling_period,
+                        "only for files without time",
+                    ),
+                ] {
+                    let l = ui.label(name);
+                    ui.add(
+                        egui::TextEdit::singleline(field)
+                            .hint_text(hint)
+                            .desired_width(150.0),
+                    )
+                    .labelled_by(l.id);
+                    ui.end_row();
+                }
+            });
+            ui.weak("Drop a file on the window, or paste two or three columns (Ctrl+V).");
+        });
+        if let Some((error, text)) = &self.message {
+            let color = if *error {
+                ui.visuals().error_fg_color
+            } else {
+                ui.visuals().weak_text_color()
+            };
+            ui.label(RichText::new(text).color(color));
+        }
+    }
+
+    fn step_section(&mut self, ui: &mut Ui) {
+        let Some(l) = self.loaded.as_mut() else {
+            return;
+        };
+        let mut changed = false;
+        let e = &mut l.experiment;
+        egui::Grid::new("step").num_columns(2).show(ui, |ui| {
+            let label = ui.label("Step time t0 (s)");
+            changed |= ui
+                .add(DragValue::new(&mut e.t0).speed(0.01).max_decimals(6))
+                .labelled_by(label.id)
+                .changed();
+            ui.end_row();
+            let label = ui.label("Step size Δu");
+            changed |= ui
+                .add(DragValue::new(&mut e.du).speed(0.01).max_decimals(6))
+                .labelled_by(label.id)
+                .changed();
+            ui.end_row();
+            ui.label("Operating point y0");
+            ui.horizontal(|ui| {
+                let mut mode = match e.offset {
+                    Offset::Auto => 0,
+                    Offset::Free => 1,
+                    Offset::Fixed(_) => 2,
+                };
+                let before = mode;
+                ui.radio_value(&mut mode, 0, "mean before the step");
+                ui.radio_value(&mut mode, 1, "estimate");
+                ui.radio_value(&mut mode, 2, "typed");
+                if mode != before {
+                    let y0 = l.guess.get(Param::Y0);
+                    e.offset = [Offset::Auto, Offset::Free, Offset::Fixed(y0)][mode];
+                    changed = true;
+                }
+                if let Offset::Fixed(v) = &mut e.offset {
+                    changed |= ui
+                        .add(DragValue::new(v).speed(0.01).max_decimals(6))
+                        .changed();
+                }
+            });
+            ui.end_row();
+            ui.label("Window (s)");
+            ui.horizontal(|ui| {
+                let (first, last) = (
+                    l.test.time.first().copied().unwrap_or(0.0),
+                    l.test.time.last().copied().unwrap_or(0.0),
+                );
+                let mut on = e.window.is_some();
+                changed |= ui.checkbox(&mut on, "keep only").changed();
+                if on {
+                    let w = e.window.get_or_insert((first, last));
+                    changed |= ui
+                        .add(
+                            DragValue::new(&mut w.0)
+                                .speed(0.05)
+                                .range(first..=last)
+                                .prefix("from "),
+                        )
+                        .changed();
+                    changed |= ui
+                        .add(
+                            DragValue::new(&mut w.1)
+                                .speed(0.05)
+                                .range(first..=last)
+                                .prefix("to "),
+                        )
+                        .changed();
+                } else {
+                    e.window = None;
+                }
+            });
+            ui.end_row();
+            ui.label("Low-pass filter");
+            ui.horizontal(|ui| {
+                let mut on = e.filter_hz.is_some();
+                changed |= ui.checkbox(&mut on, "EWMA").changed();
+                if on {
+                    let fc = e.filter_hz.get_or_insert(1.0);
+                    changed |= ui
+                        .add(
+                            DragValue::new(fc)
+                                .speed(0.01)
+                                .range(1e-6..=1e6)
+                                .suffix(" Hz"),
+                        )
+                        .changed();
+                } else {
+                    e.filter_hz = None;
+                }
+            });
+            ui.end_row();
+        });
+        if let (Some(fc), Ok(d)) = (l.experiment.filter_hz, &l.data) {
+            let filter = crate::ident::prepare::Ewma::new(fc, d.sampling_period());
+            ui.weak(filter.describe());
+        }
+        if let Err(e) = &l.data {
+            ui.colored_label(ui.visuals().error_fg_color, e);
+        }
+        if changed {
+            self.rebuild(false);
+        }
+    }
+
+    fn model_section(&mut self, ui: &mut Ui) {
+        let mut changed = false;
+        ui.horizontal(|ui| {
+            ui.strong("Model");
+            egui::ComboBox::from_id_salt("model code")
+                .selected_text(&self.settings.code)
+                .show_ui(ui, |ui| {
+                    for code in CODES {
+                        changed |= ui
+                            .selectable_value(&mut self.settings.code, code.to_string(), code)
+                            .changed();
+                    }
+                });
+            changed |= ui
+                .checkbox(&mut self.settings.drift, "drift")
+                .on_hover_text("Add a linear drift term Drift·(t − t0)")
+                .changed();
+            if ui
+                .button("Automatic guess")
+                .on_hover_text("Read the guesses off the curve again")
+                .clicked()
+            {
+                self.rebuild(true);
+                self.report = None;
+            }
+        });
+        if changed {
+            self.rebuild(true);
+            self.report = None;
+        }
+        let Some(l) = self.loaded.as_mut() else {
+            return;
+        };
+        let mut edited = false;
+        egui::Grid::new("guess").num_columns(2).show(ui, |ui| {
+            for p in l.structure.params() {
+                let label = ui
+                    .label(format!("{} guess", p.name()))
+                    .on_hover_text(p.describe());
+                let mut v = l.guess.get(p);
+                let speed = 0.01 * v.abs().max(0.01);
+                if ui
+                    .add(DragValue::new(&mut v).speed(speed).max_decimals(6))
+                    .labelled_by(label.id)
+                    .changed()
+                {
+                    l.guess.set(p, v);
+                    edited = true;
+                }
+                ui.end_row();
+            }
+        });
+        if edited {
+            self.report = None;
+        }
+    }
+
+    fn fit_section(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            ui.radio_value(
+                &mut self.settings.method,
+                Method::LevenbergMarquardt,
+                "Levenberg–Marquardt",
+            );
+            ui.radio_value(&mut self.settings.method, Method::NelderMead, "Nelder–Mead");
+        });
+        ui.horizontal(|ui| {
+            ui.checkbox(&mut self.settings.multistart, "multi-start").on_hover_text(
+                "Run from the guess and from spread-out starts, keep the best result that is not an alias",
+            );
+            if self.settings.multistart {
+                ui.add(DragValue::new(&mut self.settings.starts).range(2..=256).suffix(" starts"));
+            }
+        });
+        ui.horizontal(|ui| {
+            let can_fit = self.loaded.as_ref().is_some_and(|l| l.data.is_ok());
+            if self.is_fitting() {
+                if ui.button("Cancel").clicked() {
+                    self.cancel_fit();
+                }
+                ui.spinner();
+            } else if ui.add_enabled(can_fit, egui::Button::new("Fit")).clicked() {
+                self.start_fit(Some(ui.ctx().clone()));
+            }
+            if !self.status.is_empty() {
+                ui.label(&self.status);
+            }
+        });
+    }
+
+    fn results(&mut self, ui: &mut Ui) -> Option<IdentAction> {
+        let report = self.report.as_ref()?;
+        let mut action = None;
+        ui.separator();
+        ui.strong(format!("Fitted {}", report.model.structure.code()));
+        egui::Grid::new("parameters")
+            .striped(true)
+            .num_columns(3)
+            .show(ui, |ui| {
+                ui.strong("Parameter");
+                ui.strong("Value");
+                ui.strong("95 % interval");
+                ui.end_row();
+                for e in &report.params {
+                    let unit = if e.param.unit().is_empty() {
+                        String::new()
+                    } else {
+                        format!(" {}", e.param.unit())
+                    };
+                    ui.label(e.param.name()).on_hover_text(e.param.describe());
+                    ui.label(format!("{}{unit}", sig(e.value, 5)));
+                    ui.label(match e.ci95 {
+                        Some((lo, hi)) => format!("[{}, {}]", sig(lo, 4), sig(hi, 4)),
+                        None => "none".into(),
+                    });
+                    ui.end_row();
+                }
+            });
+        for line in derived(&report.model) {
+            ui.label(line);
+        }
+        ui.label(format!(
+            "MSE {} · RMSE {} · fit {} % · AIC {} · N = {}",
+            sig(report.mse, 4),
+            sig(report.rmse, 4),
+            sig(report.fit_percent, 4),
+            sig(report.aic, 5),
+            report.n
+        ));
+        for w in &report.warnings {
+            ui.label(
+                RichText::new(format!("Warning: {}", w.message()))
+                    .color(Color32::from_rgb(210, 120, 0)),
+            );
+        }
+        ui.horizontal(|ui| {
+            if ui.button("Show on the s-plane").clicked() {
+                action = Some(IdentAction::ShowOnSPlane(report.model));
+            }
+            if ui.button("Cost landscape…").clicked() {
+                self.landscape.open = true;
+            }
+        });
+        action
+    }
+}
+
+/// ωn, σ, ωd and the poles of a model, in words.
+pub fn derived(model: &Model) -> Vec<String> {
+    let s = model.structure;
+    let mut out = Vec::new();
+    if s.underdamped {
+        let (tw, zeta) = (model.get(Param::Tw), model.get(Param::Zeta));
+        let [p, q] = pair_poles(tw, zeta);
+        out.push(format!(
+            "ωn = 1/Tw = {} rad/s · σ = ζωn = {} 1/s",
+            sig(1.0 / tw, 4),
+            sig(zeta / tw, 4)
+        ));
+        if zeta < 1.0 {
+            out.push(format!(
+                "ωd = {} rad/s · poles {} ± {}j",
+                sig(p.im, 4),
+                sig(p.re, 4),
+                sig(p.im, 4)
+            ));
+        } else {
+            out.push(format!(
+                "overdamped: poles {} and {}",
+                sig(p.re, 4),
+                sig(q.re, 4)
+            ));
+        }
+    }
+    let poles: Vec<String> = [Param::Tp1, Param::Tp2, Param::Tp3]
+        .into_iter()
+        .filter(|p| s.params().contains(p))
+        .map(|p| format!("{} (from {})", sig(-1.0 / model.get(p), 4), p.name()))
+        .collect();
+    if !poles.is_empty() {
+        out.push(format!("Real poles: {}", poles.join(", ")));
+    }
+    out.push(format!(
+        "Static gain Kp = Δy/Δu = {}",
+        sig(model.get(Param::Kp), 5)
+    ));
+    out
+}

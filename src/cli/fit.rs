@@ -1,0 +1,364 @@
+//! `degrau fit FILE --model CODE …`: fits a process model to a measured step test, headless.
+//! The data flags ([`DataArgs`]) are shared with `degrau diagnose`; the FIT JSON object
+//! ([`FitJson`]) is the one graders read, in `fit` and inside `diagnose`.
+
+use std::collections::BTreeMap;
+use std::io::{self, Write};
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+
+use crate::ident::data::{self, ColumnChoice, LoadOptions, StepTest};
+use crate::ident::experiment::{Experiment, Offset};
+use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
+use crate::ident::models::Param;
+
+use super::CliError;
+
+/// How the measured file is read and prepared (shared by `fit` and `diagnose`).
+#[derive(Debug, Clone, Default, Args)]
+pub struct DataArgs {
+    /// The step test: CSV, TSV, semicolon with decimal comma, or whitespace-separated.
+    pub file: PathBuf,
+    /// Time column: name or 1-based position (default: recognised by name).
+    #[arg(long)]
+    pub time_col: Option<String>,
+    /// Output column: name or 1-based position.
+    #[arg(long)]
+    pub y_col: Option<String>,
+    /// Input column: name or 1-based position.
+    #[arg(long)]
+    pub u_col: Option<String>,
+    /// Sampling period in seconds, for a file without a time column.
+    #[arg(long)]
+    pub ts: Option<f64>,
+    /// Lines to skip at the top (metadata before the table).
+    #[arg(long, default_value_t = 0)]
+    pub skip_rows: usize,
+    /// Step time t0 (s); default: found in the input column.
+    #[arg(long, allow_hyphen_values = true)]
+    pub t0: Option<f64>,
+    /// Step size Δu; default: found in the input column.
+    #[arg(long, allow_hyphen_values = true)]
+    pub du: Option<f64>,
+    /// The input before the record started, when the step is at the first sample.
+    #[arg(long, allow_hyphen_values = true)]
+    pub initial_input: Option<f64>,
+    /// Operating point y0: auto (mean before the step, else estimated), free, or a value.
+    #[arg(long, default_value = "auto", allow_hyphen_values = true)]
+    pub y0: String,
+    /// Keep only samples in this time range, e.g. 3.5,29.5.
+    #[arg(long, allow_hyphen_values = true)]
+    pub window: Option<String>,
+    /// Low-pass the output first (the notes' EWMA filter), cut-off in Hz.
+    #[arg(long)]
+    pub filter: Option<f64>,
+}
+
+/// The optimiser, as typed.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, ValueEnum)]
+pub enum MethodArg {
+    #[default]
+    Lm,
+    NelderMead,
+}
+
+/// `degrau fit` options.
+#[derive(Debug, Clone, Args)]
+#[command(after_help = "Examples:
+  degrau fit leci_step.csv --model P2DU --t0 5 --du 10 --y0 50
+  degrau fit tclab_step_q1_50.csv --model P2 --y-col T1 --u-col Q1 --json
+  degrau fit ball.txt --ts 0.094 --model P2U --t0 3.4 --du 74.5 --guess Kp=5,Zeta=0.4")]
+pub struct FitArgs {
+    #[command(flatten)]
+    pub data: DataArgs,
+    /// Model structure as procest: P1, P1D, P2, P2D, P2U, P2DU, P2Z, P2DZ, P2DUZ, P3, P3D, P1I, P1DI, …
+    #[arg(long, default_value = "P1D")]
+    pub model: String,
+    /// Initial guesses overriding the automatic ones, e.g. Kp=1.2,Td=2,Zeta=0.5,Tw=1.1.
+    #[arg(long, allow_hyphen_values = true)]
+    pub guess: Option<String>,
+    /// Optimiser.
+    #[arg(long, value_enum, default_value_t = MethodArg::Lm)]
+    pub method: MethodArg,
+    /// Number of starts (1: the guess only).
+    #[arg(long, default_value_t = 16)]
+    pub starts: usize,
+    /// Add a linear drift term.
+    #[arg(long)]
+    pub drift: bool,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `degrau open FILE`: the app on a step test.
+#[derive(Debug, Clone, Args)]
+pub struct OpenArgs {
+    /// The step test to load.
+    pub file: PathBuf,
+    /// Time column: name or 1-based position.
+    #[arg(long)]
+    pub time_col: Option<String>,
+    /// Output column: name or 1-based position.
+    #[arg(long)]
+    pub y_col: Option<String>,
+    /// Input column: name or 1-based position.
+    #[arg(long)]
+    pub u_col: Option<String>,
+    /// Sampling period in seconds, for a file without a time column.
+    #[arg(long)]
+    pub ts: Option<f64>,
+    /// Model structure to start with.
+    #[arg(long, default_value = "P2DU")]
+    pub model: String,
+}
+
+impl OpenArgs {
+    /// The identification settings the app starts with.
+    pub fn settings(&self) -> crate::app::identify::IdentSettings {
+        crate::app::identify::IdentSettings {
+            path: self.file.display().to_string(),
+            time_col: self.time_col.clone().unwrap_or_default(),
+            y_col: self.y_col.clone().unwrap_or_default(),
+            u_col: self.u_col.clone().unwrap_or_default(),
+            sampling_period: self.ts.map(|t| t.to_string()).unwrap_or_default(),
+            code: self.model.to_ascii_uppercase(),
+            ..Default::default()
+        }
+    }
+}
+
+impl DataArgs {
+    /// Loads and prepares the test: the data, the choices and the fit data.
+    pub fn prepare(&self) -> Result<(StepTest, Experiment, FitData), CliError> {
+        let choice = |c: &Option<String>| {
+            c.as_deref().map_or(ColumnChoice::Auto, |s| {
+                s.parse().unwrap_or(ColumnChoice::Auto)
+            })
+        };
+        let mut options = LoadOptions {
+            time: choice(&self.time_col),
+            output: choice(&self.y_col),
+            input: choice(&self.u_col),
+            sampling_period: self.ts,
+            skip_rows: self.skip_rows,
+        };
+        if self.ts.is_some() && self.time_col.is_none() {
+            options.time = ColumnChoice::None;
+        }
+        let test = data::load_file(&self.file, &options)
+            .map_err(|e| CliError::Options(format!("{}: {e}", self.file.display())))?;
+        let mut experiment = Experiment::new(&test, self.t0, self.du, self.initial_input)
+            .map_err(|e| CliError::Options(e.to_string()))?;
+        experiment.offset = parse_offset(&self.y0)?;
+        experiment.window = self.window.as_deref().map(parse_window).transpose()?;
+        experiment.filter_hz = self.filter;
+        let fit_data = experiment
+            .fit_data(&test)
+            .map_err(|e| CliError::Options(e.to_string()))?;
+        Ok((test, experiment, fit_data))
+    }
+}
+
+fn parse_offset(text: &str) -> Result<Offset, CliError> {
+    match text.trim().to_ascii_lowercase().as_str() {
+        "auto" => Ok(Offset::Auto),
+        "free" => Ok(Offset::Free),
+        other => other
+            .replace(',', ".")
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .map(Offset::Fixed)
+            .ok_or_else(|| {
+                CliError::Options(format!(
+                    "--y0 must be auto, free or a number, not \"{text}\""
+                ))
+            }),
+    }
+}
+
+fn parse_window(text: &str) -> Result<(f64, f64), CliError> {
+    let bad = || {
+        CliError::Options(format!(
+            "--window must be two times like 3.5,29.5, not \"{text}\""
+        ))
+    };
+    let (a, b) = text.split_once(',').ok_or_else(bad)?;
+    let (a, b) = (
+        a.trim().parse::<f64>().map_err(|_| bad())?,
+        b.trim().parse::<f64>().map_err(|_| bad())?,
+    );
+    if !(a < b) {
+        return Err(bad());
+    }
+    Ok((a, b))
+}
+
+/// `Kp=1.2,Td=2` into parameter values.
+pub fn parse_guess(text: &str) -> Result<Vec<(Param, f64)>, CliError> {
+    text.split(',')
+        .filter(|s| !s.trim().is_empty())
+        .map(|item| {
+            let bad = || CliError::Options(format!("--guess item \"{item}\" must look like Kp=1.2 (names: Kp, Tp1, Tp2, Tp3, Tw, Zeta, Td, Tz, Y0, Drift)"));
+            let (name, value) = item.split_once('=').ok_or_else(bad)?;
+            let p = Param::parse(name).ok_or_else(bad)?;
+            let v = value.trim().parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(bad)?;
+            Ok((p, v))
+        })
+        .collect()
+}
+
+/// The FIT object of the JSON outputs (stable keys).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FitJson {
+    pub model: String,
+    pub params: BTreeMap<String, f64>,
+    pub ci95: BTreeMap<String, Option<[f64; 2]>>,
+    pub mse: f64,
+    pub rmse: f64,
+    pub fit_percent: f64,
+    pub aic: f64,
+    pub n: usize,
+    pub iterations: usize,
+    pub termination: String,
+    pub warnings: Vec<String>,
+}
+
+impl FitJson {
+    pub fn new(report: &FitReport) -> Self {
+        let mut params = BTreeMap::new();
+        let mut ci95 = BTreeMap::new();
+        for e in &report.params {
+            params.insert(e.param.name().to_string(), e.value);
+            ci95.insert(e.param.name().to_string(), e.ci95.map(|(a, b)| [a, b]));
+        }
+        // Y0 is always reported, estimated or held.
+        params
+            .entry("Y0".to_string())
+            .or_insert(report.model.get(Param::Y0));
+        ci95.entry("Y0".to_string()).or_insert(None);
+        Self {
+            model: report.model.structure.code(),
+            params,
+            ci95,
+            mse: report.mse,
+            rmse: report.rmse,
+            fit_percent: report.fit_percent,
+            aic: report.aic,
+            n: report.n,
+            iterations: report.iterations,
+            termination: serde_json::to_value(report.termination)
+                .ok()
+                .and_then(|v| v.as_str().map(String::from))
+                .unwrap_or_default(),
+            warnings: report.warnings.iter().map(|w| w.message()).collect(),
+        }
+    }
+}
+
+impl FitArgs {
+    pub fn options(&self) -> FitOptions {
+        FitOptions {
+            method: match self.method {
+                MethodArg::Lm => Method::LevenbergMarquardt,
+                MethodArg::NelderMead => Method::NelderMead,
+            },
+            starts: self.starts.max(1),
+            ..FitOptions::default()
+        }
+    }
+}
+
+/// `degrau fit`.
+pub fn run_fit(args: &FitArgs) -> Result<(), CliError> {
+    let (test, experiment, _) = args.data.prepare()?;
+    let overrides = args
+        .guess
+        .as_deref()
+        .map(parse_guess)
+        .transpose()?
+        .unwrap_or_default();
+    let (_, report) = experiment
+        .fit(
+            &test,
+            &args.model,
+            args.drift,
+            &overrides,
+            &args.options(),
+            &mut (),
+        )
+        .map_err(|e| CliError::Options(e.to_string()))?;
+    let mut out = io::stdout().lock();
+    let written = if args.json {
+        serde_json::to_writer(&mut out, &FitJson::new(&report))
+            .map_err(io::Error::other)
+            .and_then(|()| writeln!(out))
+    } else {
+        writeln!(out, "{}", human_fit(&report))
+    };
+    written
+        .and_then(|()| out.flush())
+        .map_err(CliError::WriteOutput)
+}
+
+/// The fit as text for people.
+pub fn human_fit(r: &FitReport) -> String {
+    let mut lines = vec![format!(
+        "Model {} fitted to {} samples ({}, {})",
+        r.model.structure.code(),
+        r.n,
+        r.method.name(),
+        r.termination.describe()
+    )];
+    for e in &r.params {
+        let ci = e.ci95.map_or("no interval".to_string(), |(a, b)| {
+            format!("95 % [{}, {}]", fmt(a), fmt(b))
+        });
+        lines.push(format!(
+            "  {:<6} {:>14}  {}  {}",
+            e.param.name(),
+            fmt(e.value),
+            ci,
+            e.param.unit()
+        ));
+    }
+    lines.push(format!(
+        "MSE {}  RMSE {}  fit {} %  AIC {}",
+        fmt(r.mse),
+        fmt(r.rmse),
+        fmt(r.fit_percent),
+        fmt(r.aic)
+    ));
+    for w in &r.warnings {
+        lines.push(format!("warning: {}", w.message()));
+    }
+    lines.join("\n")
+}
+
+fn fmt(x: f64) -> String {
+    crate::format::sig(x, 6)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn guesses_and_offsets_parse() {
+        assert_eq!(
+            parse_guess("Kp=1.2, td=2").unwrap(),
+            vec![(Param::Kp, 1.2), (Param::Td, 2.0)]
+        );
+        assert!(parse_guess("Kp").is_err());
+        assert!(parse_guess("Foo=1").is_err());
+        assert!(parse_guess("Kp=nan").is_err());
+        assert_eq!(parse_offset("free").unwrap(), Offset::Free);
+        assert_eq!(parse_offset("50").unwrap(), Offset::Fixed(50.0));
+        assert!(parse_offset("x").is_err());
+        assert_eq!(parse_window("3.5,29.5").unwrap(), (3.5, 29.5));
+        assert!(parse_window("5,1").is_err());
+    }
+}

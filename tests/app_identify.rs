@@ -1,0 +1,140 @@
+//! The identification view of the real app, through egui_kittest: load a file by path, drag
+//! the dead-time handle, run a fit, cancel one, read the parameter table and residuals.
+
+use std::time::{Duration, Instant};
+
+use degrau::app::DegrauApp;
+use degrau::ident::models::Param;
+use eframe::egui::{self, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+
+const LECI: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../shared/data/seed/leci_step.csv"
+);
+const TCLAB: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../shared/data/real/tclab_step_q1_50.csv"
+);
+
+fn harness() -> Harness<'static, DegrauApp> {
+    let mut h = Harness::builder()
+        .with_size([1360.0, 860.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
+    h.run_steps(2);
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    h
+}
+
+/// Types `path` into the File field and presses Load.
+fn load(h: &mut Harness<'_, DegrauApp>, path: &str) {
+    let field = h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Step test file");
+    field.focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Step test file")
+        .type_text(path);
+    h.run_steps(1);
+    h.get_by_label("Load").click();
+    h.run_steps(3);
+}
+
+/// Steps until `done` holds (the fit runs on its own thread), at most 20 s.
+fn wait_for(h: &mut Harness<'_, DegrauApp>, done: impl Fn(&Harness<'_, DegrauApp>) -> bool) {
+    let start = Instant::now();
+    while !done(h) {
+        assert!(start.elapsed() < Duration::from_secs(20), "timed out");
+        std::thread::sleep(Duration::from_millis(5));
+        h.run_steps(1);
+    }
+    h.run_steps(2);
+}
+
+#[test]
+fn load_drag_the_dead_time_fit_and_read_the_results() {
+    let mut h = harness();
+    load(&mut h, LECI);
+    h.get_by_label_contains("Loaded 35 samples");
+    // The LECI file has no input column: the step and y0 of the notes are typed.
+    h.state_mut().ident.loaded.as_mut().unwrap().experiment.du = 10.0;
+    h.state_mut()
+        .ident
+        .loaded
+        .as_mut()
+        .unwrap()
+        .experiment
+        .offset = degrau::ident::experiment::Offset::Fixed(50.0);
+    h.state_mut().ident.rebuild(true);
+    h.run_steps(2);
+    let td_before = h
+        .state()
+        .ident
+        .loaded
+        .as_ref()
+        .unwrap()
+        .guess
+        .get(Param::Td);
+    let handle = h.get_by_label("dead time handle").rect().center();
+    h.hover_at(handle);
+    h.run_steps(1);
+    h.drag_at(handle);
+    h.run_steps(1);
+    for k in 1..=5 {
+        h.hover_at(handle + Vec2::new(6.0 * k as f32, 0.0));
+        h.run_steps(1);
+    }
+    h.drop_at(handle + Vec2::new(30.0, 0.0));
+    h.run_steps(2);
+    let td_after = h
+        .state()
+        .ident
+        .loaded
+        .as_ref()
+        .unwrap()
+        .guess
+        .get(Param::Td);
+    assert!(td_after > td_before + 0.1, "Td {td_before} → {td_after}");
+
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| h.query_by_label("Fitted P2DU").is_some());
+    for name in ["Kp", "Tw", "Zeta", "Td", "95 % interval"] {
+        h.get_by_label(name);
+    }
+    h.get_by_label("Residuals y − ŷ");
+    let report = h.state().ident.report.clone().unwrap();
+    let wn = 1.0 / report.model.get(Param::Tw);
+    assert!((wn - 0.9659).abs() < 0.02, "ωn = {wn}");
+    assert!((report.model.get(Param::Kp) - 1.0021).abs() < 0.02);
+}
+
+#[test]
+fn a_fit_can_be_cancelled() {
+    let mut h = harness();
+    h.state_mut().ident.settings.y_col = "T1".into();
+    h.state_mut().ident.settings.u_col = "Q1".into();
+    h.state_mut().ident.settings.code = "P3D".into();
+    h.state_mut().ident.settings.starts = 256;
+    load(&mut h, TCLAB);
+    h.get_by_label_contains("Loaded 801 samples");
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    assert!(h.state().ident.is_fitting(), "{}", h.state().ident.status);
+    h.run_steps(1);
+    h.get_by_label("Cancel").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| !h.state().ident.is_fitting());
+    h.get_by_label_contains("cancelled");
+}
+
+#[test]
+fn a_bad_file_keeps_what_was_loaded() {
+    let mut h = harness();
+    load(&mut h, LECI);
+    h.get_by_label_contains("Loaded 35 samples");
+    load(&mut h, "/nonexistent/file.csv");
+    h.get_by_label_contains("What was loaded before is kept");
+    assert_eq!(h.state().ident.loaded.as_ref().unwrap().test.time.len(), 35);
+}

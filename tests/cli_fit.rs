@@ -1,0 +1,95 @@
+//! `degrau fit` on the notes' LECI test and a real TCLab step, through the binary.
+
+use std::process::Command;
+
+const LECI: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../shared/data/seed/leci_step.csv"
+);
+const TCLAB: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../shared/data/real/tclab_step_q1_50.csv"
+);
+
+fn fit(args: &[&str]) -> serde_json::Value {
+    let out = Command::new(env!("CARGO_BIN_EXE_degrau"))
+        .arg("fit")
+        .args(args)
+        .arg("--json")
+        .output()
+        .expect("run degrau");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("one JSON object")
+}
+
+#[test]
+fn leci_p2du_has_the_notes_parameters() {
+    let j = fit(&[
+        LECI, "--model", "P2DU", "--t0", "5", "--du", "10", "--y0", "50",
+    ]);
+    assert_eq!(j["model"], "P2DU");
+    let p = &j["params"];
+    assert!((p["Kp"].as_f64().unwrap() - 1.0021).abs() < 0.01);
+    assert!((p["Td"].as_f64().unwrap() - 1.759).abs() < 0.03);
+    assert!((p["Zeta"].as_f64().unwrap() - 0.1948).abs() < 0.005);
+    assert!((1.0 / p["Tw"].as_f64().unwrap() - 0.9659).abs() < 0.02);
+    assert_eq!(p["Y0"].as_f64().unwrap(), 50.0);
+    for key in [
+        "mse",
+        "rmse",
+        "fit_percent",
+        "aic",
+        "n",
+        "iterations",
+        "termination",
+        "warnings",
+        "ci95",
+    ] {
+        assert!(j.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(j["n"], 35);
+    let ci = j["ci95"]["Kp"].as_array().unwrap();
+    assert!(
+        ci[0].as_f64().unwrap() < p["Kp"].as_f64().unwrap()
+            && p["Kp"].as_f64().unwrap() < ci[1].as_f64().unwrap()
+    );
+}
+
+#[test]
+fn tclab_p2_gain_is_near_the_source() {
+    let j = fit(&[TCLAB, "--model", "P2", "--y-col", "T1", "--u-col", "Q1"]);
+    let kp = j["params"]["Kp"].as_f64().unwrap();
+    // The source reports K = 0.69537 °C/% (least squares, second order, no delay).
+    assert!((kp - 0.70).abs() < 0.02, "Kp = {kp}");
+    let ci = j["ci95"]["Kp"].as_array().expect("an interval");
+    let (lo, hi) = (ci[0].as_f64().unwrap(), ci[1].as_f64().unwrap());
+    assert!(lo < kp && kp < hi && hi - lo < 0.05, "[{lo}, {hi}]");
+}
+
+#[test]
+fn bad_input_is_refused_in_words() {
+    for args in [
+        vec!["/nonexistent.csv", "--model", "P1D"],
+        vec![LECI, "--model", "P7"],
+        vec![LECI, "--model", "P1D"], // no input column and no --t0/--du
+        vec![
+            LECI, "--model", "P1D", "--t0", "5", "--du", "10", "--guess", "Kp",
+        ],
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_degrau"))
+            .arg("fit")
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.starts_with("error: ") && !err.contains("panicked"),
+            "{err}"
+        );
+    }
+}
