@@ -138,3 +138,32 @@ fn a_bad_file_keeps_what_was_loaded() {
     h.get_by_label_contains("What was loaded before is kept");
     assert_eq!(h.state().ident.loaded.as_ref().unwrap().test.time.len(), 35);
 }
+
+#[test]
+fn the_whole_loop_fills_the_chain_table() {
+    let mut h = harness();
+    h.state_mut().ident.settings.y_col = "T1".into();
+    h.state_mut().ident.settings.u_col = "Q1".into();
+    h.state_mut().ident.settings.code = "P1".into();
+    load(&mut h, TCLAB);
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| h.query_by_label("Fitted P1").is_some());
+    h.get_by_label("What does the model get wrong?");
+    h.get_by_label("Run the whole loop").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| !h.state().ident.is_diagnosing());
+    for head in ["Model", "RMSE", "Fit %", "BIC change", "Kp ± 95 %"] {
+        h.get_by_label(head);
+    }
+    let d = h.state().ident.diagnosis.clone().expect("a chain");
+    assert!(!d.steps.is_empty());
+    // The chain's rows: the start P1 and each extension, selectable.
+    // The table sits low in the scrolled side panel: select rows as a screen reader would.
+    h.get_by_label(&d.start.model.structure.label()).click_accesskit();
+    h.run_steps(2);
+    assert_eq!(h.state().ident.selected_step, Some(0));
+    h.get_by_label(&d.final_fit.model.structure.label()).click_accesskit();
+    h.run_steps(2);
+    h.get_by_label_contains("Remedy:");
+}

@@ -330,6 +330,43 @@ fn metadata_rows_are_skipped_on_request() {
 fn a_trailing_separator_is_tolerated() {
     let t = load(&corpus("trailing_separator.csv"), &auto()).unwrap();
     assert_eq!(t.output, [0.0, 0.5, 0.8]);
+    assert!(!has_note(&t, &["no name"]), "{:?}", t.notes);
+}
+
+#[test]
+fn whitespace_header_with_spaces_in_names_is_not_used() {
+    // "time (s)   u   y (V)" splits into 5 names for 3 columns: numbered instead.
+    let t = load(&corpus("header_with_spaces.txt"), &auto()).unwrap();
+    assert_eq!(t.time, [0.0, 0.5, 1.0, 1.5]);
+    assert_eq!(t.output, [0.0, 0.39, 0.63, 0.78]);
+    assert_eq!(t.input_name.as_deref(), Some("column 2"));
+    assert!(
+        has_note(&t, &["header on line 1 was not used", "numbered"]),
+        "{:?}",
+        t.notes
+    );
+}
+
+#[test]
+fn a_headerless_first_column_that_is_not_time_hints_at_the_sampling_period() {
+    let e = error_of(
+        &corpus("headerless_not_time.txt"),
+        &auto(),
+        &[
+            "line 4: time 1 comes after 2",
+            "no header",
+            "give the sampling period",
+        ],
+    );
+    assert!(matches!(e, DataError::TimeNotIncreasing { line: 4, .. }));
+    let o = LoadOptions {
+        sampling_period: Some(0.1),
+        input: ColumnChoice::Position(1),
+        ..auto()
+    };
+    let t = load(&corpus("headerless_not_time.txt"), &o).unwrap();
+    assert_eq!(t.output, [0.0, 0.1, 0.5, 0.7]);
+    assert_eq!(t.time[3], 0.30000000000000004);
 }
 
 #[test]
@@ -492,7 +529,11 @@ fn daisy_whitespace_without_header() {
         (&a.time, &a.output, &a.input),
         (&t.time, &t.output, &t.input)
     );
-    assert!(has_note(&a, &["\"column 2\" was taken as the input"]));
+    assert!(
+        has_note(&a, &["column 2 was taken as the input"]),
+        "{:?}",
+        a.notes
+    );
     // Largest jump: 9 → 4 V at 400 s (the equal 8 → 3 at 1000 s comes later).
     let edge = detect_step(&t, None).unwrap();
     assert_eq!((edge.t0, edge.du), (400.0, -5.0));
@@ -542,7 +583,10 @@ fn enclosure_with_a_comment_header() {
     error_of(
         &real("enclosure_heater_doublet.csv"),
         &auto(),
-        &["several columns could be the output", "4 \"box temp\""],
+        &[
+            "line 1: several columns could be the output",
+            "4 \"box temp\"",
+        ],
     );
 }
 

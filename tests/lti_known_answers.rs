@@ -1137,3 +1137,51 @@ fn repeated_roots_typed_as_coefficients_are_exact() {
     assert_abs("−1.001", poles[1].re, -1.001, 1e-12);
     assert_abs("−3", poles[2].re, -3.0, 1e-12);
 }
+
+// ---------------------------------------------------------------------------------------
+// Found by the property tests (lti_properties.rs), with closed forms
+// ---------------------------------------------------------------------------------------
+
+#[test]
+fn early_undershoot_of_a_relative_degree_three_system() {
+    // (20 − s)/(20(s+1)³): y = 1 − e^{−t}(1 + t + t²/2) − t²e^{−t}/40,
+    // y' = t·e^{−t}(21t − 2)/40: y dips below 0 until t = 2/21, then rises to 1. y'(0) is 0
+    // exactly, computed as rounding noise whose sign decided whether the dip was seen.
+    let y = |t: f64| 1.0 - (-t).exp() * (1.0 + t + t * t / 2.0) - t * t * (-t).exp() / 40.0;
+    for a in [1.0, -2.0] {
+        let g = zpk(&[c(20.0, 0.0)], &[c(-1.0, 0.0); 3], -1.0 / 20.0);
+        let r = response(&g, a);
+        let i = info(&r);
+        assert_rel(
+            "undershoot time",
+            i.undershoot_time.unwrap(),
+            2.0 / 21.0,
+            1e-12,
+        );
+        assert_rel(
+            "undershoot",
+            i.undershoot.unwrap(),
+            -100.0 * y(2.0 / 21.0),
+            1e-9,
+        );
+        let ts = bisect(|t| y(t) - 0.98, 3.0, 10.0);
+        assert_rel("settling", i.settling_time.unwrap(), ts, 1e-12);
+    }
+}
+
+#[test]
+fn settling_max_counts_the_jump_when_the_rise_ends_inside_it() {
+    // (2s + 1)/(s + 1): y = 1 + e^{−t}, y(0⁺) = 2: the rise (10 % and 90 %) is complete
+    // inside the jump, and the largest y after it is y(0⁺) = 2 (it used to read 1).
+    let g = TransferFunction::from_coeffs(&[2.0, 1.0], &[1.0, 1.0]).unwrap();
+    let i = info(&response(&g, 1.0));
+    assert_eq!(
+        (i.rise_start, i.rise_end, i.rise_time),
+        (Some(0.0), Some(0.0), Some(0.0))
+    );
+    assert_abs("settling max", i.settling_max.unwrap(), 2.0, 1e-15);
+    assert_abs("settling min", i.settling_min.unwrap(), 0.9, 1e-15);
+    assert_abs("overshoot", i.overshoot.unwrap(), 100.0, 1e-12);
+    assert_eq!(i.peak_time, Some(0.0));
+    assert_rel("settling", i.settling_time.unwrap(), 50f64.ln(), 1e-13);
+}

@@ -448,6 +448,128 @@ fn check_no_change(r: &StepResponse, i: &StepInfo) -> Result<(), TestCaseError> 
     Ok(())
 }
 
+fn pair(re: f64, im: f64) -> [C64; 2] {
+    [C64::new(re, im), C64::new(re, -im)]
+}
+
+fn real(re: f64) -> C64 {
+    C64::new(re, 0.0)
+}
+
+/// Systems on which (a) once failed, each for a reason worth keeping (fixed since).
+#[test]
+fn metrics_regressions() {
+    let cases = [
+        // Zeros make |Δ| small next to the transients: an overshoot of 1e-8·|Δ| came after
+        // the grid had stopped (its end was relative to the transients' size only).
+        System {
+            poles: [
+                &pair(-3.883446984898225, 4.293500680427351)[..],
+                &pair(-9.27266296533525, 0.7889226463818704),
+                &[
+                    real(-4.732681738792157),
+                    real(-8.596227452289764),
+                    real(-6.735375930718807),
+                ],
+            ]
+            .concat(),
+            zeros: [
+                &pair(-2.4576221046344653, 9.208289058760505)[..],
+                &[real(-16.154763595754886)],
+                &pair(-4.713005019258127, 7.914713062132218),
+            ]
+            .concat(),
+            gain: 0.018490921673362987,
+            delay: 0.0,
+            amplitude: 0.19396016552550488,
+        },
+        // Relative degree 2, RHP zero: y'(0) = 0 computed with the wrong sign hid the dip.
+        System {
+            poles: [
+                &pair(-1.5052130461213458, 0.7698651349367441)[..],
+                &[real(-0.07549388424470031)],
+            ]
+            .concat(),
+            zeros: vec![real(19.96499252202626)],
+            gain: 1.9107321652208862,
+            delay: 0.0,
+            amplitude: 0.19293908695996362,
+        },
+        // Fast RHP zeros and a near-double pair: a rise, a dip and a turn within 0.15 s,
+        // one cell of a grid sized for the poles alone.
+        System {
+            poles: [
+                pair(-1.1323630702904546, 1.10541238995886),
+                pair(-1.1323661727382333, 1.10541238995886),
+            ]
+            .concat(),
+            zeros: [
+                &pair(14.992532749061771, 9.702463896907352)[..],
+                &[real(-1.3029602024606675)],
+            ]
+            .concat(),
+            gain: -0.7323281572118255,
+            delay: 0.0,
+            amplitude: -0.1434206485943856,
+        },
+        // Biproper, delayed, the rise ends inside the jump: settling max ignored y(θ⁺).
+        System {
+            poles: [
+                pair(-1.7935712858720652, 9.22601438440234),
+                pair(-0.5020239826036047, 5.208221407647328),
+                pair(-2.6130014451869576, 9.84592408161727),
+            ]
+            .concat(),
+            zeros: [
+                pair(1.74833954618132, 8.931258090342396),
+                pair(0.018368037943124936, 6.528610374850234),
+                pair(5.5423920439222885, 0.10640978808429298),
+            ]
+            .concat(),
+            gain: -93.85029376768327,
+            delay: 1.213060022114107,
+            amplitude: -0.22439486847993867,
+        },
+        // Biproper first order jumping beyond the band: the tail cut must end inside it.
+        System {
+            poles: vec![real(-8.121104819079147)],
+            zeros: vec![real(-4.949927743080802)],
+            gain: 1.2014484921349697,
+            delay: 0.0,
+            amplitude: -1.8159658114520856,
+        },
+        // Biproper, already settled at the jump (settling time = the step instant).
+        System {
+            poles: vec![real(-8.965716370096048)],
+            zeros: vec![real(-8.823360148499457)],
+            gain: -5.866871903495313,
+            delay: 0.0,
+            amplitude: 1.0871524535718742,
+        },
+        // Its only overshoot (0.025 %) comes late, inside the band.
+        System {
+            poles: [
+                &pair(-4.968698531042753, 1.9076813808546558)[..],
+                &[real(-6.203774570797136)],
+            ]
+            .concat(),
+            zeros: [
+                &pair(-11.371718195936625, 0.5393153144400197)[..],
+                &[real(0.8452979162727969)],
+            ]
+            .concat(),
+            gain: 0.11524512987193869,
+            delay: 0.0,
+            amplitude: 2.899327201451976,
+        },
+    ];
+    for (k, sys) in cases.iter().enumerate() {
+        if let Err(e) = check_metrics(sys) {
+            panic!("regression case {k}: {e}");
+        }
+    }
+}
+
 proptest! {
     #![proptest_config(config(96))]
 

@@ -61,6 +61,7 @@ pub fn show(ui: &mut Ui, view: &mut IdentView) {
     let height = ui.available_height();
     ui.label("Measured output and model");
     let markers = view.markers;
+    let evidence = view.evidence_interval();
     let response = Plot::new("identification")
         .height(height * 0.62)
         .legend(
@@ -82,6 +83,12 @@ pub fn show(ui: &mut Ui, view: &mut IdentView) {
                 VLine::new(format!("step at t0 = {} s", sig(setup.t0, 4)), setup.t0)
                     .color(data_color.gamma_multiply(0.5)),
             );
+            if let Some((a, b)) = evidence {
+                plot.span(
+                    egui_plot::Span::new("evidence", a..=b)
+                        .fill(Color32::from_rgba_unmultiplied(230, 60, 60, 40)),
+                );
+            }
             if let Some(info) = &info {
                 let value_at = |t: f64| interpolate(&measured, t);
                 draw_step_markers(

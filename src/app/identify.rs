@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 use crate::app::job::Job;
 use crate::format::sig;
 use crate::ident::data::{self, ColumnChoice, LoadOptions, StepTest};
+use crate::ident::diagnose::{self, DiagnoseOptions, DiagnoseReport, Step};
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::{FitData, FitError, FitOptions, FitReport, Method, Progress, fit};
 use crate::ident::models::{Model, Param, Structure, Values, pair_poles};
@@ -77,6 +78,20 @@ pub struct IdentView {
     pub status: String,
     pub landscape: crate::app::landscape_view::LandscapeView,
     pub markers: crate::app::step_plot::Markers,
+    /// The chain of the diagnosis: start fit, then one step per extension.
+    pub diagnosis: Option<DiagnoseReport>,
+    diagnose_job: Option<Job<(), DiagnoseOutcome>>,
+    /// Which model of the chain is shown (0: the start).
+    pub selected_step: Option<usize>,
+    pub diagnose_note: String,
+}
+
+/// What a background diagnosis returns.
+enum DiagnoseOutcome {
+    /// The whole loop ran.
+    Loop(DiagnoseReport),
+    /// One step was asked for: the leading cause (or none).
+    Step(Option<Step>),
 }
 
 /// What the view asks of the app.
@@ -223,6 +238,9 @@ impl IdentView {
         if let Some(p) = self.job.as_ref().and_then(|j| j.progress.as_ref()) {
             return Some(p.model);
         }
+        if let (Some(k), Some(d)) = (self.selected_step, &self.diagnosis) {
+            return chain(d).get(k).map(|f| f.model);
+        }
         let l = self.loaded.as_ref()?;
         match (&self.report, &self.fitted) {
             (Some(r), Some((s, _))) if *s == l.structure => Some(r.model),
@@ -237,7 +255,112 @@ impl IdentView {
             l.structure = model.structure;
             self.report = None;
             self.fitted = None;
+            self.clear_diagnosis();
         }
+    }
+
+    fn clear_diagnosis(&mut self) {
+        self.diagnosis = None;
+        self.selected_step = None;
+        self.diagnose_note.clear();
+    }
+
+    /// The interval the selected step's evidence points at.
+    pub fn evidence_interval(&self) -> Option<(f64, f64)> {
+        let k = self.selected_step?;
+        self.diagnosis
+            .as_ref()?
+            .steps
+            .get(k.checked_sub(1)?)?
+            .interval
+    }
+
+    pub fn is_diagnosing(&self) -> bool {
+        self.diagnose_job.is_some()
+    }
+
+    /// Starts the whole loop (`whole`) or one step from the current fit, off the UI thread.
+    pub fn start_diagnosis(&mut self, ctx: Option<egui::Context>, whole: bool) {
+        let (Some(report), Some((_, data))) = (self.current_fit(), self.fitted.clone()) else {
+            return;
+        };
+        self.diagnose_note = if whole {
+            "Running the loop…".into()
+        } else {
+            "Looking for the leading cause…".into()
+        };
+        self.diagnose_job = Some(Job::spawn(ctx, move |_| {
+            if whole {
+                DiagnoseOutcome::Loop(diagnose::diagnose_from(
+                    &data,
+                    report,
+                    &DiagnoseOptions::default(),
+                ))
+            } else {
+                DiagnoseOutcome::Step(diagnose::next_step(&data, &report))
+            }
+        }));
+    }
+
+    /// The last fit of the chain, or the fit.
+    fn current_fit(&self) -> Option<FitReport> {
+        match &self.diagnosis {
+            Some(d) => Some(d.final_fit.clone()),
+            None => self.report.clone(),
+        }
+    }
+
+    fn poll_diagnosis(&mut self) {
+        let Some(result) = self.diagnose_job.as_mut().and_then(|j| j.poll()) else {
+            return;
+        };
+        self.diagnose_job = None;
+        match result {
+            DiagnoseOutcome::Loop(d) => {
+                self.diagnose_note = d.verdict.clone();
+                self.selected_step = Some(d.steps.len());
+                self.adopt(&d.final_fit);
+                self.diagnosis = Some(d);
+            }
+            DiagnoseOutcome::Step(Some(step)) => {
+                let start = self.report.clone();
+                let d = self.diagnosis.get_or_insert_with(|| DiagnoseReport {
+                    start: start.clone().unwrap_or_else(|| step.fit.clone()),
+                    steps: Vec::new(),
+                    final_fit: step.fit.clone(),
+                    adequate: false,
+                    verdict: String::new(),
+                    static_gain: (0.0, None),
+                });
+                d.final_fit = step.fit.clone();
+                d.static_gain = (step.fit.model.get(Param::Kp), step.fit.interval(Param::Kp));
+                d.steps.push(step.clone());
+                self.selected_step = Some(d.steps.len());
+                self.diagnose_note = format!("{}: {}", step.cause.id(), step.cause.explanation());
+                self.adopt(&step.fit);
+            }
+            DiagnoseOutcome::Step(None) => {
+                self.diagnose_note =
+                    "none: no extension lowers BIC by 10; the model is adequate.".into();
+                if let Some(d) = &mut self.diagnosis {
+                    d.adequate = true;
+                }
+            }
+        }
+    }
+
+    /// Makes a fit of the chain the current one (its structure, values and code).
+    fn adopt(&mut self, fit: &FitReport) {
+        self.settings.code = fit.model.structure.code();
+        self.settings.drift = fit.model.structure.drift;
+        if let Some(l) = self.loaded.as_mut() {
+            l.structure = fit.model.structure;
+            l.guess = fit.model.values;
+        }
+        if let Some((s, _)) = &mut self.fitted {
+            *s = fit.model.structure;
+        }
+        self.report = Some(fit.clone());
     }
 
     pub fn is_fitting(&self) -> bool {
@@ -306,6 +429,7 @@ impl IdentView {
                 }
                 self.report = Some(report);
                 self.job = None;
+                self.clear_diagnosis();
             }
             Some(Err(e)) => {
                 self.status = format!("The fit did not run: {e}");
@@ -331,6 +455,7 @@ impl IdentView {
     pub fn panel(&mut self, ui: &mut Ui) -> IdentAction {
         let mut action = IdentAction::None;
         self.poll();
+        self.poll_diagnosis();
         ui.heading("Step test");
         self.data_section(ui);
         if self.loaded.is_some() {
@@ -342,6 +467,10 @@ impl IdentView {
             self.fit_section(ui);
             if let Some(a) = self.results(ui) {
                 action = a;
+            }
+            if self.report.is_some() {
+                ui.separator();
+                self.diagnose_section(ui);
             }
         }
         action
@@ -518,7 +647,7 @@ impl IdentView {
     fn model_section(&mut self, ui: &mut Ui) {
         let mut changed = false;
         ui.horizontal(|ui| {
-            ui.strong("Model");
+            ui.strong("Model structure");
             egui::ComboBox::from_id_salt("model code")
                 .selected_text(&self.settings.code)
                 .show_ui(ui, |ui| {
@@ -660,6 +789,127 @@ impl IdentView {
         });
         action
     }
+}
+
+impl IdentView {
+    /// "What does the model get wrong?": the cause in words, the buttons, the chain table.
+    fn diagnose_section(&mut self, ui: &mut Ui) {
+        ui.heading("What does the model get wrong?");
+        ui.horizontal(|ui| {
+            if self.is_diagnosing() {
+                ui.spinner();
+            } else {
+                if ui
+                    .button("Extend with the leading cause")
+                    .on_hover_text("Name what the model gets wrong and extend it once")
+                    .clicked()
+                {
+                    self.start_diagnosis(Some(ui.ctx().clone()), false);
+                }
+                if ui
+                    .button("Run the whole loop")
+                    .on_hover_text("Extend until no extension pays for itself")
+                    .clicked()
+                {
+                    self.start_diagnosis(Some(ui.ctx().clone()), true);
+                }
+            }
+        });
+        if !self.diagnose_note.is_empty() {
+            ui.label(&self.diagnose_note);
+        }
+        let Some(d) = &self.diagnosis else { return };
+        let rows = chain_rows(d);
+        let mut selected = self.selected_step;
+        egui::Grid::new("chain")
+            .striped(true)
+            .num_columns(5)
+            .show(ui, |ui| {
+                for head in ["Model", "RMSE", "Fit %", "BIC change", "Kp ± 95 %"] {
+                    ui.strong(head);
+                }
+                ui.end_row();
+                for (k, row) in rows.iter().enumerate() {
+                    if ui
+                        .selectable_label(selected == Some(k), &row[0])
+                        .on_hover_text("Show this model's curve and residuals")
+                        .clicked()
+                    {
+                        selected = Some(k);
+                    }
+                    for cell in &row[1..] {
+                        ui.label(cell);
+                    }
+                    ui.end_row();
+                }
+            });
+        self.selected_step = selected;
+        if ui.button("Copy the table").clicked() {
+            ui.ctx().copy_text(chain_text(d));
+        }
+        if let Some(step) = selected
+            .and_then(|k| k.checked_sub(1))
+            .and_then(|k| d.steps.get(k))
+        {
+            ui.strong(format!("{}: {}", step.cause.id(), step.cause.explanation()));
+            ui.label(&step.evidence);
+            ui.label(format!(
+                "Remedy: {}. RMSE {} → {} ({}× lower); fit {} % → {} %.",
+                step.cause.remedy(),
+                sig(step.gain.rmse_before, 4),
+                sig(step.gain.rmse_after, 4),
+                sig(step.gain.rmse_ratio, 3),
+                sig(step.gain.fit_percent_before, 4),
+                sig(step.gain.fit_percent_after, 4)
+            ));
+        }
+        if !d.verdict.is_empty() {
+            ui.weak(&d.verdict);
+        }
+    }
+}
+
+/// The fits of a chain: the start, then each step's.
+pub fn chain(d: &DiagnoseReport) -> Vec<&FitReport> {
+    std::iter::once(&d.start)
+        .chain(d.steps.iter().map(|s| &s.fit))
+        .collect()
+}
+
+/// The chain table's cells: model, RMSE, fit %, BIC change, Kp ± half-interval.
+pub fn chain_rows(d: &DiagnoseReport) -> Vec<[String; 5]> {
+    chain(d)
+        .iter()
+        .enumerate()
+        .map(|(k, f)| {
+            let kp = f.model.get(Param::Kp);
+            let kp_text = match f.interval(Param::Kp) {
+                Some((a, b)) => format!("{} ± {}", sig(kp, 4), sig(0.5 * (b - a), 2)),
+                None => sig(kp, 4),
+            };
+            let delta = k
+                .checked_sub(1)
+                .and_then(|i| d.steps.get(i))
+                .map_or(String::new(), |s| sig(s.gain.criterion_delta, 4));
+            [
+                f.model.structure.label(),
+                sig(f.rmse, 4),
+                sig(f.fit_percent, 4),
+                delta,
+                kp_text,
+            ]
+        })
+        .collect()
+}
+
+/// The chain table as tab-separated text, for a spreadsheet or a report.
+pub fn chain_text(d: &DiagnoseReport) -> String {
+    let mut out = String::from("model\tRMSE\tfit %\tBIC change\tKp ± 95 %\n");
+    for row in chain_rows(d) {
+        out.push_str(&row.join("\t"));
+        out.push('\n');
+    }
+    out
 }
 
 /// ωn, σ, ωd and the poles of a model, in words.

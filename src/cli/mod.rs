@@ -12,6 +12,7 @@
 use std::io::{self, BufRead, BufWriter, Write};
 use std::process::ExitCode;
 
+pub mod diagnose;
 pub mod fit;
 
 use clap::{Args, Parser, Subcommand};
@@ -50,6 +51,8 @@ pub enum Command {
     Step(StepArgs),
     /// Fit a process model (procest codes: P1D, P2DU, …) to a measured step test.
     Fit(fit::FitArgs),
+    /// Name what a fitted model gets wrong, extend it, and measure what each extension gains.
+    Diagnose(diagnose::DiagnoseArgs),
     /// Open the app on a measured step test.
     Open(fit::OpenArgs),
 }
@@ -429,6 +432,7 @@ pub fn main() -> ExitCode {
         None => open_app(),
         Some(Command::Step(args)) => finish(run_step(&args)),
         Some(Command::Fit(args)) => finish(fit::run_fit(&args)),
+        Some(Command::Diagnose(args)) => finish(diagnose::run_diagnose(&args)),
         Some(Command::Open(args)) => open_app_with(Some(args.settings())),
     }
 }

@@ -9,7 +9,9 @@
 //! data lines: the first of `;`, tab, `,`, whitespace that splits them into the same number
 //! (≥ 2) of numeric cells. Blank lines and lines starting with `#` or `%` are skipped; the
 //! first non-numeric line is the header. Without one, the last comment line before the data
-//! with as many fields as the data (`# time, control output, …`) names the columns.
+//! with as many fields as the data (`# time, control output, …`) names the columns. In a
+//! whitespace-separated file, a header whose names hold spaces (`time (s)   y`) cannot be
+//! split into the columns: it is skipped and the columns are numbered (with a note).
 //! `skip_rows` drops metadata lines at the top (counted as lines of the file). Header and
 //! cells may be quoted. A UTF-8 BOM is ignored, UTF-16 (with BOM) is decoded, and a file that
 //! is not UTF-8 is read as Latin-1 (with a note); a zero byte means a binary file.
@@ -25,9 +27,9 @@
 //! - **output** and **input** are the first columns named as in [`OUTPUT_NAMES`] and
 //!   [`INPUT_NAMES`] (earlier names in the list first).
 //! - An unnamed input is guessed among the remaining columns: a column is *step-like* when
-//!   it takes at most [`MAX_INPUT_LEVELS`] distinct values and changes between at most 1 in
-//!   10 consecutive rows (a constant column qualifies); exactly one step-like candidate is
-//!   taken as the input (with a note), several are left alone (with a note).
+//!   it takes at most [`MAX_INPUT_LEVELS`] distinct values and changes once, or between at
+//!   most 1 in 10 consecutive rows (a constant column qualifies). Exactly one step-like
+//!   candidate is taken as the input (with a note); several are left alone (with a note).
 //! - An unnamed output is the one column left; several left is an error listing them.
 //! - A column with an empty header name (or pandas' `Unnamed: 0`), the row index pandas
 //!   writes, is never chosen automatically.
@@ -177,7 +179,7 @@ pub enum DataError {
     #[error("the file has no data: its {lines} line(s) are blank, comments or skipped rows")]
     NoData { lines: usize },
     #[error(
-        "line {line}: the data end with {found} sample(s) (rows with a time and an output); \
+        "line {line}: the file ends after {found} sample(s) (rows with a time and an output); \
          at least {needed} samples are needed"
     )]
     TooFewSamples {
@@ -185,21 +187,24 @@ pub enum DataError {
         found: usize,
         needed: usize,
     },
-    #[error("line {line}, column \"{column}\": \"{text}\" is not a number")]
+    /// `column` is `"name"`, or the position in a file without names.
+    #[error("line {line}, column {column}: \"{text}\" is not a number")]
     NotANumber {
         line: usize,
         column: String,
         text: String,
     },
     #[error(
-        "line {line}, column \"{column}\": the time is missing (empty or NaN); every row needs a time"
+        "line {line}, column {column}: the time is missing (empty or NaN); every row needs a time"
     )]
     TimeMissing { line: usize, column: String },
-    #[error("line {line}: time {time} comes after {previous}; the time must not decrease")]
+    #[error("line {line}: time {time} comes after {previous}; the time must not decrease{hint}")]
     TimeNotIncreasing {
         line: usize,
         time: f64,
         previous: f64,
+        /// Empty, or why this column was taken as the time.
+        hint: String,
     },
     #[error("line {line} has {found} value(s), but line {reference} has {expected}")]
     Ragged {
@@ -231,12 +236,12 @@ pub enum DataError {
          was given; choose the time column or give the sampling period (the columns are {available})"
     )]
     NoTime { line: usize, available: String },
-    #[error("line {line}: the {first} and the {second} are the same column, \"{name}\"")]
+    #[error("line {line}: the {first} and the {second} are the same column, {column}")]
     SameColumn {
         line: usize,
         first: Role,
         second: Role,
-        name: String,
+        column: String,
     },
     #[error(
         "line {line}: several columns could be the output ({candidates}); choose one by name or position"
@@ -500,6 +505,14 @@ enum Header {
     Row(usize),
     /// A comment line before the data.
     Comment(usize),
+    /// A header row whose names do not split into the columns (whitespace-separated names
+    /// with spaces): skipped, the columns numbered.
+    Ignored(usize),
+}
+
+/// `column 1`, `column 2`, …: the names of unnamed columns.
+fn numbered(columns: usize) -> Vec<String> {
+    (1..=columns).map(|k| format!("column {k}")).collect()
 }
 
 /// How a file's table is laid out.
@@ -561,33 +574,73 @@ impl Layout {
             row_bytes: 1 + sample.iter().map(|l| l.len() + 1).sum::<usize>() / sample.len().max(1),
         };
         if is_header {
-            let mut names: Vec<String> = first_cells.iter().map(|c| c.to_string()).collect();
-            let next_count = data.get(1).map(|d| fields(d.1, delimiter).count());
-            if names.len() > 1
-                && names.last().is_some_and(String::is_empty)
-                && next_count == Some(names.len() - 1)
-            {
-                names.pop(); // a trailing separator after the last name
-            }
-            layout.columns = names.len();
-            layout.names = names;
-            layout.header = Some(Header::Row(first_no));
+            layout.use_header_row(first_no, &first_cells, data.get(1).map(|d| d.1));
         } else if let Some((no, names)) = comment_header(&comments, delimiter, layout.columns) {
             layout.names = names;
             layout.header = Some(Header::Comment(no));
+            layout.defined_at = no;
         } else {
-            layout.names = (1..=layout.columns)
-                .map(|k| format!("column {k}"))
-                .collect();
+            layout.names = numbered(layout.columns);
         }
         Ok(layout)
+    }
+
+    /// Takes the names of a header row, given the row after it.
+    fn use_header_row(&mut self, no: usize, cells: &[&str], next: Option<&str>) {
+        let mut names: Vec<String> = cells.iter().map(|c| c.to_string()).collect();
+        let next: Option<Vec<&str>> = next.map(|l| fields(l, self.delimiter).collect());
+        // A separator after the last name (the rows may end with one too).
+        let trailing = names.len() > 1
+            && names.last().is_some_and(String::is_empty)
+            && next.as_ref().is_none_or(|c| {
+                c.len() == names.len() - 1 || c.last().is_some_and(|x| x.is_empty())
+            });
+        if trailing {
+            names.pop();
+        }
+        self.header = Some(Header::Row(no));
+        match next.map(|c| c.len()) {
+            // Names with spaces in a whitespace-separated file cannot be told apart.
+            Some(n) if self.delimiter == Delimiter::Whitespace && n != names.len() => {
+                self.columns = n;
+                self.names = numbered(n);
+                self.header = Some(Header::Ignored(no));
+            }
+            _ => {
+                self.columns = names.len();
+                self.names = names;
+            }
+        }
     }
 
     /// The line of the header row, which is not data.
     fn header_row(&self) -> Option<usize> {
         match self.header {
-            Some(Header::Row(no)) => Some(no),
+            Some(Header::Row(no) | Header::Ignored(no)) => Some(no),
             _ => None,
+        }
+    }
+
+    /// Whether the columns have names.
+    fn named(&self) -> bool {
+        matches!(self.header, Some(Header::Row(_) | Header::Comment(_)))
+    }
+
+    /// A column in a message: `"T1"`, or its position without names.
+    fn label(&self, column: usize) -> String {
+        if self.named() {
+            format!("\"{}\"", self.name(column))
+        } else {
+            (column + 1).to_string()
+        }
+    }
+
+    /// A column in a list: `4 "box temp"`, or `column 4` without names.
+    fn listing(&self, column: usize) -> String {
+        if self.named() {
+            format!("{} \"{}\"", column + 1, self.name(column))
+        } else {
+            format!("column {}", column + 1)
         }
     }
 
@@ -613,16 +666,14 @@ impl Layout {
 
     /// The columns, for a message.
     fn available(&self) -> String {
-        if self.header.is_none() {
+        if !self.named() {
             return format!(
                 "{} unnamed column(s) (no header row): choose by position, 1 to {}",
                 self.columns, self.columns
             );
         }
-        self.names
-            .iter()
-            .enumerate()
-            .map(|(i, n)| format!("{} \"{n}\"", i + 1))
+        (0..self.columns)
+            .map(|i| self.listing(i))
             .collect::<Vec<_>>()
             .join(", ")
     }
@@ -636,6 +687,11 @@ impl Layout {
         let header = match self.header {
             Some(Header::Row(no)) => format!("header on line {no}"),
             Some(Header::Comment(no)) => format!("column names from the comment on line {no}"),
+            Some(Header::Ignored(no)) => format!(
+                "the header on line {no} was not used (its names do not split into the {} \
+                 columns): the columns are numbered",
+                self.columns
+            ),
             None => "no header row".to_string(),
         };
         format!("read as {}{decimal}, {header}", self.delimiter.describe())
@@ -734,7 +790,7 @@ struct Plan {
 impl Plan {
     fn new(layout: &Layout, options: &LoadOptions, paste: bool) -> Result<Self, DataError> {
         let excluded: Vec<bool> = (0..layout.columns)
-            .map(|i| layout.header.is_some() && is_index_name(&layout.name(i)))
+            .map(|i| layout.named() && is_index_name(&layout.name(i)))
             .collect();
         let by_alias = |aliases: &[&str], taken: &[Option<usize>]| {
             aliases.iter().find_map(|alias| {
@@ -752,7 +808,7 @@ impl Plan {
             None => by_alias(&TIME_NAMES, &[]).or_else(|| {
                 let first_is_time = options.sampling_period.is_none()
                     && layout.columns >= 2
-                    && (layout.header.is_none() || paste);
+                    && (!layout.named() || paste);
                 first_is_time.then_some(0)
             }),
         };
@@ -764,8 +820,8 @@ impl Plan {
                 });
             }
             (Some(i), Some(ts)) => notes.push(format!(
-                "the sampling period given ({ts} s) was not used: the time is read from column \"{}\"",
-                layout.name(i)
+                "the sampling period given ({ts} s) was not used: the time is read from column {}",
+                layout.label(i)
             )),
             _ => {}
         }
@@ -800,9 +856,12 @@ impl Plan {
                 .filter(|&i| excluded[i])
                 .map(|i| (i + 1).to_string())
                 .collect();
+            let which = match &ignored[..] {
+                [one] => format!("column {one} has"),
+                _ => format!("columns {} have", ignored.join(", ")),
+            };
             notes.push(format!(
-                "column(s) {} have no name (a row index, as pandas writes): not used",
-                ignored.join(", ")
+                "{which} no name (a row index, as pandas writes): not used"
             ));
         }
         Ok(Self {
@@ -843,10 +902,10 @@ impl Plan {
         match left[..] {
             [only] => {
                 self.output = Some(only);
-                if layout.header.is_some() {
+                if layout.named() {
                     self.notes.push(format!(
-                        "column \"{}\" was taken as the output: it is the only column left",
-                        layout.name(only)
+                        "column {} was taken as the output: it is the only column left",
+                        layout.label(only)
                     ));
                 }
                 Ok(())
@@ -867,7 +926,7 @@ impl Plan {
                 line: layout.defined_at,
                 candidates: left
                     .iter()
-                    .map(|&i| format!("{} \"{}\"", i + 1, layout.name(i)))
+                    .map(|&i| layout.listing(i))
                     .collect::<Vec<_>>()
                     .join(", "),
             }),
@@ -886,15 +945,15 @@ impl Plan {
             [only] if leaves_output => {
                 self.input = Some(only);
                 self.notes.push(format!(
-                    "column \"{}\" was taken as the input: it is piecewise constant with few levels",
-                    layout.name(only)
+                    "column {} was taken as the input: it is piecewise constant with few levels",
+                    layout.label(only)
                 ));
             }
             [_, _, ..] => self.notes.push(format!(
                 "columns {} all look like an input (piecewise constant): none was taken; choose one",
                 step_like
                     .iter()
-                    .map(|&i| format!("\"{}\"", layout.name(i)))
+                    .map(|&i| layout.label(i))
                     .collect::<Vec<_>>()
                     .join(", ")
             )),
@@ -942,7 +1001,7 @@ fn check_distinct(layout: &Layout, chosen: [(Role, Option<usize>); 3]) -> Result
                     line: layout.defined_at,
                     first,
                     second,
-                    name: layout.name(a),
+                    column: layout.label(a),
                 });
             }
         }
@@ -950,11 +1009,12 @@ fn check_distinct(layout: &Layout, chosen: [(Role, Option<usize>); 3]) -> Result
     Ok(())
 }
 
-/// At most [`MAX_INPUT_LEVELS`] distinct values, changing between at most 1 in 10 rows.
+/// At most [`MAX_INPUT_LEVELS`] distinct values, changing once or between at most 1 in 10
+/// consecutive rows.
 fn is_step_like(values: &[f64]) -> bool {
     let present: Vec<f64> = values.iter().copied().filter(|v| !v.is_nan()).collect();
     let changes = present.windows(2).filter(|w| w[0] != w[1]).count();
-    if present.is_empty() || changes * 10 > present.len() {
+    if present.is_empty() || (changes > 1 && changes * 10 > present.len()) {
         return false;
     }
     let mut levels: Vec<f64> = Vec::new();
@@ -1078,7 +1138,10 @@ fn load_with_layout(
     if let Some((line, column, text)) = chosen
         .iter()
         .flatten()
-        .filter_map(|&i| rows.bad_at(i).map(|(l, t)| (*l, layout.name(i), t.clone())))
+        .filter_map(|&i| {
+            rows.bad_at(i)
+                .map(|(l, t)| (*l, layout.label(i), t.clone()))
+        })
         .min_by_key(|b| b.0)
     {
         return Err(DataError::NotANumber { line, column, text });
@@ -1087,7 +1150,13 @@ fn load_with_layout(
     let time = match plan.time {
         Some(i) => {
             let time = rows.take(i);
-            check_time(&time, &rows.lines, &layout.name(i))?;
+            let hint = if layout.named() {
+                ""
+            } else {
+                " (column 1 was taken as the time because the file has no header; if it has no \
+                 time column, give the sampling period)"
+            };
+            check_time(&time, &rows.lines, &layout.label(i), hint)?;
             time
         }
         None => {
@@ -1130,7 +1199,7 @@ fn load_with_layout(
 }
 
 /// Every row has a time, and it never decreases.
-fn check_time(time: &[f64], lines: &[usize], column: &str) -> Result<(), DataError> {
+fn check_time(time: &[f64], lines: &[usize], column: &str, hint: &str) -> Result<(), DataError> {
     let line = |k: usize| lines.get(k).copied().unwrap_or(0);
     if let Some(k) = time.iter().position(|t| t.is_nan()) {
         return Err(DataError::TimeMissing {
@@ -1143,6 +1212,7 @@ fn check_time(time: &[f64], lines: &[usize], column: &str) -> Result<(), DataErr
             line: line(k + 1),
             time: time[k + 1],
             previous: time[k],
+            hint: hint.to_string(),
         }),
         None => Ok(()),
     }
@@ -1313,6 +1383,9 @@ mod tests {
         assert!(!is_step_like(&ramp));
         let many_levels: Vec<f64> = (0..100).map(|k| f64::from(k / 10)).collect();
         assert!(!is_step_like(&many_levels), "10 levels");
+        // A short record may change once, not more.
+        assert!(is_step_like(&[0.0, 1.0, 1.0, 1.0]));
+        assert!(!is_step_like(&[0.0, 1.0, 0.0, 1.0]));
     }
 
     #[test]

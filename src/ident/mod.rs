@@ -3,6 +3,7 @@
 //! diagnosing what a fitted model gets wrong. Pure: nothing here knows about the GUI.
 
 pub mod data;
+pub mod diagnose;
 pub mod experiment;
 pub mod fit;
 pub mod guess;
@@ -10,4 +11,5 @@ pub mod handles;
 pub mod landscape;
 pub mod models;
 pub mod prepare;
+pub mod residuals;
 pub mod stats;

@@ -189,6 +189,18 @@ impl Structure {
         c
     }
 
+    /// The code plus what it does not say: `P2 + drift`, `P1D, Y0 held`.
+    pub fn label(&self) -> String {
+        let mut l = self.code();
+        if self.drift {
+            l.push_str(" + drift");
+        }
+        if !self.free_offset {
+            l.push_str(", Y0 held");
+        }
+        l
+    }
+
     /// The parameters of the transfer function and of the output model, in order.
     pub fn params(&self) -> Vec<Param> {
         let mut p = vec![Param::Kp];

@@ -140,7 +140,9 @@ pub enum Window {
 
 /// The test restricted to a window (at least [`MIN_SAMPLES`] samples), with a note.
 pub fn apply_window(test: &StepTest, window: Window) -> Result<StepTest, PrepareError> {
-    let count = test.time.len();
+    let input_len = test.input.as_ref().map_or(usize::MAX, Vec::len);
+    let count = test.time.len().min(test.output.len()).min(input_len);
+    let time = &test.time[..count];
     let range = match window {
         Window::Samples { first, last } => {
             if first == 0 || first > last || last > count {
@@ -152,7 +154,7 @@ pub fn apply_window(test: &StepTest, window: Window) -> Result<StepTest, Prepare
             if start.is_nan() || end.is_nan() || start > end {
                 return Err(PrepareError::BadTimeRange { start, end });
             }
-            test.time.partition_point(|&t| t < start)..test.time.partition_point(|&t| t <= end)
+            time.partition_point(|&t| t < start)..time.partition_point(|&t| t <= end)
         }
     };
     if range.len() < MIN_SAMPLES {
@@ -161,18 +163,24 @@ pub fn apply_window(test: &StepTest, window: Window) -> Result<StepTest, Prepare
             needed: MIN_SAMPLES,
         });
     }
-    let mut kept = test.clone();
-    kept.time = test.time[range.clone()].to_vec();
-    kept.output = test.output[range.clone()].to_vec();
-    kept.input = test.input.as_ref().map(|u| u[range.clone()].to_vec());
-    kept.notes.push(format!(
+    let mut notes = test.notes.clone();
+    notes.push(format!(
         "kept samples {} to {} of {count} (t = {} s to {} s)",
         range.start + 1,
         range.end,
-        test.time[range.start],
-        test.time[range.end - 1]
+        time[range.start],
+        time[range.end - 1]
     ));
-    Ok(kept)
+    Ok(StepTest {
+        time: time[range.clone()].to_vec(),
+        output: test.output[range.clone()].to_vec(),
+        input: test.input.as_ref().map(|u| u[range.clone()].to_vec()),
+        time_name: test.time_name.clone(),
+        output_name: test.output_name.clone(),
+        input_name: test.input_name.clone(),
+        sampling_period: test.sampling_period,
+        notes,
+    })
 }
 
 /// The median spacing of positive time steps, `None` with fewer than two distinct times.

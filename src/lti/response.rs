@@ -226,6 +226,22 @@ impl StepResponse {
             .sum()
     }
 
+    /// The rational part's derivative `which` and the next one at τ ≥ 0, sharing the
+    /// exponentials (what a Newton step needs).
+    pub(crate) fn eval_rational_pair(&self, which: Derivative, tau: f64) -> (f64, f64) {
+        let next = match which {
+            Derivative::Value => Derivative::First,
+            _ => Derivative::Second,
+        };
+        self.clusters.iter().fold((0.0, 0.0), |(f, df), c| {
+            let e = (c.center * tau).exp();
+            (
+                f + c.contribution(which, e, tau),
+                df + c.contribution(next, e, tau),
+            )
+        })
+    }
+
     /// y at arbitrary instants (seconds from the step).
     pub fn sample(&self, times: &[f64]) -> Vec<f64> {
         times.iter().map(|&t| self.value(t)).collect()

@@ -1,0 +1,647 @@
+//! What a fitted model gets wrong, why, how to extend it, and how much the extension gains.
+//!
+//! The loop, as the ball-and-tube notes walk it by hand:
+//! 1. fit the start model (the student's, or `P1`);
+//! 2. for every extension the structure can still take (a dead time, a free offset, an
+//!    underdamped pair, one more pole, a zero, an integrator, a drift term) refit the
+//!    extended model, warm-started from the current fit (and from the extended structure's
+//!    automatic guess);
+//! 3. the extension that lowers the Bayesian information criterion most names the cause,
+//!    provided it pays for its extra parameter: BIC = N·ln(MSE) + p·ln(N) must drop by more
+//!    than [`BIC_THRESHOLD`] (10: "very strong" evidence on Kass & Raftery's scale; for one
+//!    extra parameter the MSE must fall by a factor e^{(10 + ln N)/N}, i.e. 2.1 % at N = 800);
+//! 4. the cause is explained with evidence from the current residuals (which statistic, over
+//!    which time interval), the gain is measured (RMSE before and after and their ratio, fit %
+//!    before and after, the BIC change), and the loop repeats until nothing pays: `none`.
+//!
+//! Trying the extensions, rather than reading the cause off residual patterns alone, makes the
+//! naming robust when several patterns overlap (a missing dead time and a missing pole both
+//! make the model rise too early); the residual statistics then say *where* and *how*.
+//! A zero and an inverse response are the same extension (Tz): its fitted sign names the cause.
+
+use serde::{Deserialize, Serialize};
+
+use super::fit::{FitData, FitError, FitOptions, FitReport, fit};
+use super::guess::{auto_guess, features};
+use super::models::{Param, Structure, Values};
+use super::residuals::{self, ResidualAnalysis};
+
+/// An extension must lower BIC by more than this to be kept.
+pub const BIC_THRESHOLD: f64 = 10.0;
+
+/// An underdamped pair fitted with ζ at or above this is taken as two real poles.
+const OVERDAMPED_ZETA: f64 = 0.98;
+
+/// A named cause, with a stable identifier.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Cause {
+    DeadTime,
+    Offset,
+    Oscillation,
+    ExtraPole,
+    Zero,
+    InverseResponse,
+    Integrator,
+    Drift,
+    None,
+}
+
+impl Cause {
+    /// The stable identifier graders read (`dead_time`, `offset`, …, `none`).
+    pub fn id(self) -> &'static str {
+        match self {
+            Cause::DeadTime => "dead_time",
+            Cause::Offset => "offset",
+            Cause::Oscillation => "oscillation",
+            Cause::ExtraPole => "extra_pole",
+            Cause::Zero => "zero",
+            Cause::InverseResponse => "inverse_response",
+            Cause::Integrator => "integrator",
+            Cause::Drift => "drift",
+            Cause::None => "none",
+        }
+    }
+
+    /// The cause in plain words for a student.
+    pub fn explanation(self) -> &'static str {
+        match self {
+            Cause::DeadTime => "The model moves before the data does: the process has a dead time.",
+            Cause::Offset => {
+                "The model's baseline is off everywhere: the operating point y0 is not what the model assumes."
+            }
+            Cause::Oscillation => {
+                "The residuals oscillate at a frequency the model lacks: the process has an underdamped pair of poles."
+            }
+            Cause::ExtraPole => {
+                "The data starts with zero slope (an S-shape) where the model rises at once: the process has one more pole."
+            }
+            Cause::Zero => {
+                "The data overshoots although the model's real poles cannot: the process has a zero."
+            }
+            Cause::InverseResponse => {
+                "The data first moves the wrong way: the process has a right-half-plane zero."
+            }
+            Cause::Integrator => "The data never levels off, it ramps: the process integrates.",
+            Cause::Drift => "A slow trend rides on top of the settled response: the output drifts.",
+            Cause::None => {
+                "The residuals look like noise and no extension pays for itself: the model is adequate."
+            }
+        }
+    }
+
+    /// The extension it implies, in procest terms.
+    pub fn remedy(self) -> &'static str {
+        match self {
+            Cause::DeadTime => "add a dead time Td",
+            Cause::Offset => "estimate Y0",
+            Cause::Oscillation => "use an underdamped pair (U: Tw, Zeta)",
+            Cause::ExtraPole => "add a pole (P1 → P2, P2 → P3)",
+            Cause::Zero => "add a zero Tz",
+            Cause::InverseResponse => "add a right-half-plane zero (Tz < 0)",
+            Cause::Integrator => "add an integrator (I)",
+            Cause::Drift => "add a drift term",
+            Cause::None => "keep the model",
+        }
+    }
+}
+
+/// A structural change to try.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Extension {
+    Delay,
+    FreeOffset,
+    Underdamped,
+    Pole,
+    Zero,
+    Integrator,
+    Drift,
+}
+
+const EXTENSIONS: [Extension; 7] = [
+    Extension::Delay,
+    Extension::FreeOffset,
+    Extension::Underdamped,
+    Extension::Pole,
+    Extension::Zero,
+    Extension::Integrator,
+    Extension::Drift,
+];
+
+impl Extension {
+    /// The extended structure, if this structure can take the extension.
+    fn apply(self, s: Structure) -> Option<Structure> {
+        let mut e = s;
+        match self {
+            Extension::Delay if !s.delay => e.delay = true,
+            Extension::FreeOffset if !s.free_offset => e.free_offset = true,
+            Extension::Underdamped if !s.underdamped => {
+                e.underdamped = true;
+                e.poles = s.poles.max(2);
+            }
+            Extension::Pole if s.poles < 3 => e.poles += 1,
+            Extension::Zero if !s.zero => e.zero = true,
+            Extension::Integrator if !s.integrator => e.integrator = true,
+            Extension::Drift if !s.drift => e.drift = true,
+            _ => return None,
+        }
+        Some(e)
+    }
+
+    fn cause(self, fitted: &Values) -> Cause {
+        match self {
+            Extension::Delay => Cause::DeadTime,
+            Extension::FreeOffset => Cause::Offset,
+            Extension::Underdamped => Cause::Oscillation,
+            Extension::Pole => Cause::ExtraPole,
+            Extension::Zero if fitted.get(Param::Tz) < 0.0 => Cause::InverseResponse,
+            Extension::Zero => Cause::Zero,
+            Extension::Integrator => Cause::Integrator,
+            Extension::Drift => Cause::Drift,
+        }
+    }
+}
+
+/// How to run the loop.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct DiagnoseOptions {
+    /// Most extensions made.
+    pub max_steps: usize,
+    /// How the start model is fitted (the candidates use single warm starts).
+    pub fit: FitOptions,
+}
+
+impl Default for DiagnoseOptions {
+    fn default() -> Self {
+        Self {
+            max_steps: 4,
+            fit: FitOptions {
+                starts: 8,
+                ..FitOptions::default()
+            },
+        }
+    }
+}
+
+/// What an extension gained.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Gain {
+    pub rmse_before: f64,
+    pub rmse_after: f64,
+    /// rmse_before / rmse_after (> 1 is a gain).
+    pub rmse_ratio: f64,
+    pub fit_percent_before: f64,
+    pub fit_percent_after: f64,
+    /// Change of BIC (negative is better).
+    pub criterion_delta: f64,
+}
+
+/// One step of the loop: the cause named, why, and the extended fit.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Step {
+    pub cause: Cause,
+    pub evidence: String,
+    /// The time interval the evidence points at (s), when there is one.
+    pub interval: Option<(f64, f64)>,
+    pub fit: FitReport,
+    pub gain: Gain,
+}
+
+/// The whole chain.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct DiagnoseReport {
+    pub start: FitReport,
+    pub steps: Vec<Step>,
+    pub final_fit: FitReport,
+    /// True when the loop ended because nothing paid (not at the step limit).
+    pub adequate: bool,
+    /// Why the final model is considered adequate (or not), with the residual statistics.
+    pub verdict: String,
+    /// The process's static gain Kp = Δy/Δu of the final model, with its 95 % interval.
+    pub static_gain: (f64, Option<(f64, f64)>),
+}
+
+/// BIC of a fit: N·ln(MSE) + p·ln(N).
+pub fn bic(r: &FitReport) -> f64 {
+    let n = r.n as f64;
+    n * r.mse.max(f64::MIN_POSITIVE).ln() + r.params.len() as f64 * n.ln()
+}
+
+/// The residual analysis of a fit on its data.
+pub fn analyse(report: &FitReport, data: &FitData) -> Option<ResidualAnalysis> {
+    let r = report.residuals(data).ok()?;
+    let bounds = residuals::boundaries(&report.model, data);
+    Some(residuals::analyse(&data.times, &r, None, bounds))
+}
+
+/// Runs the loop from `start`, fitted from its automatic guess; Y0 is held at
+/// `start_values`' Y0 when the structure holds it (e.g. 0 for a model that starts at zero).
+pub fn diagnose(
+    data: &FitData,
+    start: Structure,
+    start_values: Option<Values>,
+    options: &DiagnoseOptions,
+) -> Result<DiagnoseReport, FitError> {
+    let held_y0 = start_values.map(|v| v.get(Param::Y0));
+    let mut guess = auto_guess(data, start, held_y0);
+    if let Some(y0) = held_y0 {
+        guess.set(Param::Y0, y0);
+    }
+    let first = fit(data, start, guess, &options.fit, &mut ())?;
+    Ok(diagnose_from(data, first, options))
+}
+
+/// Runs the loop from a fit the student already has.
+pub fn diagnose_from(
+    data: &FitData,
+    start: FitReport,
+    options: &DiagnoseOptions,
+) -> DiagnoseReport {
+    let mut current = start.clone();
+    let mut steps = Vec::new();
+    let mut adequate = false;
+    for _ in 0..options.max_steps {
+        match next_step(data, &current) {
+            Some(step) => {
+                current = step.fit.clone();
+                steps.push(step);
+            }
+            None => {
+                adequate = true;
+                break;
+            }
+        }
+    }
+    let verdict = verdict(data, &current, adequate);
+    let kp = current.model.get(Param::Kp);
+    DiagnoseReport {
+        start,
+        static_gain: (kp, current.interval(Param::Kp)),
+        final_fit: current,
+        steps,
+        adequate,
+        verdict,
+    }
+}
+
+/// The leading cause of what `current` gets wrong and the extended fit, or `None` when no
+/// extension pays for itself.
+pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
+    let (extension, candidate) = best_extension(data, current)?;
+    if bic(&candidate) - bic(current) >= -BIC_THRESHOLD {
+        return None;
+    }
+    let cause = extension.cause(&candidate.model.values);
+    let (evidence, interval) = explain(cause, data, current, &candidate);
+    Some(Step {
+        cause,
+        evidence,
+        interval,
+        gain: gain(current, &candidate),
+        fit: candidate,
+    })
+}
+
+fn gain(before: &FitReport, after: &FitReport) -> Gain {
+    Gain {
+        rmse_before: before.rmse,
+        rmse_after: after.rmse,
+        rmse_ratio: if after.rmse > 0.0 {
+            before.rmse / after.rmse
+        } else {
+            f64::INFINITY
+        },
+        fit_percent_before: before.fit_percent,
+        fit_percent_after: after.fit_percent,
+        criterion_delta: bic(after) - bic(before),
+    }
+}
+
+/// The extension whose refit has the lowest BIC (aliased fits excluded).
+fn best_extension(data: &FitData, current: &FitReport) -> Option<(Extension, FitReport)> {
+    EXTENSIONS
+        .iter()
+        .filter_map(|&e| {
+            let s = e.apply(current.model.structure)?;
+            let r = refit(data, current, e, s)?;
+            // A "pair" fitted with ζ ≥ 1 is two real poles: that is the extra-pole extension,
+            // not an oscillation, and must not take its name.
+            let overdamped =
+                e == Extension::Underdamped && r.model.get(Param::Zeta) >= OVERDAMPED_ZETA;
+            (!overdamped).then_some((e, r))
+        })
+        .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
+}
+
+/// Fits the extended structure from a few warm starts and its automatic guess; the best
+/// result that is not an alias.
+fn refit(
+    data: &FitData,
+    current: &FitReport,
+    extension: Extension,
+    s: Structure,
+) -> Option<FitReport> {
+    let options = FitOptions {
+        starts: 1,
+        ..FitOptions::default()
+    };
+    let mut starts = warm_starts(data, current, extension);
+    let mut auto = auto_guess(data, s, Some(current.model.get(Param::Y0)));
+    auto.set(Param::Y0, current.model.get(Param::Y0));
+    starts.push(auto);
+    starts
+        .into_iter()
+        .filter_map(|g| fit(data, s, g, &options, &mut ()).ok())
+        .filter(|r| {
+            !r.warnings
+                .iter()
+                .any(|w| matches!(w, super::fit::FitWarning::Alias { .. }))
+        })
+        .min_by(|a, b| a.mse.total_cmp(&b.mse))
+}
+
+/// The current values with the new parameter set to a few plausible values.
+fn warm_starts(data: &FitData, current: &FitReport, extension: Extension) -> Vec<Values> {
+    let v = current.model.values;
+    let s = current.model.structure;
+    let t_char = characteristic_time(current, data);
+    let with = |pairs: &[(Param, f64)]| {
+        let mut w = v;
+        for &(p, x) in pairs {
+            w.set(p, x);
+        }
+        w
+    };
+    match extension {
+        Extension::Delay => [0.1, 0.3, 0.7]
+            .iter()
+            .map(|f| with(&[(Param::Td, f * t_char)]))
+            .collect(),
+        Extension::FreeOffset | Extension::Integrator => vec![v],
+        Extension::Drift => vec![with(&[(Param::Drift, 0.0)])],
+        Extension::Underdamped => {
+            let period = features(data, Some(v.get(Param::Y0))).period;
+            let wd = period.map_or(1.0 / t_char, |p| std::f64::consts::TAU / p);
+            [0.15, 0.4]
+                .iter()
+                .map(|&z: &f64| {
+                    with(&[
+                        (Param::Zeta, z),
+                        (Param::Tw, (1.0 - z * z).sqrt() / wd),
+                        (Param::Tp3, 0.3 * t_char),
+                    ])
+                })
+                .collect()
+        }
+        Extension::Pole => {
+            let next = match s.poles {
+                1 => Param::Tp2,
+                _ => Param::Tp3,
+            };
+            let td = if s.delay { v.get(Param::Td) } else { 0.0 };
+            [0.15, 0.5]
+                .iter()
+                .flat_map(|f| {
+                    let added = f * t_char;
+                    // The new lag takes part of the old one and of the dead time.
+                    [
+                        with(&[(next, added)]),
+                        with(&[
+                            (next, added),
+                            (Param::Tp1, (v.get(Param::Tp1) - added).max(0.1 * t_char)),
+                            (Param::Td, (td - added).max(0.0)),
+                        ]),
+                    ]
+                })
+                .collect()
+        }
+        Extension::Zero => [-1.0, -0.3, 0.7, 2.5]
+            .iter()
+            .map(|f| with(&[(Param::Tz, f * t_char)]))
+            .collect(),
+    }
+}
+
+/// The model's main time constant (Tw for an underdamped pair, else Tp1), at least one
+/// sampling period.
+fn characteristic_time(report: &FitReport, data: &FitData) -> f64 {
+    let m = &report.model;
+    let t = if m.structure.underdamped {
+        m.get(Param::Tw)
+    } else {
+        m.get(Param::Tp1)
+    };
+    t.max(data.sampling_period())
+}
+
+/// Mean of the residuals over [a, b], their count and the fraction sharing the mean's sign.
+fn interval_stats(data: &FitData, r: &[f64], (a, b): (f64, f64)) -> (usize, f64, f64) {
+    let inside: Vec<f64> = data
+        .times
+        .iter()
+        .zip(r)
+        .filter(|(t, _)| **t >= a && **t <= b)
+        .map(|(_, e)| *e)
+        .collect();
+    let n = inside.len();
+    if n == 0 {
+        return (0, 0.0, 0.0);
+    }
+    let mean = inside.iter().sum::<f64>() / n as f64;
+    let same = inside
+        .iter()
+        .filter(|e| e.signum() == mean.signum())
+        .count() as f64
+        / n as f64;
+    (n, mean, same)
+}
+
+fn num(x: f64) -> String {
+    crate::format::sig(x, 4)
+}
+
+/// The evidence for a cause: which statistic over which interval, in words.
+fn explain(
+    cause: Cause,
+    data: &FitData,
+    current: &FitReport,
+    extended: &FitReport,
+) -> (String, Option<(f64, f64)>) {
+    let r = current.residuals(data).unwrap_or_default();
+    let analysis = analyse(current, data);
+    let v = extended.model.values;
+    let t0 = data.setup.t0;
+    let t_first = data.times.first().copied().unwrap_or(t0);
+    let t_last = data.times.last().copied().unwrap_or(t0);
+    let effect = (extended.model.get(Param::Kp) * data.setup.du).abs();
+    let region = |kind: residuals::RegionKind| {
+        analysis
+            .as_ref()
+            .and_then(|a| a.regions.iter().find(|g| g.kind == kind).cloned())
+    };
+    match cause {
+        Cause::DeadTime => {
+            let td = v.get(Param::Td);
+            let interval = (t0, t0 + td);
+            let (n, mean, same) = interval_stats(data, &r, interval);
+            (
+                format!(
+                    "From t = {} s to {} s the data stays near its operating point while the model already moves: the \
+                     {n} residuals there average {} ({} % of one sign). A dead time Td = {} s makes the model wait.",
+                    num(interval.0),
+                    num(interval.1),
+                    num(mean),
+                    num(100.0 * same),
+                    num(td)
+                ),
+                Some(interval),
+            )
+        }
+        Cause::Offset => {
+            let (n, mean, same) = interval_stats(data, &r, (t_first, t_last));
+            (
+                format!(
+                    "The residuals are biased everywhere: over the whole record ({n} samples) they average {} ({} % of \
+                     one sign). The model assumes y0 = {}; estimated, y0 = {}.",
+                    num(mean),
+                    num(100.0 * same),
+                    num(current.model.get(Param::Y0)),
+                    num(v.get(Param::Y0))
+                ),
+                Some((t_first, t_last)),
+            )
+        }
+        Cause::Oscillation => {
+            let period = analysis.as_ref().and_then(|a| a.dominant_period);
+            let transient = region(residuals::RegionKind::Transient).map(|g| (g.start, g.end));
+            let wd = extended.model.damped_frequency();
+            let period_text = period.map_or("an oscillation".to_string(), |p| {
+                format!("an oscillation of period {} s", num(p))
+            });
+            (
+                format!(
+                    "The residuals show {period_text} (their autocorrelation alternates beyond the 99 % band), a frequency the \
+                     model lacks. An underdamped pair with ωd = {} rad/s and ζ = {} takes it up.",
+                    wd.map_or("—".into(), num),
+                    num(v.get(Param::Zeta))
+                ),
+                transient,
+            )
+        }
+        Cause::ExtraPole => {
+            let start = t0
+                + if current.model.structure.delay {
+                    current.model.get(Param::Td)
+                } else {
+                    0.0
+                };
+            let interval = (start, start + characteristic_time(current, data));
+            let (n, mean, same) = interval_stats(data, &r, interval);
+            let added = [Param::Tp3, Param::Tp2]
+                .into_iter()
+                .find(|p| extended.model.structure.params().contains(p))
+                .map(|p| (p, v.get(p)));
+            (
+                format!(
+                    "Right after the response starts (t = {} s to {} s) the data rises with zero slope, an S-shape, while the \
+                     model rises at once: the {n} residuals there average {} ({} % of one sign). One more pole{} gives the S-shape.",
+                    num(interval.0),
+                    num(interval.1),
+                    num(mean),
+                    num(100.0 * same),
+                    added.map_or(String::new(), |(p, x)| format!(
+                        " ({} = {} s)",
+                        p.name(),
+                        num(x)
+                    ))
+                ),
+                Some(interval),
+            )
+        }
+        Cause::Zero => {
+            let f = features(data, Some(current.model.get(Param::Y0)));
+            let tp = f.t_peak.map(|t| t + t0);
+            (
+                format!(
+                    "The data overshoots its final level by {} % (peak at t = {} s) although the model's poles are real and \
+                     cannot overshoot. A zero with Tz = {} s lets it.",
+                    num(100.0 * f.overshoot),
+                    tp.map_or("—".into(), num),
+                    num(v.get(Param::Tz))
+                ),
+                tp.map(|t| (t0, t + (t - t0))),
+            )
+        }
+        Cause::InverseResponse => {
+            let f = features(data, Some(current.model.get(Param::Y0)));
+            let dip = f.t_dip.map(|t| t + t0);
+            (
+                format!(
+                    "The data first moves the wrong way, by {} % of the step's effect (deepest at t = {} s), before going \
+                     towards its final level. A right-half-plane zero, Tz = {} s, does that.",
+                    num(100.0 * f.undershoot),
+                    dip.map_or("—".into(), num),
+                    num(v.get(Param::Tz))
+                ),
+                dip.map(|t| (t0, t + (t - t0))),
+            )
+        }
+        Cause::Integrator => {
+            let tail = region(residuals::RegionKind::Tail);
+            let slope = features(data, None).final_slope;
+            (
+                format!(
+                    "The data never levels off: over the last fifth of the record it still moves at {} units/s ({} % of the \
+                     step's effect per time constant), and the residuals trend in the tail{}. An integrator makes the model ramp.",
+                    num(slope),
+                    num(100.0 * slope.abs() * current.model.get(Param::Tp1)
+                        / effect.max(f64::MIN_POSITIVE)),
+                    tail.map_or(String::new(), |g| format!(
+                        " (trend z = {})",
+                        num(g.slope_z)
+                    ))
+                ),
+                tail.map(|g| (g.start, g.end)),
+            )
+        }
+        Cause::Drift => {
+            let tail = region(residuals::RegionKind::Tail);
+            (
+                format!(
+                    "After the response settles the residuals still trend{}: a slow drift of {} units/s rides on the output. \
+                     A drift term takes it.",
+                    tail.as_ref().map_or(String::new(), |g| format!(
+                        " (slope {} units/s, z = {})",
+                        num(g.slope),
+                        num(g.slope_z)
+                    )),
+                    num(v.get(Param::Drift))
+                ),
+                tail.map(|g| (g.start, g.end)),
+            )
+        }
+        Cause::None => (Cause::None.explanation().to_string(), None),
+    }
+}
+
+/// Why the final model is adequate (or why the loop stopped), with the whiteness statistics.
+fn verdict(data: &FitData, report: &FitReport, adequate: bool) -> String {
+    let stats = analyse(report, data).map_or(String::new(), |a| {
+        format!(
+            " Residual autocorrelation: {} of {} lags outside the 99 % band; runs test z = {}.",
+            a.outside_band.len(),
+            a.autocorrelation.len().saturating_sub(1),
+            num(a.runs.z)
+        )
+    });
+    let head = match (adequate, analyse(report, data).is_some_and(|a| a.white)) {
+        (true, true) => {
+            "Adequate: the residuals look like noise and no extension lowers BIC by 10."
+        }
+        (true, false) => {
+            "No extension in the list lowers BIC by 10, although the residuals are not white: what is left is not one of \
+             the effects Degrau knows (nonlinearity, a disturbance, or noise that is not white)."
+        }
+        (false, _) => "Stopped at the step limit: the model may still miss something.",
+    };
+    format!("{head}{stats}")
+}
