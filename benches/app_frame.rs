@@ -50,7 +50,7 @@ fn frame(c: &mut Criterion) {
             // Move back and forth over 40 px so the system changes every frame.
             k = k.wrapping_add(1);
             let phase = (k % 40) as f32;
-            let offset = if (k / 40) % 2 == 0 {
+            let offset = if (k / 40).is_multiple_of(2) {
                 phase
             } else {
                 40.0 - phase

@@ -289,7 +289,7 @@ fn no_sequence_of_edits_panics() {
                 .filter(|l| (l.starts_with("pole ") || l.starts_with("zero ")) && !l.ends_with(' '))
                 .collect();
             match rng.below(9) {
-                0 | 1 | 2 if !labels.is_empty() => {
+                0..=2 if !labels.is_empty() => {
                     let label = &labels[rng.below(labels.len())];
                     let from = center_of(&h, label);
                     let to =

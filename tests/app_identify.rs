@@ -7,7 +7,7 @@ use degrau::app::DegrauApp;
 use degrau::ident::models::Param;
 use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::{NodeT, Queryable};
+use egui_kittest::kittest::Queryable;
 
 const LECI: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
@@ -160,10 +160,12 @@ fn the_whole_loop_fills_the_chain_table() {
     assert!(!d.steps.is_empty());
     // The chain's rows: the start P1 and each extension, selectable.
     // The table sits low in the scrolled side panel: select rows as a screen reader would.
-    h.get_by_label(&d.start.model.structure.label()).click_accesskit();
+    h.get_by_label(&d.start.model.structure.label())
+        .click_accesskit();
     h.run_steps(2);
     assert_eq!(h.state().ident.selected_step, Some(0));
-    h.get_by_label(&d.final_fit.model.structure.label()).click_accesskit();
+    h.get_by_label(&d.final_fit.model.structure.label())
+        .click_accesskit();
     h.run_steps(2);
     h.get_by_label_contains("Remedy:");
 }

@@ -571,11 +571,62 @@ fn metrics_regressions() {
 }
 
 proptest! {
-    #![proptest_config(config(96))]
+    #![proptest_config(config(64))]
 
     #[test]
     fn metrics_agree_with_a_dense_grid(sys in stable_system()) {
         check_metrics(&sys)?;
+    }
+}
+
+proptest! {
+    #![proptest_config(config(256))]
+
+    /// The metrics stop searching the tail once it cannot change them: the result must be
+    /// that of the full search, to the rounding of the closed form (the grid cells before
+    /// the stop differ, so Newton lands on the same roots through different iterates).
+    #[test]
+    fn stopping_early_changes_no_metric(sys in stable_system()) {
+        use degrau::lti::metrics::LtiPieces;
+        let r = StepResponse::new(&sys.tf(), sys.amplitude).unwrap();
+        let options = StepInfoOptions::default();
+        let pruned = StepInfo::of_response(&r, &options);
+        let y_final = r.final_value().unwrap();
+        let full = StepInfo::from_pieces(&LtiPieces::new(&r, None), 0.0, y_final, &options);
+        let eps_y = 1e-11 * term_scale(&r, full.settling_time.unwrap_or(1.0));
+        let value_tol = |a: f64| eps_y + 1e-12 * a.abs();
+        // A time found where y or y' crosses a level moves by the rounding over the slope.
+        let time_tol = |t: f64| 1e-12 * t.abs() + eps_y / r.derivative(t).abs().max(1e-300);
+        let percent_tol = |_: f64| 100.0 * eps_y / y_final.abs();
+        let close = |a: Option<f64>, b: Option<f64>, tol: &dyn Fn(f64) -> f64| match (a, b) {
+            (Some(a), Some(b)) => (a - b).abs() <= tol(a),
+            (a, b) => a == b,
+        };
+        for (what, a, b, tol) in [
+            ("rise start", pruned.rise_start, full.rise_start, &time_tol as &dyn Fn(f64) -> f64),
+            ("rise end", pruned.rise_end, full.rise_end, &time_tol),
+            ("settling time", pruned.settling_time, full.settling_time, &time_tol),
+            ("overshoot", pruned.overshoot, full.overshoot, &percent_tol),
+            ("undershoot", pruned.undershoot, full.undershoot, &percent_tol),
+            ("peak", pruned.peak, full.peak, &value_tol),
+            ("settling min", pruned.settling_min, full.settling_min, &value_tol),
+            ("settling max", pruned.settling_max, full.settling_max, &value_tol),
+        ] {
+            prop_assert!(close(a, b, tol), "{what}: {a:?} with the early stop, {b:?} without");
+        }
+        // Extremes' times: the same critical point (y' = 0 there, so compare the values).
+        for (what, a, b) in [
+            ("peak time", pruned.peak_time, full.peak_time),
+            ("undershoot time", pruned.undershoot_time, full.undershoot_time),
+        ] {
+            prop_assert_eq!(a.is_some(), b.is_some(), "{}", what);
+            if let (Some(a), Some(b)) = (a, b) {
+                prop_assert!(
+                    (r.value(a) - r.value(b)).abs() <= 2.0 * eps_y,
+                    "{what}: {a} with the early stop, {b} without"
+                );
+            }
+        }
     }
 }
 

@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::app::job::Job;
 use crate::format::sig;
-use crate::ident::data::{self, ColumnChoice, LoadOptions, StepTest};
+use crate::ident::data::{self, LoadOptions, StepTest};
 use crate::ident::diagnose::{self, DiagnoseOptions, DiagnoseReport, Step};
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::{FitData, FitError, FitOptions, FitReport, Method, Progress, fit};
@@ -89,9 +89,9 @@ pub struct IdentView {
 /// What a background diagnosis returns.
 enum DiagnoseOutcome {
     /// The whole loop ran.
-    Loop(DiagnoseReport),
+    Loop(Box<DiagnoseReport>),
     /// One step was asked for: the leading cause (or none).
-    Step(Option<Step>),
+    Step(Option<Box<Step>>),
 }
 
 /// What the view asks of the app.
@@ -143,35 +143,24 @@ impl IdentView {
     }
 
     fn load_options(&self) -> Result<LoadOptions, String> {
-        let choice = |text: &str| -> ColumnChoice {
-            let t = text.trim();
-            if t.is_empty() {
-                ColumnChoice::Auto
-            } else if let Ok(k) = t.parse::<usize>() {
-                ColumnChoice::Position(k)
-            } else {
-                ColumnChoice::Name(t.to_string())
-            }
-        };
         let ts = self.settings.sampling_period.trim();
         let sampling_period =
             if ts.is_empty() {
                 None
             } else {
-                Some(ts.replace(',', ".").parse::<f64>().map_err(|_| {
+                let value = ts.replace(',', ".").parse::<f64>();
+                Some(value.map_err(|_| {
                     format!("the sampling period \"{ts}\" is not a number of seconds")
                 })?)
             };
-        let mut o = LoadOptions::default();
-        o.time = if sampling_period.is_some() && self.settings.time_col.trim().is_empty() {
-            ColumnChoice::None
-        } else {
-            choice(&self.settings.time_col)
-        };
-        o.output = choice(&self.settings.y_col);
-        o.input = choice(&self.settings.u_col);
-        o.sampling_period = sampling_period;
-        Ok(o)
+        let s = &self.settings;
+        Ok(LoadOptions::from_text(
+            &s.time_col,
+            &s.y_col,
+            &s.u_col,
+            sampling_period,
+            0,
+        ))
     }
 
     fn accept(&mut self, test: StepTest, source: &str) {
@@ -291,13 +280,10 @@ impl IdentView {
         };
         self.diagnose_job = Some(Job::spawn(ctx, move |_| {
             if whole {
-                DiagnoseOutcome::Loop(diagnose::diagnose_from(
-                    &data,
-                    report,
-                    &DiagnoseOptions::default(),
-                ))
+                let chain = diagnose::diagnose_from(&data, report, &DiagnoseOptions::default());
+                DiagnoseOutcome::Loop(Box::new(chain))
             } else {
-                DiagnoseOutcome::Step(diagnose::next_step(&data, &report))
+                DiagnoseOutcome::Step(diagnose::next_step(&data, &report).map(Box::new))
             }
         }));
     }
@@ -320,7 +306,7 @@ impl IdentView {
                 self.diagnose_note = d.verdict.clone();
                 self.selected_step = Some(d.steps.len());
                 self.adopt(&d.final_fit);
-                self.diagnosis = Some(d);
+                self.diagnosis = Some(*d);
             }
             DiagnoseOutcome::Step(Some(step)) => {
                 let start = self.report.clone();
@@ -334,7 +320,7 @@ impl IdentView {
                 });
                 d.final_fit = step.fit.clone();
                 d.static_gain = (step.fit.model.get(Param::Kp), step.fit.interval(Param::Kp));
-                d.steps.push(step.clone());
+                d.steps.push(*step.clone());
                 self.selected_step = Some(d.steps.len());
                 self.diagnose_note = format!("{}: {}", step.cause.id(), step.cause.explanation());
                 self.adopt(&step.fit);

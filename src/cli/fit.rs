@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 
-use crate::ident::data::{self, ColumnChoice, LoadOptions, StepTest};
+use crate::ident::data::{self, LoadOptions, StepTest};
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
 use crate::ident::models::Param;
@@ -133,21 +133,14 @@ impl OpenArgs {
 impl DataArgs {
     /// Loads and prepares the test: the data, the choices and the fit data.
     pub fn prepare(&self) -> Result<(StepTest, Experiment, FitData), CliError> {
-        let choice = |c: &Option<String>| {
-            c.as_deref().map_or(ColumnChoice::Auto, |s| {
-                s.parse().unwrap_or(ColumnChoice::Auto)
-            })
-        };
-        let mut options = LoadOptions {
-            time: choice(&self.time_col),
-            output: choice(&self.y_col),
-            input: choice(&self.u_col),
-            sampling_period: self.ts,
-            skip_rows: self.skip_rows,
-        };
-        if self.ts.is_some() && self.time_col.is_none() {
-            options.time = ColumnChoice::None;
-        }
+        let text = |c: &Option<String>| c.clone().unwrap_or_default();
+        let options = LoadOptions::from_text(
+            &text(&self.time_col),
+            &text(&self.y_col),
+            &text(&self.u_col),
+            self.ts,
+            self.skip_rows,
+        );
         let test = data::load_file(&self.file, &options)
             .map_err(|e| CliError::Options(format!("{}: {e}", self.file.display())))?;
         let mut experiment = Experiment::new(&test, self.t0, self.du, self.initial_input)
@@ -191,7 +184,7 @@ fn parse_window(text: &str) -> Result<(f64, f64), CliError> {
         a.trim().parse::<f64>().map_err(|_| bad())?,
         b.trim().parse::<f64>().map_err(|_| bad())?,
     );
-    if !(a < b) {
+    if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
         return Err(bad());
     }
     Ok((a, b))

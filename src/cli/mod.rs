@@ -736,7 +736,7 @@ mod tests {
         let cli = Cli::try_parse_from(argv).map_err(|e| CliError::Options(e.to_string()))?;
         match cli.command {
             Some(Command::Step(step)) => step.spec(),
-            None => Err(CliError::NoSystem),
+            _ => Err(CliError::NoSystem),
         }
     }
 
@@ -805,7 +805,7 @@ mod tests {
             argv.extend_from_slice(args);
             match Cli::try_parse_from(argv).unwrap().command {
                 Some(Command::Step(step)) => step.options(),
-                None => unreachable!("the step subcommand was given"),
+                _ => unreachable!("the step subcommand was given"),
             }
         };
         assert_eq!(

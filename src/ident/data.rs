@@ -129,6 +129,33 @@ pub struct LoadOptions {
     pub skip_rows: usize,
 }
 
+impl LoadOptions {
+    /// Options from the column choices as a person types them (name, 1-based position,
+    /// `auto` or empty, `none`); with a sampling period and no time column given, the file
+    /// is read as having no time column.
+    pub fn from_text(
+        time: &str,
+        output: &str,
+        input: &str,
+        sampling_period: Option<f64>,
+        skip_rows: usize,
+    ) -> Self {
+        let choice = |t: &str| t.parse().unwrap_or(ColumnChoice::Auto);
+        let time = if sampling_period.is_some() && time.trim().is_empty() {
+            ColumnChoice::None
+        } else {
+            choice(time)
+        };
+        Self {
+            time,
+            output: choice(output),
+            input: choice(input),
+            sampling_period,
+            skip_rows,
+        }
+    }
+}
+
 /// A measured step test, one sample per kept row.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StepTest {

@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::data::StepTest;
-use super::fit::{FitData, FitError, FitObserver, FitOptions, FitReport, fit, median_spacing};
+use super::fit::{FitData, FitError, FitObserver, FitOptions, FitReport, fit};
 use super::guess::auto_guess;
 use super::models::{ModelError, Param, StepSetup, Structure, Values};
 use super::prepare;
@@ -31,10 +31,8 @@ pub enum ExperimentError {
     NoStep,
     #[error("the step size Δu must be a finite number other than zero, not {0}")]
     BadStep(f64),
-    #[error("the window {0} s to {1} s keeps fewer than 3 samples")]
-    EmptyWindow(f64, f64),
-    #[error("the filter cut-off must be a positive frequency in Hz, not {0}")]
-    BadCutoff(f64),
+    #[error("{0}")]
+    Window(String),
     #[error(transparent)]
     Model(#[from] ModelError),
     #[error(transparent)]
@@ -86,28 +84,23 @@ impl Experiment {
 
     /// The samples the fit sees: windowed, then filtered.
     pub fn fit_data(&self, test: &StepTest) -> Result<FitData, ExperimentError> {
-        let (lo, hi) = self.window.unwrap_or((f64::NEG_INFINITY, f64::INFINITY));
-        let (times, mut y): (Vec<f64>, Vec<f64>) = test
-            .time
-            .iter()
-            .zip(&test.output)
-            .filter(|(t, _)| **t >= lo && **t <= hi)
-            .map(|(t, y)| (*t, *y))
-            .unzip();
-        if times.len() < 3 {
-            return Err(ExperimentError::EmptyWindow(lo, hi));
-        }
-        if let Some(fc) = self.filter_hz {
-            if !(fc.is_finite() && fc > 0.0) {
-                return Err(ExperimentError::BadCutoff(fc));
-            }
-            y = prepare::Ewma::new(fc, median_spacing(&times)).apply(&y);
-        }
         if !self.du.is_finite() || self.du == 0.0 {
             return Err(ExperimentError::BadStep(self.du));
         }
+        let kept = match self.window {
+            Some((start, end)) => prepare::apply_window(test, prepare::Window::Time { start, end })
+                .map_err(|e| ExperimentError::Window(e.to_string()))?,
+            None => test.clone(),
+        };
+        let mut y = kept.output;
+        if let Some(fc) = self.filter_hz {
+            let ts = prepare::sampling_period(&kept.time).unwrap_or(1.0);
+            let filter = prepare::Ewma::try_new(fc, ts)
+                .map_err(|e| ExperimentError::Window(e.to_string()))?;
+            y = filter.apply(&y);
+        }
         Ok(FitData {
-            times,
+            times: kept.time,
             y,
             setup: StepSetup {
                 t0: self.t0,

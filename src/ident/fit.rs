@@ -37,7 +37,7 @@ pub struct FitData {
 impl FitData {
     /// The median sampling period (s).
     pub fn sampling_period(&self) -> f64 {
-        median_spacing(&self.times)
+        super::prepare::sampling_period(&self.times).unwrap_or(1.0)
     }
 
     /// Duration of the record after the step (s).
@@ -45,20 +45,6 @@ impl FitData {
         let last = self.times.last().copied().unwrap_or(self.setup.t0);
         (last - self.setup.t0).max(self.sampling_period())
     }
-}
-
-/// The median spacing of increasing instants (1 when there are fewer than two).
-pub fn median_spacing(times: &[f64]) -> f64 {
-    let mut d: Vec<f64> = times
-        .windows(2)
-        .map(|w| w[1] - w[0])
-        .filter(|d| *d > 0.0)
-        .collect();
-    if d.is_empty() {
-        return 1.0;
-    }
-    d.sort_by(f64::total_cmp);
-    d[d.len() / 2]
 }
 
 /// The optimiser.

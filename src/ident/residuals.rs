@@ -20,8 +20,9 @@
 //! Interpreting the diagnosis (which model change to suggest) is not done here.
 //! Assumes finite numbers (no NaN); never panics, whatever the lengths.
 
-use super::fit::{FitData, median_spacing};
+use super::fit::FitData;
 use super::models::{Model, Param};
+use super::prepare::sampling_period;
 use super::stats::normal_quantile;
 use crate::lti::{StepInfo, StepInfoOptions, StepResponse};
 
@@ -140,8 +141,28 @@ pub struct ResidualAnalysis {
     /// after the step": the band assumes a white input and is only a rough guide here.
     pub input_correlation: Option<Vec<f64>>,
     /// Period (s) of an oscillation left in the residuals, if their autocorrelation shows
-    /// one; see [`dominant_period`] for the rule. A model without an underdamped pair cannot
-    /// follow an oscillating response, and this is its period.
+    /// one. A model without an underdamped pair cannot follow an oscillating response, and
+    /// this is the period it misses (2π/ωd of the missing pair).
+    ///
+    /// The rule, on the autocorrelation ρₖ of the residuals *minus their mean* (a bias would
+    /// lift ρₖ and hide the oscillation; the bias is reported by the regions), for lags up
+    /// to N/2 (for very long records at most about 2·10⁷/N lags, never fewer than max_lag),
+    /// with Ts the median sampling period:
+    ///
+    /// 1. An oscillation makes ρₖ alternate in sign: positive at lag 0, a negative lobe around
+    ///    half a period, a positive lobe around one period. A lobe counts only when ρₖ stays
+    ///    beyond the 99 % band ±band99 for at least two consecutive lags (one lag beyond the
+    ///    band happens by chance once in a hundred lags for white residuals, two in a row
+    ///    once in ten thousand).
+    /// 2. Two sign changes beyond the band are required: a negative lobe, then a positive lobe.
+    ///    A single slow bump in the residuals (a missing pole, a wrong dead time) gives a
+    ///    positive ρₖ that may turn negative once but does not come back: no period.
+    /// 3. The period is twice the distance between the zero crossings that open the two lobes:
+    ///    ρₖ crossing downwards (z₁, interpolated linearly between lags) just before the
+    ///    negative lobe and upwards (z₂) just before the positive lobe; period = 2·(z₂ − z₁)·Ts.
+    ///    For a decaying oscillation e^{−t/τ}·sin(ωt) the autocorrelation is close to
+    ///    e^{−k/τ}·cos(ωk − φ): the decay and the phase φ move its peaks (so "the lag of the
+    ///    next peak" is biased) but not the spacing of its zeros, which is exactly π/ω.
     pub dominant_period: Option<f64>,
     /// The residuals look white: at most max(1, ⌊1 % of max_lag⌋) lags outside the 99 %
     /// band and |runs.z| < 2.576. True when there is nothing to test (N = 0, all zeros).
@@ -245,7 +266,8 @@ pub fn analyse(
         .collect();
     let runs = runs_test(e);
     let input_correlation = input.map(|u| input_correlation(e, u, max_lag));
-    let dominant_period = dominant_period(e, band99, median_spacing(times), max_lag);
+    let dominant_period =
+        dominant_period(e, band99, sampling_period(times).unwrap_or(1.0), max_lag);
     let allowed = ((max_lag as f64 * 0.01).floor() as usize).max(1);
     let white = outside_band.len() <= allowed && runs.z.abs() < z99();
     let std = sample_std(e);
@@ -465,26 +487,7 @@ fn runs_test(e: &[f64]) -> RunsTest {
 const PERIOD_SEARCH_WORK: usize = 20_000_000;
 
 /// The period (s) of an oscillation in the residuals `e`, sampled every `ts` seconds, or
-/// `None`.
-///
-/// The rule, on the autocorrelation ρₖ of the residuals *minus their mean* (a bias would
-/// lift ρₖ and hide the oscillation; the bias is reported by the regions), for lags up to
-/// N/2 (fewer for very long records, see [`PERIOD_SEARCH_WORK`], never fewer than max_lag):
-///
-/// 1. An oscillation makes ρₖ alternate in sign: positive at lag 0, a negative lobe around
-///    half a period, a positive lobe around one period. A lobe counts only when ρₖ stays
-///    beyond the 99 % band ±band99 for at least two consecutive lags (one lag beyond the
-///    band happens by chance once in a hundred lags for white residuals, two in a row once in
-///    ten thousand).
-/// 2. Two sign changes beyond the band are required: a negative lobe, then a positive lobe.
-///    A single slow bump in the residuals (a missing pole, a wrong dead time) gives a
-///    positive ρₖ that may turn negative once but does not come back: no period.
-/// 3. The period is twice the distance between the zero crossings that open the two lobes:
-///    ρₖ crossing downwards (z₁, interpolated linearly between lags) just before the
-///    negative lobe and upwards (z₂) just before the positive lobe; period = 2·(z₂ − z₁)·Ts.
-///    For a decaying oscillation e^{−t/τ}·sin(ωt) the autocorrelation is close to
-///    e^{−k/τ}·cos(ωk − φ): the decay and the phase φ move its peaks (so "the lag of the
-///    next peak" is biased) but not the spacing of its zeros, which is exactly π/ω.
+/// `None`, by the rule documented at [`ResidualAnalysis::dominant_period`].
 fn dominant_period(e: &[f64], band: f64, ts: f64, max_lag: usize) -> Option<f64> {
     let n = e.len();
     if n < 8 || band <= 0.0 || ts <= 0.0 || !ts.is_finite() {
@@ -515,10 +518,9 @@ fn dominant_period(e: &[f64], band: f64, ts: f64, max_lag: usize) -> Option<f64>
             None => {
                 beyond = if r < -band { beyond + 1 } else { 0 };
                 if beyond >= 2 {
-                    lobe_start = down;
-                    beyond = 0;
                     // r₀ = 1 > 0, so a downward crossing precedes any negative lag.
-                    lobe_start?;
+                    lobe_start = Some(down?);
+                    beyond = 0;
                 }
             }
             Some(z1) => {
@@ -579,7 +581,7 @@ mod tests {
         let times = grid(n, 0.1);
         let e = Noise::series(7, n, 0.3);
         let a = analyse(&times, &e, None, all_transient(&times));
-        assert!((a.band99 - 2.5758293035489 / (800f64).sqrt()).abs() < 1e-9);
+        assert!((a.band99 - 2.5758293035489 / 800f64.sqrt()).abs() < 1e-9);
         assert_eq!(a.autocorrelation.len(), 51);
         assert_eq!(a.autocorrelation[0], 1.0);
         assert!(a.white, "{:?} {:?}", a.outside_band, a.runs);
@@ -770,15 +772,18 @@ mod tests {
 
     #[test]
     fn autocorrelation_of_a_known_sequence() {
-        // e = 1, −1, 1, −1, 1, −1, 1, −1 (N = 8, max_lag = 2): r₁ = −7/8, r₂ = 6/8.
-        let e: Vec<f64> = (0..8)
+        // e = 1, −1, 1, −1, … (N = 16, max_lag = 4): rₖ = (−1)ᵏ(16 − k)/16, all beyond the
+        // band 2.576/4.
+        let e: Vec<f64> = (0..16)
             .map(|i| if i % 2 == 0 { 1.0 } else { -1.0 })
             .collect();
-        let times = grid(8, 1.0);
+        let times = grid(16, 1.0);
         let a = analyse(&times, &e, None, all_transient(&times));
-        assert_eq!(a.autocorrelation, vec![1.0, -0.875, 0.75]);
-        assert!((a.band99 - 2.5758293035489 / 8f64.sqrt()).abs() < 1e-9);
-        assert_eq!(a.outside_band, vec![1]);
+        assert_eq!(a.autocorrelation, vec![1.0, -0.9375, 0.875, -0.8125, 0.75]);
+        assert!((a.band99 - 2.5758293035489 / 4.0).abs() < 1e-8);
+        assert_eq!(a.outside_band, vec![1, 2, 3, 4]);
+        assert!(!a.white);
+        assert!(a.runs.z > 3.0);
     }
 
     #[test]

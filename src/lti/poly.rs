@@ -11,6 +11,8 @@
 //! and "unstable"). So a root within [`REAL_AXIS_TOLERANCE`] of its modulus of either axis
 //! is put exactly on it.
 
+use std::cmp::Ordering;
+
 use nalgebra::{Complex, DMatrix};
 
 use super::LtiError;
@@ -134,11 +136,46 @@ fn companion_roots(coeffs: &[f64]) -> Result<Vec<C64>, LtiError> {
     nalgebra::linalg::balancing::balance_parlett_reinsch(&mut m);
     let schur = nalgebra::linalg::Schur::try_new(m, f64::EPSILON, 10_000)
         .ok_or(LtiError::RootsDidNotConverge { degree: n })?;
-    Ok(schur
-        .complex_eigenvalues()
-        .iter()
+    let (_, t) = schur.unpack();
+    Ok(block_eigenvalues(&t)
+        .into_iter()
         .map(|x| C64::new(mul_pow2(x.re, e), mul_pow2(x.im, e)))
         .collect())
+}
+
+/// Eigenvalues of a real Schur form: its 1×1 blocks and the pairs of its 2×2 blocks.
+///
+/// nalgebra's `Schur::complex_eigenvalues` assumes every 2×2 block left holds a complex
+/// pair; a block holding two (nearly equal) real eigenvalues, as the Schur iteration leaves
+/// for a double real root, then gives NaN imaginary parts (the roots of
+/// (s + 1.3848)²(s² + 13.59s + 66.33) came out as NaN, and the conjugate pairing turned
+/// the 4 roots into 6). Here such a block gives its two real eigenvalues.
+fn block_eigenvalues(t: &DMatrix<f64>) -> Vec<C64> {
+    let n = t.nrows();
+    let mut out = Vec::with_capacity(n);
+    let mut m = 0;
+    while m < n {
+        if m + 1 == n || t[(m + 1, m)] == 0.0 {
+            out.push(C64::new(t[(m, m)], 0.0));
+            m += 1;
+            continue;
+        }
+        let (a, b, c, d) = (t[(m, m)], t[(m, m + 1)], t[(m + 1, m)], t[(m + 1, m + 1)]);
+        let half_trace = 0.5 * (a + d);
+        let half_gap = 0.5 * (a - d);
+        let discriminant = b * c + half_gap * half_gap;
+        if discriminant >= 0.0 {
+            let r = discriminant.sqrt();
+            out.push(C64::new(half_trace + r, 0.0));
+            out.push(C64::new(half_trace - r, 0.0));
+        } else {
+            let r = (-discriminant).sqrt();
+            out.push(C64::new(half_trace, r));
+            out.push(C64::new(half_trace, -r));
+        }
+        m += 2;
+    }
+    out
 }
 
 /// The monic coefficients bⱼ = cⱼ/(c₀·2^{je}) of the polynomial in x = s/2^e, with e chosen
@@ -269,7 +306,11 @@ fn is_multiple_root(coeffs: &[f64], c: C64, m: usize) -> bool {
             size[i] += size[i - 1] * r;
         }
         let (taylor, bound) = (p.pop().unwrap_or_default(), size.pop().unwrap_or_default());
-        if !(taylor.norm() <= limit * bound) {
+        // Written so that a NaN fails the test too.
+        if !matches!(
+            taylor.norm().partial_cmp(&(limit * bound)),
+            Some(Ordering::Less | Ordering::Equal)
+        ) {
             return false;
         }
     }
@@ -295,7 +336,7 @@ fn polish(coeffs: &[f64], root: C64) -> C64 {
         }
         let candidate = best - eval_complex(coeffs, best) / slope;
         let residual = eval_complex(coeffs, candidate).norm();
-        if !(residual < best_residual) {
+        if residual.partial_cmp(&best_residual) != Some(Ordering::Less) {
             break;
         }
         best = candidate;

@@ -618,10 +618,10 @@ mod tests {
         let g = zpk(&[], &[c(-1.0, 2.0), c(-1.0, -2.0), c(-5.0, 0.0)], 0.5);
         let r = StepResponse::new(&g, 2.0).unwrap();
         for t in [0.0f64, 0.1, 0.7, 1.3, 2.9, 6.0] {
-            let e = (-t as f64).exp();
+            let e = (-t).exp();
             let exact = 1.0 / 25.0
                 - 0.03 * e * ((2.0 * t).cos() + 4.0 / 3.0 * (2.0 * t).sin())
-                - (-5.0 * t as f64).exp() / 100.0;
+                - (-5.0 * t).exp() / 100.0;
             assert!(
                 (r.value(t) - exact).abs() < 1e-16 + 1e-14 * exact.abs(),
                 "t={t}"
@@ -637,8 +637,8 @@ mod tests {
             1.0,
         )
         .unwrap();
-        for t in [0.0, 0.05, 0.1, 0.3, 1.0] {
-            let e = (-10.0 * t as f64).exp();
+        for t in [0.0f64, 0.05, 0.1, 0.3, 1.0] {
+            let e = (-10.0 * t).exp();
             let exact = 0.05 - e / 20.0 + 0.5 * t * e;
             assert!((r.value(t) - exact).abs() < 1e-15, "t={t}");
         }
@@ -650,9 +650,9 @@ mod tests {
         // series: = 1 − e^{−t}(1 + t) + d·(t²/2·e^{−t} + … ) computed in extended form.
         let d = 1e-6;
         let r = StepResponse::new(&zpk(&[], &[c(-1.0, 0.0), c(-1.0 - d, 0.0)], 1.0), 1.0).unwrap();
-        for t in [0.1, 1.0, 3.0, 10.0] {
+        for t in [0.1f64, 1.0, 3.0, 10.0] {
             // Divided-difference expansion to second order in d, exact to ~1e-18 here.
-            let e = (-t as f64).exp();
+            let e = (-t).exp();
             let y0 = 1.0 - e * (1.0 + t);
             let y1 = -(1.0 - e * (1.0 + t + t * t / 2.0)); // d/dd of 1/(1+d)·… at d = 0
             let exact = y0 + d * y1;
@@ -670,7 +670,7 @@ mod tests {
         let r = StepResponse::new(&zpk(&[], &[c(0.0, 0.0), c(-1.0, 0.0)], 1.0), 1.0).unwrap();
         assert_eq!(r.behaviour(), Behaviour::Integrating);
         for t in [0.0, 0.5, 2.0, 20.0] {
-            assert!((r.value(t) - (t - 1.0 + (-t as f64).exp())).abs() < 1e-13);
+            assert!((r.value(t) - (t - 1.0 + (-t).exp())).abs() < 1e-13);
         }
         assert_eq!(r.final_value(), None);
     }
