@@ -345,9 +345,7 @@ fn refit(
         ..FitOptions::default()
     };
     let mut starts = warm_starts(data, current, extension);
-    let mut auto = auto_guess(data, s, Some(current.model.get(Param::Y0)));
-    auto.set(Param::Y0, current.model.get(Param::Y0));
-    starts.push(auto);
+    starts.extend(fresh_starts(data, current, extension, s));
     starts
         .into_iter()
         .filter_map(|g| fit(data, s, g, &options, &mut ()).ok())
@@ -419,6 +417,44 @@ fn warm_starts(data: &FitData, current: &FitReport, extension: Extension) -> Vec
             .map(|f| with(&[(Param::Tz, f * t_char)]))
             .collect(),
     }
+}
+
+/// Starts read off the data rather than the current fit, which may have collapsed where the
+/// structure could not follow the curve (a P2 on an overshoot fits two tiny lags): the extended
+/// structure's automatic guess, with Y0 at the current value, or read off the first samples
+/// when the offset is the extension; for a zero, the guess with Tz spread over multiples of
+/// the 63 % time on the side the curve points at (an overshoot: Tz above the lags; a dip first:
+/// Tz < 0).
+fn fresh_starts(
+    data: &FitData,
+    current: &FitReport,
+    extension: Extension,
+    s: Structure,
+) -> Vec<Values> {
+    let held_y0 = (extension != Extension::FreeOffset).then(|| current.model.get(Param::Y0));
+    let mut auto = auto_guess(data, s, held_y0);
+    if let Some(y0) = held_y0 {
+        auto.set(Param::Y0, y0);
+    }
+    if extension != Extension::Zero {
+        return vec![auto];
+    }
+    let f = features(data, held_y0);
+    let t63 = f.t63.unwrap_or(data.duration() / 3.0);
+    let mut factors = vec![];
+    if f.overshoot > 0.0 {
+        factors.extend([1.0, 2.0, 4.0]);
+    }
+    if f.t_dip.is_some() {
+        factors.extend([-0.3, -1.0]);
+    }
+    let mut starts = vec![auto];
+    starts.extend(factors.iter().map(|k| {
+        let mut v = auto;
+        v.set(Param::Tz, k * t63);
+        v
+    }));
+    starts
 }
 
 /// The model's main time constant (Tw for an underdamped pair, else Tp1), at least one

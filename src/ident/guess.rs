@@ -22,6 +22,9 @@ pub struct CurveFeatures {
     /// Largest normalised excursion beyond 1 and when (from t0).
     pub overshoot: f64,
     pub t_peak: Option<f64>,
+    /// Time from the peak until the excess over the final level has fallen to 1/e of itself:
+    /// the slow time constant of an overshoot made by a zero.
+    pub overshoot_decay: Option<f64>,
     /// Deepest normalised excursion below 0 (inverse response) and when.
     pub undershoot: f64,
     pub t_dip: Option<f64>,
@@ -86,9 +89,13 @@ pub fn features(data: &FitData, y0: Option<f64>) -> CurveFeatures {
         t63,
         overshoot: (peak - 1.0).max(0.0),
         t_peak: (peak > 1.0).then(|| e[peak_i].0),
+        overshoot_decay: (peak > 1.0)
+            .then(|| first_fall(&e[peak_i..], 1.0 + (peak - 1.0) / std::f64::consts::E))
+            .flatten()
+            .map(|t| t - e[peak_i].0),
         undershoot,
         t_dip: (undershoot > 0.0 && dip_i < peak_i).then(|| e[dip_i].0),
-        period: upward_period(&e),
+        period: upward_period(&e, hysteresis(&e, (peak - 1.0).max(0.0))),
     }
 }
 
@@ -100,13 +107,47 @@ fn first_crossing(e: &[(f64, f64)], level: f64) -> Option<f64> {
     })
 }
 
-/// Mean time between successive upward crossings of the final level (1), if at least two.
-fn upward_period(e: &[(f64, f64)]) -> Option<f64> {
-    let ups: Vec<f64> = e
-        .windows(2)
-        .filter(|w| w[0].1 < 1.0 && w[1].1 >= 1.0)
-        .map(|w| w[0].0 + (w[1].0 - w[0].0) * (1.0 - w[0].1) / (w[1].1 - w[0].1))
-        .collect();
+/// First instant at which the normalised curve falls to `level`, interpolated.
+fn first_fall(e: &[(f64, f64)], level: f64) -> Option<f64> {
+    e.windows(2).find_map(|w| {
+        let ((ta, a), (tb, b)) = (w[0], w[1]);
+        (a > level && b <= level).then(|| ta + (tb - ta) * (a - level) / (a - b))
+    })
+}
+
+/// The half-width of the band about the final level a swing must cross to count as an
+/// oscillation: a quarter of the overshoot, and at least three noise standard deviations
+/// (estimated from successive differences, σ ≈ sd(Δe)/√2), so that noise about a settled
+/// level does not make a period.
+fn hysteresis(e: &[(f64, f64)], overshoot: f64) -> f64 {
+    let d: Vec<f64> = e.windows(2).map(|w| w[1].1 - w[0].1).collect();
+    let n = d.len().max(1) as f64;
+    let mean = d.iter().sum::<f64>() / n;
+    let sd = (d.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / n).sqrt();
+    (0.25 * overshoot).max(3.0 * sd / std::f64::consts::SQRT_2)
+}
+
+/// Mean time between successive upward crossings of the final level (1), if at least two;
+/// a crossing counts when the curve came from below 1 − `band` and goes on above 1 + `band`.
+fn upward_period(e: &[(f64, f64)], band: f64) -> Option<f64> {
+    let mut ups = Vec::new();
+    let (mut armed, mut candidate) = (false, None);
+    for w in e.windows(2) {
+        let ((ta, a), (tb, b)) = (w[0], w[1]);
+        if b < 1.0 - band {
+            armed = true;
+            candidate = None;
+        }
+        if armed && a < 1.0 && b >= 1.0 {
+            candidate = Some(ta + (tb - ta) * (1.0 - a) / (b - a));
+        }
+        if b > 1.0 + band
+            && let Some(t) = candidate.take()
+        {
+            ups.push(t);
+            armed = false;
+        }
+    }
     (ups.len() >= 2).then(|| (ups[ups.len() - 1] - ups[0]) / (ups.len() - 1) as f64)
 }
 
@@ -169,19 +210,7 @@ pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
         v.set(Param::Tw, positive(1.0 / wn));
     }
     if structure.zero {
-        let tp = if structure.underdamped {
-            v.get(Param::Tw)
-        } else {
-            v.get(Param::Tp1)
-        };
-        v.set(
-            Param::Tz,
-            if f.t_dip.is_some() {
-                -0.5 * tp
-            } else {
-                0.3 * tp
-            },
-        );
+        set_zero(&mut v, structure, &f, ts, duration);
     }
     if structure.delay {
         let own = own_five_percent_time(structure, v, data).unwrap_or(0.0);
@@ -197,6 +226,35 @@ pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
         }
     }
     v
+}
+
+/// Tz from the curve: a dip first gives a right-half-plane zero (Tz < 0); an overshoot
+/// without oscillation is read as a zero above real lags: the excess decays with the slow lag
+/// (`overshoot_decay`), the fast lag shows in the peak time, and the peak ≈ Tz / Tp1 of the
+/// final value; otherwise a small zero.
+fn set_zero(v: &mut Values, structure: Structure, f: &CurveFeatures, ts: f64, duration: f64) {
+    let tp = if structure.underdamped {
+        v.get(Param::Tw)
+    } else {
+        v.get(Param::Tp1)
+    };
+    let positive = |x: f64| x.max(2.0 * ts).min(10.0 * duration);
+    let tz = match (f.t_dip, f.t_peak, f.overshoot_decay) {
+        (Some(_), _, _) => -0.5 * tp,
+        (None, Some(t_peak), Some(decay)) if !structure.underdamped => {
+            let slow = positive(decay);
+            v.set(Param::Tp1, slow);
+            if structure.poles >= 2 {
+                v.set(Param::Tp2, positive(t_peak / 3.0).min(slow));
+            }
+            if structure.poles >= 3 {
+                v.set(Param::Tp3, positive(t_peak / 10.0).min(slow));
+            }
+            (1.0 + f.overshoot) * slow
+        }
+        _ => 0.3 * tp,
+    };
+    v.set(Param::Tz, tz);
 }
 
 /// Splits a total lag among the structure's time constants.
@@ -292,5 +350,68 @@ mod tests {
             "{}",
             g.get(Param::Zeta)
         );
+    }
+
+    /// A deterministic stand-in for noise: uniform in ±amplitude (a small LCG).
+    fn jitter(n: usize, amplitude: f64) -> Vec<f64> {
+        let mut state: u64 = 0x2545_F491_4F6C_DD1D;
+        (0..n)
+            .map(|_| {
+                state = state
+                    .wrapping_mul(6_364_136_223_846_793_005)
+                    .wrapping_add(1_442_695_040_888_963_407);
+                amplitude * (2.0 * ((state >> 11) as f64 / (1u64 << 53) as f64) - 1.0)
+            })
+            .collect()
+    }
+
+    fn noisy(structure: &str, truth: &[(Param, f64)], noise: f64) -> FitData {
+        let s = Structure::parse(structure).unwrap();
+        let mut v = Values::default();
+        for &(p, x) in truth {
+            v.set(p, x);
+        }
+        let setup = StepSetup { t0: 2.0, du: 1.0 };
+        let times: Vec<f64> = (0..600).map(|k| 0.1 * k as f64).collect();
+        let y = Model::new(s, v).simulate(&setup, &times).unwrap();
+        let y = y.iter().zip(jitter(600, noise)).map(|(y, e)| y + e).collect();
+        FitData { times, y, setup }
+    }
+
+    #[test]
+    fn noise_about_a_settled_level_makes_no_period() {
+        let data = noisy("P2", &[(Param::Kp, 1.0), (Param::Tp1, 3.0), (Param::Tp2, 1.0)], 0.02);
+        // Many noise crossings of the final level in the tail, but no swing beyond the band.
+        assert_eq!(features(&data, Some(0.0)).period, None);
+    }
+
+    #[test]
+    fn the_period_of_a_noisy_oscillation_is_read_between_swings() {
+        // ζ = 0.2, ωn = 2 rad/s: ωd = 1.9596 rad/s, period 3.2064 s.
+        let data = noisy(
+            "P2U",
+            &[(Param::Kp, 1.0), (Param::Tw, 0.5), (Param::Zeta, 0.2)],
+            0.01,
+        );
+        let period = features(&data, Some(0.0)).period.unwrap();
+        let exact = std::f64::consts::TAU / (2.0 * (1.0f64 - 0.04).sqrt());
+        assert!((period - exact).abs() < 0.05 * exact, "{period} vs {exact}");
+    }
+
+    #[test]
+    fn an_overshoot_without_oscillation_guesses_a_zero_above_the_lags() {
+        // (1 + 20 s) / ((1 + 8 s)(1 + 2 s)): peaks near 1.9 and decays with the 8 s lag.
+        let truth = [
+            (Param::Kp, 1.0),
+            (Param::Tp1, 8.0),
+            (Param::Tp2, 2.0),
+            (Param::Tz, 20.0),
+        ];
+        let data = noisy("P2Z", &truth, 0.005);
+        let g = auto_guess(&data, Structure::parse("P2Z").unwrap(), Some(0.0));
+        let (tp1, tz) = (g.get(Param::Tp1), g.get(Param::Tz));
+        // A start, not a fit: the fast lag still adds to the decay read after the peak.
+        assert!((tp1 - 8.0).abs() < 0.4 * 8.0, "Tp1 {tp1}");
+        assert!(tz > tp1 && (tz - 20.0).abs() < 0.4 * 20.0, "Tz {tz}");
     }
 }
