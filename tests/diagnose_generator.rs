@@ -17,7 +17,7 @@
 //! too, the data do not determine the parameter to 10 % and the diagnosis is not to blame.
 //!
 //! Run with `cargo test --test diagnose_generator -- --nocapture` to see the figures, with
-//! `DEGRAU_DIAGNOSE_CASES=20` for more cases per effect.
+//! `DEGRAU_DIAGNOSE_CASES=40` for more cases per effect.
 
 use std::sync::OnceLock;
 use std::time::Instant;
@@ -32,10 +32,10 @@ use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
 // ---------------------------------------------------------------------------------------------
 
 /// Cases per missing effect (the environment variable `DEGRAU_DIAGNOSE_CASES` overrides it,
-/// for a longer run: 20 per effect take about 8 minutes unoptimised on two cores).
-const CASES_PER_EFFECT: usize = 12;
+/// for a longer run: 40 per effect take about 15 s in release on two cores).
+const CASES_PER_EFFECT: usize = 20;
 /// Clean cases (cycling through P1D, P2D and P2DU; the override applies here too).
-const CLEAN_CASES: usize = 12;
+const CLEAN_CASES: usize = 20;
 /// Fraction of an effect's cases whose first named cause must be that effect.
 const MIN_RIGHT_FIRST: f64 = 0.95;
 /// Fraction of the clean cases that must come out `none` (no step, adequate).

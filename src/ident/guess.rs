@@ -374,13 +374,21 @@ mod tests {
         let setup = StepSetup { t0: 2.0, du: 1.0 };
         let times: Vec<f64> = (0..600).map(|k| 0.1 * k as f64).collect();
         let y = Model::new(s, v).simulate(&setup, &times).unwrap();
-        let y = y.iter().zip(jitter(600, noise)).map(|(y, e)| y + e).collect();
+        let y = y
+            .iter()
+            .zip(jitter(600, noise))
+            .map(|(y, e)| y + e)
+            .collect();
         FitData { times, y, setup }
     }
 
     #[test]
     fn noise_about_a_settled_level_makes_no_period() {
-        let data = noisy("P2", &[(Param::Kp, 1.0), (Param::Tp1, 3.0), (Param::Tp2, 1.0)], 0.02);
+        let data = noisy(
+            "P2",
+            &[(Param::Kp, 1.0), (Param::Tp1, 3.0), (Param::Tp2, 1.0)],
+            0.02,
+        );
         // Many noise crossings of the final level in the tail, but no swing beyond the band.
         assert_eq!(features(&data, Some(0.0)).period, None);
     }
