@@ -20,7 +20,11 @@ pub use tf::TransferFunction;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum LtiError {
     #[error("the {what} has a coefficient that is not a finite number (position {index})")]
-    NonFiniteCoefficient { what: &'static str, index: usize },
+    NonFiniteCoefficient {
+        what: &'static str,
+        /// Position of the coefficient, counted from 1 (the highest power first).
+        index: usize,
+    },
     #[error("the {what} is zero: every coefficient is 0")]
     ZeroPolynomial { what: &'static str },
     #[error("{what} {index} is not a finite number")]

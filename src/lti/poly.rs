@@ -27,7 +27,7 @@ const REAL_AXIS_TOLERANCE: f64 = 1e-10;
 /// Checks that every coefficient is finite; `what` names the polynomial in the message.
 pub fn check_finite(coeffs: &[f64], what: &'static str) -> Result<(), LtiError> {
     match coeffs.iter().position(|c| !c.is_finite()) {
-        Some(index) => Err(LtiError::NonFiniteCoefficient { what, index }),
+        Some(i) => Err(LtiError::NonFiniteCoefficient { what, index: i + 1 }),
         None => Ok(()),
     }
 }
@@ -473,7 +473,7 @@ mod tests {
         ));
         assert!(matches!(
             roots(&[1.0, f64::NAN]),
-            Err(LtiError::NonFiniteCoefficient { index: 1, .. })
+            Err(LtiError::NonFiniteCoefficient { index: 2, .. })
         ));
         assert!(matches!(roots(&[]), Err(LtiError::ZeroPolynomial { .. })));
     }

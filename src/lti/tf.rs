@@ -242,7 +242,12 @@ impl TransferFunction {
         } else {
             String::new()
         };
-        format!("{}{num} / ({}){delay}", self.gain, factors(&self.poles))
+        // One factor carries its own parentheses; a product needs them around it.
+        let den = match self.poles.len() {
+            1 => factors(&self.poles),
+            _ => format!("({})", factors(&self.poles)),
+        };
+        format!("{}{num} / {den}{delay}", self.gain)
     }
 }
 
@@ -316,6 +321,18 @@ mod tests {
 
     fn notes_third_order() -> TransferFunction {
         TransferFunction::from_zpk(&[], &[c(-1.0, 2.0), c(-1.0, -2.0), c(-5.0, 0.0)], 0.5).unwrap()
+    }
+
+    #[test]
+    fn describe_writes_the_factored_form_with_one_pair_of_parentheses_per_factor() {
+        assert_eq!(
+            notes_third_order().describe(),
+            "0.5 / ((s+1-2j)(s+1+2j)(s+5))"
+        );
+        let first = TransferFunction::from_zpk(&[c(-10.0, 0.0)], &[c(-5.0, 0.0)], 2.0).unwrap();
+        assert_eq!(first.describe(), "2 (s+10) / (s+5)");
+        let integrator = TransferFunction::from_zpk(&[], &[c(0.0, 0.0)], 1.0).unwrap();
+        assert_eq!(integrator.describe(), "1 / s");
     }
 
     #[test]
