@@ -169,3 +169,33 @@ fn the_whole_loop_fills_the_chain_table() {
     h.run_steps(2);
     h.get_by_label_contains("Remedy:");
 }
+
+/// The shipped example loads with the notes' step and operating point, and P2DU fits it to
+/// the notes' answer (Gdc 1.0021, θ 1.759 s, ζ 0.1948, ωn 0.9659 rad/s) within 2 %.
+#[test]
+fn the_leci_example_loads_and_fits_to_the_notes_answer() {
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    h.get_by_label_contains("Loaded the LECI example");
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| h.query_by_label("Fitted P2DU").is_some());
+    let report = h.state().ident.report.clone().expect("a fit");
+    let m = &report.model;
+    for (p, notes) in [
+        (Param::Kp, 1.0021),
+        (Param::Td, 1.759),
+        (Param::Zeta, 0.1948),
+    ] {
+        let v = m.get(p);
+        assert!(
+            (v - notes).abs() < 0.02 * notes,
+            "{}: {v} vs {notes}",
+            p.name()
+        );
+    }
+    let wn: f64 = 1.0 / m.get(Param::Tw);
+    assert!((wn - 0.9659).abs() < 0.02 * 0.9659, "ωn {wn}");
+    assert_eq!(m.get(Param::Y0), 50.0);
+}

@@ -15,6 +15,9 @@ use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::{FitData, FitError, FitOptions, FitReport, Method, Progress, fit};
 use crate::ident::models::{Model, Param, Structure, Values, pair_poles};
 
+/// The LECI step test of the course notes (`t, y`), shipped with the app.
+const LECI_EXAMPLE: &str = include_str!("../../assets/leci_step.csv");
+
 /// The model codes offered, in the order of the notes.
 pub const CODES: [&str; 13] = [
     "P1", "P1D", "P2", "P2D", "P2U", "P2DU", "P2Z", "P2DZ", "P2DUZ", "P3", "P3D", "P1I", "P1DI",
@@ -124,6 +127,31 @@ impl IdentView {
                     format!("Not loaded ({path}): {e}. What was loaded before is kept."),
                 ))
             }
+        }
+    }
+
+    /// Loads the example that ships with the app: the LECI step test of the course notes
+    /// (35 samples; Δu = 10 at t0 = 5 s from the operating point y0 = 50), set up as the
+    /// notes set it up.
+    pub fn load_example(&mut self) {
+        match data::load_str(LECI_EXAMPLE, &LoadOptions::default()) {
+            Ok(test) => {
+                self.settings.path.clear();
+                self.accept(test, "the LECI example of the course notes");
+                if let Some(l) = self.loaded.as_mut() {
+                    l.experiment.t0 = 5.0;
+                    l.experiment.du = 10.0;
+                    l.experiment.offset = Offset::Fixed(50.0);
+                }
+                self.message = Some((
+                    false,
+                    "Loaded the LECI example of the course notes: 35 samples, a step of \
+                     Δu = 10 at t0 = 5 s from y0 = 50."
+                        .into(),
+                ));
+                self.rebuild(true);
+            }
+            Err(e) => self.message = Some((true, format!("The example did not load: {e}."))),
         }
     }
 
@@ -470,6 +498,13 @@ impl IdentView {
             if ui.button("Load").clicked() {
                 let path = self.settings.path.clone();
                 self.load_path(&path);
+            }
+            if ui
+                .button("Example")
+                .on_hover_text("The LECI step test of the course notes")
+                .clicked()
+            {
+                self.load_example();
             }
             if ui.button("Open…").clicked()
                 && let Some(p) = rfd::FileDialog::new()
