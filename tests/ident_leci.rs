@@ -149,3 +149,43 @@ fn from_the_bad_guess_a_single_start_flags_the_alias() {
         );
     }
 }
+
+/// The automatic guess reads the oscillation off the curve: ωn and ζ near the notes' answer,
+/// so the student sees a guess that already looks like the data (35 coarse samples).
+#[test]
+fn the_automatic_guess_reads_the_oscillation() {
+    let data = leci();
+    let g = auto_guess(&data, structure(), Some(50.0));
+    let wn = 1.0 / g.get(Param::Tw);
+    let zeta = g.get(Param::Zeta);
+    assert!((wn - 0.9659).abs() < 0.15 * 0.9659, "ωn {wn}");
+    assert!((zeta - 0.1948).abs() < 0.05, "ζ {zeta}");
+    assert!(
+        (g.get(Param::Kp) - 1.0021).abs() < 0.02,
+        "{}",
+        g.get(Param::Kp)
+    );
+}
+
+/// A poor fit (P2U, no dead time: RMSE 1.58) has large residuals, where Gauss–Newton steps
+/// overshoot and zigzag; the damping must still converge, to the optimum Nelder–Mead finds.
+#[test]
+fn levenberg_marquardt_converges_on_a_poor_fit() {
+    use degrau::ident::fit::Termination;
+    let data = leci();
+    let mut s = Structure::parse("P2U").unwrap();
+    s.free_offset = false;
+    let mut guess = auto_guess(&data, s, Some(50.0));
+    guess.set(Param::Y0, 50.0);
+    let single = |method| FitOptions {
+        method,
+        starts: 1,
+        ..FitOptions::default()
+    };
+    let lm = fit(&data, s, guess, &single(Method::LevenbergMarquardt), &mut ()).unwrap();
+    let nm = fit(&data, s, guess, &single(Method::NelderMead), &mut ()).unwrap();
+    assert_ne!(lm.termination, Termination::IterationLimit, "{}", lm.iterations);
+    assert!(lm.iterations < 60, "{} iterations", lm.iterations);
+    assert!((lm.mse - nm.mse).abs() < 1e-6 * nm.mse, "{} vs {}", lm.mse, nm.mse);
+    assert!((lm.mse - 2.49501).abs() < 1e-5, "{}", lm.mse);
+}

@@ -20,7 +20,7 @@ const GRAB: f32 = 9.0;
 pub fn show(ui: &mut Ui, view: &mut IdentView) {
     let Some(loaded) = view.loaded.as_ref() else {
         ui.centered_and_justified(|ui| {
-            ui.label("Load a step test: File → Open a step test…, type its path on the right, drop it here, or paste columns.");
+            ui.label("Load a step test: File → Open a step test…, type its path on the right, drop it here, paste columns, or press Example for the LECI test of the course notes.");
         });
         return;
     };
@@ -71,6 +71,8 @@ pub fn show(ui: &mut Ui, view: &mut IdentView) {
         )
         .x_axis_label("t (s)")
         .y_axis_label("y")
+        .y_grid_spacer(super::grid::one_two_five())
+        .y_axis_formatter(super::grid::tick_label)
         .allow_drag(false)
         .link_axis(link, [true, false])
         .show(ui, |plot| {
@@ -133,6 +135,8 @@ pub fn show(ui: &mut Ui, view: &mut IdentView) {
         .height(ui.available_height())
         .x_axis_label("t (s)")
         .y_axis_label("y − ŷ")
+        .y_grid_spacer(super::grid::one_two_five())
+        .y_axis_formatter(super::grid::tick_label)
         .link_axis(link, [true, false])
         .show(ui, |plot| {
             plot.hline(HLine::new("zero", 0.0).color(data_color.gamma_multiply(0.5)));

@@ -8,6 +8,7 @@
 
 pub mod analysis;
 pub mod export;
+pub mod grid;
 pub mod ident_plot;
 pub mod identify;
 pub mod job;

@@ -554,13 +554,14 @@ impl<'a> Problem<'a> {
                     let new_sse: f64 = trial.iter().map(|v| v * v).sum();
                     if new_sse < sse {
                         let relative = (sse - new_sse) / sse.max(f64::MIN_POSITIVE);
+                        let rho = (sse - new_sse) / predicted_reduction(&g, &a, &x, &candidate);
                         x = candidate;
                         std::mem::swap(&mut r, &mut trial);
                         sse = new_sse;
-                        lambda = (lambda / 3.0).max(1e-12);
+                        lambda = damping_after_success(lambda, rho);
                         accepted = true;
                         path.push(x.clone());
-                        if relative < 1e-12 {
+                        if relative < 1e-10 {
                             termination = Termination::SmallCostChange;
                         }
                         break;
@@ -841,6 +842,27 @@ impl<'a> Problem<'a> {
                 Some((x[i] - half, x[i] + half))
             })
             .collect()
+    }
+}
+
+/// The fall of the sum of squares that the linearised model predicts for the step from `x`
+/// to `candidate`: S − |r + Jd|² = −(2gᵀd + dᵀAd), with g = Jᵀr and A = JᵀJ.
+fn predicted_reduction(g: &DVector<f64>, a: &DMatrix<f64>, x: &[f64], candidate: &[f64]) -> f64 {
+    let d = DVector::from_iterator(x.len(), x.iter().zip(candidate).map(|(x, c)| c - x));
+    -(2.0 * g.dot(&d) + d.dot(&(a * &d)))
+}
+
+/// The damping after an accepted step, from the gain ratio ρ = actual / predicted fall
+/// (Moré's rule): a step the linear model overrated (ρ < 1/4, as on a poor fit with large
+/// residuals, where Gauss–Newton steps overshoot and zigzag along the valley) doubles λ; a
+/// step it predicted well (ρ > 3/4) divides λ by three.
+fn damping_after_success(lambda: f64, rho: f64) -> f64 {
+    if rho.is_nan() || rho < 0.25 {
+        (lambda * 2.0).max(1e-6)
+    } else if rho > 0.75 {
+        (lambda / 3.0).max(1e-12)
+    } else {
+        lambda
     }
 }
 

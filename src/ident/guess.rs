@@ -116,15 +116,23 @@ fn first_fall(e: &[(f64, f64)], level: f64) -> Option<f64> {
 }
 
 /// The half-width of the band about the final level a swing must cross to count as an
-/// oscillation: a quarter of the overshoot, and at least three noise standard deviations
-/// (estimated from successive differences, σ ≈ sd(Δe)/√2), so that noise about a settled
-/// level does not make a period.
+/// oscillation: a quarter of the overshoot, and at least three noise standard deviations, so
+/// that noise about a settled level does not make a period. The noise is estimated from
+/// second differences, robustly (σ ≈ median|Δ²e| / (0.6745·√6)): a smooth curve adds little
+/// to them, and the few large ones of a coarsely sampled rise do not move the median.
 fn hysteresis(e: &[(f64, f64)], overshoot: f64) -> f64 {
-    let d: Vec<f64> = e.windows(2).map(|w| w[1].1 - w[0].1).collect();
-    let n = d.len().max(1) as f64;
-    let mean = d.iter().sum::<f64>() / n;
-    let sd = (d.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / n).sqrt();
-    (0.25 * overshoot).max(3.0 * sd / std::f64::consts::SQRT_2)
+    let mut d2: Vec<f64> = e
+        .windows(3)
+        .map(|w| (w[2].1 - 2.0 * w[1].1 + w[0].1).abs())
+        .collect();
+    let noise = if d2.is_empty() {
+        0.0
+    } else {
+        let mid = d2.len() / 2;
+        let (_, median, _) = d2.select_nth_unstable_by(mid, f64::total_cmp);
+        *median / (0.6745 * 6f64.sqrt())
+    };
+    (0.25 * overshoot).max(3.0 * noise)
 }
 
 /// Mean time between successive upward crossings of the final level (1), if at least two;
@@ -207,7 +215,7 @@ pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
             None => 1.8 / positive(lag),
         };
         v.set(Param::Zeta, zeta);
-        v.set(Param::Tw, positive(1.0 / wn));
+        v.set(Param::Tw, natural_period(1.0 / wn, ts, duration));
     }
     if structure.zero {
         set_zero(&mut v, structure, &f, ts, duration);
@@ -222,7 +230,10 @@ pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
         {
             let wd = std::f64::consts::PI / (tp - td).max(2.0 * ts);
             let zeta = v.get(Param::Zeta);
-            v.set(Param::Tw, positive((1.0 - zeta * zeta).sqrt() / wd));
+            v.set(
+                Param::Tw,
+                natural_period((1.0 - zeta * zeta).sqrt() / wd, ts, duration),
+            );
         }
     }
     v
@@ -255,6 +266,13 @@ fn set_zero(v: &mut Values, structure: Structure, f: &CurveFeatures, ts: f64, du
         _ => 0.3 * tp,
     };
     v.set(Param::Tz, tz);
+}
+
+/// Tw = 1/ωn kept where the sampling can show it: an oscillation is seen up to ωd = π/Ts, so
+/// Tw may be well below the sampling period (the LECI test: Tw ≈ 1.04 s at Ts ≈ 1.03 s);
+/// the floor is Ts/π, the ceiling ten record lengths.
+fn natural_period(tw: f64, ts: f64, duration: f64) -> f64 {
+    tw.max(ts / std::f64::consts::PI).min(10.0 * duration)
 }
 
 /// Splits a total lag among the structure's time constants.
