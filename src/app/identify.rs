@@ -244,6 +244,10 @@ impl IdentView {
                     if reguess || changed {
                         l.guess = l.experiment.guess(s, d);
                     }
+                    if changed {
+                        // The last fit's outcome was about another structure.
+                        self.status.clear();
+                    }
                 }
                 Err(e) => self.status = e.to_string(),
             }
@@ -374,6 +378,11 @@ impl IdentView {
         if let Some((s, _)) = &mut self.fitted {
             *s = fit.model.structure;
         }
+        self.status = format!(
+            "from the diagnosis: {} · {} iterations",
+            fit.termination.describe(),
+            fit.iterations
+        );
         self.report = Some(fit.clone());
     }
 
