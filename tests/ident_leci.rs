@@ -182,10 +182,27 @@ fn levenberg_marquardt_converges_on_a_poor_fit() {
         starts: 1,
         ..FitOptions::default()
     };
-    let lm = fit(&data, s, guess, &single(Method::LevenbergMarquardt), &mut ()).unwrap();
+    let lm = fit(
+        &data,
+        s,
+        guess,
+        &single(Method::LevenbergMarquardt),
+        &mut (),
+    )
+    .unwrap();
     let nm = fit(&data, s, guess, &single(Method::NelderMead), &mut ()).unwrap();
-    assert_ne!(lm.termination, Termination::IterationLimit, "{}", lm.iterations);
+    assert_ne!(
+        lm.termination,
+        Termination::IterationLimit,
+        "{}",
+        lm.iterations
+    );
     assert!(lm.iterations < 60, "{} iterations", lm.iterations);
-    assert!((lm.mse - nm.mse).abs() < 1e-6 * nm.mse, "{} vs {}", lm.mse, nm.mse);
+    assert!(
+        (lm.mse - nm.mse).abs() < 1e-6 * nm.mse,
+        "{} vs {}",
+        lm.mse,
+        nm.mse
+    );
     assert!((lm.mse - 2.49501).abs() < 1e-5, "{}", lm.mse);
 }
