@@ -164,8 +164,9 @@ pub struct ResidualAnalysis {
     ///    e^{−k/τ}·cos(ωk − φ): the decay and the phase φ move its peaks (so "the lag of the
     ///    next peak" is biased) but not the spacing of its zeros, which is exactly π/ω.
     pub dominant_period: Option<f64>,
-    /// The residuals look white: at most max(1, ⌊1 % of max_lag⌋) lags outside the 99 %
-    /// band and |runs.z| < 2.576. True when there is nothing to test (N = 0, all zeros).
+    /// The residuals look white: no more lags outside the 99 % band than white noise gives
+    /// in 99 % of records ([`allowed_outside`]: 1 of 8 lags, 3 of 50) and |runs.z| < 2.576.
+    /// True when there is nothing to test (N = 0, all zeros).
     pub white: bool,
     /// Sample standard deviation of the residuals, √(Σ(eᵢ − ē)²/(N − 1)) (output units; 0
     /// when N < 2): the noise level a good model leaves.
@@ -268,7 +269,7 @@ pub fn analyse(
     let input_correlation = input.map(|u| input_correlation(e, u, max_lag));
     let dominant_period =
         dominant_period(e, band99, sampling_period(times).unwrap_or(1.0), max_lag);
-    let allowed = ((max_lag as f64 * 0.01).floor() as usize).max(1);
+    let allowed = allowed_outside(max_lag);
     let white = outside_band.len() <= allowed && runs.z.abs() < z99();
     let std = sample_std(e);
 
@@ -295,6 +296,22 @@ fn mean(x: &[f64]) -> f64 {
 }
 
 /// Sample standard deviation with N − 1 (0 when N < 2).
+/// How many of `lags` autocorrelation lags white noise leaves outside the 99 % band in 99 %
+/// of records: the smallest k with P(X > k) ≤ 1 % for X ~ Binomial(lags, 0.01) (the lags
+/// taken as independent). Allowing only one would flag about 9 % of white records at 50 lags.
+pub fn allowed_outside(lags: usize) -> usize {
+    let (n, p) = (lags as i32, 0.01f64);
+    let mut term = (1.0 - p).powi(n); // P(X = 0)
+    let mut cumulative = term;
+    let mut k = 0;
+    while 1.0 - cumulative > 0.01 + 1e-12 && k < lags {
+        term *= (n - k as i32) as f64 / (k + 1) as f64 * p / (1.0 - p);
+        cumulative += term;
+        k += 1;
+    }
+    k
+}
+
 fn sample_std(x: &[f64]) -> f64 {
     if x.len() < 2 {
         return 0.0;
@@ -573,6 +590,19 @@ mod tests {
             response_start: f64::NEG_INFINITY,
             settled: f64::INFINITY,
         }
+    }
+
+    #[test]
+    fn allowed_lags_follow_the_binomial_tail() {
+        // 10 lags: P(X > 1) = 0.43 %; 20: P(X > 1) = 1.7 %, P(X > 2) = 0.10 %;
+        // 50: P(X > 2) = 1.4 %, P(X > 3) = 0.16 %; 100: P(X > 3) = 1.8 %, P(X > 4) = 0.34 %.
+        assert_eq!(allowed_outside(0), 0);
+        assert_eq!(allowed_outside(1), 0);
+        assert_eq!(allowed_outside(8), 1);
+        assert_eq!(allowed_outside(10), 1);
+        assert_eq!(allowed_outside(20), 2);
+        assert_eq!(allowed_outside(50), 3);
+        assert_eq!(allowed_outside(100), 4);
     }
 
     #[test]
