@@ -199,3 +199,38 @@ fn the_leci_example_loads_and_fits_to_the_notes_answer() {
     assert!((wn - 0.9659).abs() < 0.02 * 0.9659, "ωn {wn}");
     assert_eq!(m.get(Param::Y0), 50.0);
 }
+
+/// The step time is a vertical line on the plot: dragging it right moves t0 by what the
+/// pointer moved, in the plot's own time units, and the field shows the new value.
+#[test]
+fn the_step_time_line_drags_t0() {
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    let t0 = |h: &Harness<'_, DegrauApp>| h.state().ident.loaded.as_ref().unwrap().experiment.t0;
+    assert_eq!(t0(&h), 5.0);
+    let line = h.get_by_label("step time line").rect().center();
+    h.hover_at(line);
+    h.run_steps(1);
+    h.drag_at(line);
+    h.run_steps(1);
+    for k in 1..=5 {
+        h.hover_at(line + Vec2::new(8.0 * k as f32, 0.0));
+        h.run_steps(1);
+    }
+    h.drop_at(line + Vec2::new(40.0, 0.0));
+    h.run_steps(2);
+    let moved = t0(&h);
+    // 40 px on a plot of about 40 s across some 800 px: about 2 s later.
+    assert!(moved > 5.5 && moved < 9.0, "t0 5 → {moved}");
+    let d = h
+        .state()
+        .ident
+        .loaded
+        .as_ref()
+        .unwrap()
+        .data
+        .clone()
+        .unwrap();
+    assert_eq!(d.setup.t0, moved, "the fit data follow the line");
+}

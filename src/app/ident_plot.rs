@@ -115,10 +115,12 @@ pub fn show(ui: &mut Ui, view: &mut IdentView) {
                 plot.line(Line::new(name, points).color(model_color).width(2.0));
             }
         });
-    if let Some(m) = model
-        && !view.is_fitting()
-    {
-        drag_handles(ui, view, &response.transform, m, t_end);
+    if !view.is_fitting() {
+        // The line first, so that a model handle on top of it wins the pointer.
+        drag_step_line(ui, view, &response.transform);
+        if let Some(m) = model {
+            drag_handles(ui, view, &response.transform, m, t_end);
+        }
     }
     ui.label("Residuals y − ŷ");
     let residuals: Vec<[f64; 2]> = match model.and_then(|m| m.simulate(&setup, &data.times).ok()) {
@@ -243,6 +245,41 @@ fn drag_handles(
             Color32::from_rgb(210, 80, 0)
         };
         painter.circle(at, 5.5, color.gamma_multiply(0.35), Stroke::new(2.0, color));
+    }
+}
+
+/// The step time t0 as a vertical line dragged left or right, within the record.
+fn drag_step_line(ui: &mut Ui, view: &mut IdentView, transform: &egui_plot::PlotTransform) {
+    let Some(l) = view.loaded.as_ref() else {
+        return;
+    };
+    let (Some(&first), Some(&last)) = (l.test.time.first(), l.test.time.last()) else {
+        return;
+    };
+    let frame: Rect = *transform.frame();
+    let x = transform
+        .position_from_point(&PlotPoint::new(l.experiment.t0, 0.0))
+        .x;
+    if !(frame.left()..=frame.right()).contains(&x) {
+        return;
+    }
+    let rect = Rect::from_x_y_ranges(x - 4.0..=x + 4.0, frame.y_range());
+    let response = ui.interact(rect, Id::unique("step time line"), Sense::drag());
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, "step time line"));
+    let response = response
+        .on_hover_text("Drag left or right: the step time t0.")
+        .on_hover_cursor(egui::CursorIcon::ResizeHorizontal);
+    if response.dragged()
+        && let Some(p) = ui.ctx().pointer_interact_pos()
+    {
+        view.set_step_time(transform.value_from_position(p).x.clamp(first, last));
+    }
+    if response.hovered() || response.dragged() {
+        ui.painter_at(frame).vline(
+            x,
+            frame.y_range(),
+            Stroke::new(2.0, Color32::from_rgb(240, 170, 0)),
+        );
     }
 }
 

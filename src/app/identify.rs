@@ -254,6 +254,16 @@ impl IdentView {
         }
     }
 
+    /// Moves the step time t0 (dragged on the plot), keeping the guesses.
+    pub fn set_step_time(&mut self, t0: f64) {
+        if let Some(l) = self.loaded.as_mut()
+            && t0.is_finite()
+        {
+            l.experiment.t0 = t0;
+            self.rebuild(false);
+        }
+    }
+
     /// The model shown: the running fit's latest, the fit's, or the guess.
     pub fn shown_model(&self) -> Option<Model> {
         if let Some(p) = self.job.as_ref().and_then(|j| j.progress.as_ref()) {
