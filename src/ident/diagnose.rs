@@ -76,7 +76,7 @@ impl Cause {
                 "The data starts with zero slope (an S-shape) where the model rises at once: the process has one more pole."
             }
             Cause::Zero => {
-                "The data overshoots although the model's real poles cannot: the process has a zero."
+                "The data rises faster or overshoots more than the model's poles allow: the process has a zero."
             }
             Cause::InverseResponse => {
                 "The data first moves the wrong way: the process has a right-half-plane zero."
@@ -596,10 +596,15 @@ fn explain(
         Cause::Zero => {
             let f = features(data, Some(current.model.get(Param::Y0)));
             let tp = f.t_peak.map(|t| t + t0);
+            let why = if current.model.structure.underdamped {
+                "more, and sooner, than the model's underdamped pair alone can follow"
+            } else {
+                "although the model's poles are real and cannot overshoot"
+            };
             (
                 format!(
-                    "The data overshoots its final level by {} % (peak at t = {} s) although the model's poles are real and \
-                     cannot overshoot. A zero with Tz = {} s lets it.",
+                    "The data overshoots its final level by {} % (peak at t = {} s) {why}. A zero with Tz = {} s \
+                     speeds up the start of the response and lets it.",
                     num(100.0 * f.overshoot),
                     tp.map_or("—".into(), num),
                     num(v.get(Param::Tz))
