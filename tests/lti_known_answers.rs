@@ -1209,3 +1209,27 @@ fn double_real_root_left_in_a_schur_block() {
         assert_abs("y", r2.value(t), r1.value(t), 1e-13);
     }
 }
+
+/// Poles sixteen decades apart (s² + 1e8·s + 1: −1e−8 and −1e8): the slow pole alone sets the
+/// metrics, rise ln 9·1e8 s and 2 % settling ln 50·1e8 s. Merging the step's pole with the
+/// slow one (a tolerance relative to the fast pole did) made the response never rise.
+/// Beyond what f64 can carry (1e200 apart) the response is refused, never shown wrong.
+#[test]
+fn poles_many_decades_apart() {
+    let g = TransferFunction::from_coeffs(&[1.0], &[1.0, 1e8, 1.0]).unwrap();
+    let r = response(&g, 1.0);
+    let i = info(&r);
+    assert_rel("rise", i.rise_time.unwrap(), 9f64.ln() * 1e8, 1e-9);
+    assert_rel("settling", i.settling_time.unwrap(), 50f64.ln() * 1e8, 1e-9);
+    assert_rel(
+        "y(1e8)",
+        r.eval(Derivative::Value, 1e8),
+        1.0 - (-1.0f64).exp(),
+        1e-12,
+    );
+    let extreme = TransferFunction::from_coeffs(&[1.0], &[1.0, 1e200, 1.0]).unwrap();
+    assert_eq!(
+        StepResponse::new(&extreme, 1.0).err(),
+        Some(LtiError::OutOfRange)
+    );
+}

@@ -60,6 +60,11 @@ pub enum LtiError {
     DelayInLoop,
     #[error("the closed loop gain Kp = {0} must be a finite number")]
     BadLoopGain(f64),
+    #[error(
+        "the poles and zeros span too many decades for double precision: the step response \
+         cannot be computed reliably (rescale time, or drop roots far faster than the rest)"
+    )]
+    OutOfRange,
     #[error("finding the roots of a degree-{degree} polynomial did not converge")]
     RootsDidNotConverge { degree: usize },
     #[error("the system has order {0}; Degrau handles orders up to {max}", max = tf::MAX_ORDER)]
@@ -69,9 +74,19 @@ pub enum LtiError {
 /// `-1+2j` style text for a complex number.
 pub fn fmt_c(c: C64) -> String {
     if c.im == 0.0 {
-        format!("{}", c.re)
+        exact(c.re)
     } else {
         let sign = if c.im < 0.0 { '-' } else { '+' };
-        format!("{}{}{}j", c.re, sign, c.im.abs())
+        format!("{}{}{}j", exact(c.re), sign, exact(c.im.abs()))
+    }
+}
+
+/// The shortest text that reads back as exactly `x`: plain for 1e−4 ≤ |x| < 1e15, else in
+/// scientific notation (`-1e200`, not two hundred digits).
+pub fn exact(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e15).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
     }
 }

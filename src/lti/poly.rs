@@ -102,7 +102,13 @@ pub fn roots(coeffs: &[f64]) -> Result<Vec<C64>, LtiError> {
 }
 
 /// Roots of a·s² + b·s + c without cancellation (the citardauq form for the smaller root).
+/// The coefficients are first divided by the power of two nearest the largest of them, so
+/// b² − 4ac cannot overflow (s² + 1e200·s + 1 has roots −1e200 and −1e−200); what underflows
+/// then is negligible next to the largest term.
 fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<C64> {
+    let largest = a.abs().max(b.abs()).max(c.abs());
+    let k = -(largest.log2().floor() as i32);
+    let (a, b, c) = (mul_pow2(a, k), mul_pow2(b, k), mul_pow2(c, k));
     let disc = b * b - 4.0 * a * c;
     if disc >= 0.0 {
         let q = -0.5 * (b + b.signum() * disc.sqrt());
@@ -439,6 +445,21 @@ mod tests {
             assert!((a - b).norm() < 1e-12, "{a} vs {b}");
         }
         assert_eq!(r[0], r[1].conj(), "pair must be exactly conjugate");
+    }
+
+    #[test]
+    fn quadratics_at_extreme_scales_keep_both_roots() {
+        let r = roots(&[1.0, 1e200, 1.0]).unwrap();
+        let near = |x: f64| {
+            r.iter()
+                .any(|z| z.im == 0.0 && (z.re - x).abs() <= 1e-12 * x.abs())
+        };
+        assert!(near(-1e200) && near(-1e-200), "{r:?}");
+        let r = roots(&[1e300, 0.0, 1e300]).unwrap();
+        assert!(r.iter().all(|z| (z.norm() - 1.0).abs() < 1e-12), "{r:?}");
+        let r = roots(&[1e-300, 3e-300, 2e-300]).unwrap();
+        let near = |x: f64| r.iter().any(|z| (z.re - x).abs() < 1e-12 && z.im == 0.0);
+        assert!(near(-2.0) && near(-1.0), "{r:?}");
     }
 
     #[test]

@@ -23,8 +23,6 @@ use super::tf::TransferFunction;
 
 /// Poles this close (relative to their modulus) are treated as one repeated pole.
 pub const CLUSTER_RELATIVE: f64 = 1e-6;
-/// Poles this close relative to the fastest pole are merged too (protects near-origin pairs).
-const CLUSTER_ABSOLUTE: f64 = 1e-12;
 /// Steps of the exponential recurrence between exact re-evaluations.
 const REANCHOR: usize = 64;
 
@@ -146,6 +144,9 @@ impl StepResponse {
         let clusters = partial_fractions(&groups, tf.zeros(), amplitude * tf.gain());
         let behaviour = classify(tf);
         let final_value = (behaviour == Behaviour::Settles).then(|| amplitude * tf.dc_gain());
+        if let Some(expected) = final_value {
+            check_final_value(&clusters, expected)?;
+        }
         let initial_slope_sign = if tf.relative_degree() >= 2 {
             (amplitude * tf.gain()).signum()
         } else {
@@ -423,16 +424,36 @@ fn term_decay_time(magnitude: f64, j: usize, sigma: f64, eps: f64) -> f64 {
     tau
 }
 
+/// The final value theorem as a check of the partial fractions: the constant term (the
+/// step's pole at the origin) must be A·G(0). It fails only when the poles span so many
+/// decades that the products of the residue formula leave the range of f64 (s² + 1e200·s + 1
+/// came out as y(t) = 0); the response is then refused rather than shown wrong.
+fn check_final_value(clusters: &[Cluster], expected: f64) -> Result<(), LtiError> {
+    let constant: f64 = clusters
+        .iter()
+        .filter(|c| c.center == C64::new(0.0, 0.0))
+        .map(|c| c.coeffs.first().map_or(0.0, |q| q.re))
+        .sum();
+    if (constant - expected).abs() <= 1e-6 * expected.abs() {
+        Ok(())
+    } else {
+        Err(LtiError::OutOfRange)
+    }
+}
+
 /// Single-linkage grouping of poles closer than the merging tolerance. Returns (centroid,
 /// multiplicity) per group, with Im ≥ 0 groups only: a self-conjugate group gets a real
 /// centroid, a group entirely above the axis stands for itself and its mirror.
+///
+/// Closeness is relative to the poles' own modulus only. A tolerance relative to the fastest
+/// pole merged the step's pole at the origin with a slow pole (s² + 1e7·s + 1: 0 and −1e−7
+/// next to −1e7) into a double pole, whose t·e^{ct} expansion is only valid while
+/// |δ|·t ≪ 1, and the response never rose; poles that far apart relative to themselves have
+/// residues of the size of the response, so nothing cancels when they are kept apart.
 fn cluster(poles: &[C64]) -> Vec<(C64, usize, f64)> {
-    let fastest = poles.iter().map(|p| p.norm()).fold(0.0, f64::max);
     let close = |a: C64, b: C64| {
         let d = (a - b).norm();
-        d == 0.0
-            || d <= CLUSTER_RELATIVE * a.norm().max(b.norm())
-            || d <= CLUSTER_ABSOLUTE * fastest
+        d == 0.0 || d <= CLUSTER_RELATIVE * a.norm().max(b.norm())
     };
     let n = poles.len();
     let mut group: Vec<usize> = (0..n).collect();

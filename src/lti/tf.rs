@@ -238,7 +238,7 @@ impl TransferFunction {
             format!(" {}", factors(&self.zeros))
         };
         let delay = if self.delay > 0.0 {
-            format!(" e^(-{} s)", self.delay)
+            format!(" e^(-{} s)", super::exact(self.delay))
         } else {
             String::new()
         };
@@ -247,7 +247,7 @@ impl TransferFunction {
             1 => factors(&self.poles),
             _ => format!("({})", factors(&self.poles)),
         };
-        format!("{}{num} / {den}{delay}", self.gain)
+        format!("{}{num} / {den}{delay}", super::exact(self.gain))
     }
 }
 
@@ -255,9 +255,9 @@ impl TransferFunction {
 fn linear_factor(root: C64) -> String {
     let signed = |v: f64| {
         if v < 0.0 {
-            format!("-{}", -v)
+            format!("-{}", super::exact(-v))
         } else {
-            format!("+{v}")
+            format!("+{}", super::exact(v))
         }
     };
     match (root.re == 0.0, root.im == 0.0) {
@@ -333,6 +333,9 @@ mod tests {
         assert_eq!(first.describe(), "2 (s+10) / (s+5)");
         let integrator = TransferFunction::from_zpk(&[], &[c(0.0, 0.0)], 1.0).unwrap();
         assert_eq!(integrator.describe(), "1 / s");
+        let extreme =
+            TransferFunction::from_zpk(&[], &[c(-1e200, 0.0), c(-2.5e-7, 0.0)], 1.0).unwrap();
+        assert_eq!(extreme.describe(), "1 / ((s+2.5e-7)(s+1e200))");
     }
 
     #[test]
