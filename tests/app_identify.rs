@@ -234,3 +234,60 @@ fn the_step_time_line_drags_t0() {
         .unwrap();
     assert_eq!(d.setup.t0, moved, "the fit data follow the line");
 }
+
+/// A file dropped on the window, as eframe hands it over: a path.
+#[derive(Debug)]
+struct DroppedPath(std::path::PathBuf);
+
+impl egui::DroppedFile for DroppedPath {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+/// Dropping a file on the window loads it (switching to the identification view); pasting
+/// columns outside a text field loads them; a paste that is not a step test keeps the file.
+#[test]
+fn a_dropped_file_and_pasted_columns_load() {
+    let mut h = Harness::builder()
+        .with_size([1360.0, 860.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
+    h.run_steps(2);
+    h.input_mut()
+        .dropped_files
+        .push(std::sync::Arc::new(DroppedPath(TCLAB.into())));
+    h.run_steps(3);
+    h.get_by_label_contains("Loaded 801 samples");
+    assert_eq!(
+        h.state().ident.loaded.as_ref().unwrap().test.time.len(),
+        801
+    );
+
+    h.event(egui::Event::Paste("hello, world".into()));
+    h.run_steps(3);
+    h.get_by_label_contains("The pasted text is not a step test");
+    assert_eq!(
+        h.state().ident.loaded.as_ref().unwrap().test.time.len(),
+        801
+    );
+
+    let columns: String = (0..40)
+        .map(|k| {
+            let t = 0.5 * k as f64;
+            let y = if t < 2.0 {
+                0.0
+            } else {
+                1.0 - (-(t - 2.0) / 3.0).exp()
+            };
+            format!("{t}\t{y}\n")
+        })
+        .collect();
+    h.event(egui::Event::Paste(columns));
+    h.run_steps(3);
+    h.get_by_label_contains("Loaded 40 samples from pasted data");
+    assert_eq!(h.state().ident.loaded.as_ref().unwrap().test.time.len(), 40);
+}
