@@ -291,3 +291,30 @@ fn a_dropped_file_and_pasted_columns_load() {
     h.get_by_label_contains("Loaded 40 samples from pasted data");
     assert_eq!(h.state().ident.loaded.as_ref().unwrap().test.time.len(), 40);
 }
+
+/// A restart loads the same test again with the choices made on it: the example, or a file.
+#[test]
+fn a_restart_reloads_the_test_and_its_choices() {
+    let restart = |h: &Harness<'_, DegrauApp>| {
+        let mut saved = h.state().saved.clone();
+        saved.ident = h.state().ident.settings_to_save();
+        let text = serde_json::to_string(&saved).unwrap();
+        DegrauApp::new(serde_json::from_str(&text).unwrap())
+    };
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    h.state_mut().ident.set_step_time(5.5);
+    let again = restart(&h);
+    let l = again.ident.loaded.as_ref().expect("the example again");
+    assert_eq!(l.test.time.len(), 35);
+    assert_eq!(l.experiment.t0, 5.5);
+    assert_eq!(l.experiment.du, 10.0);
+
+    load(&mut h, TCLAB);
+    h.get_by_label_contains("Loaded 801 samples");
+    let again = restart(&h);
+    let l = again.ident.loaded.as_ref().expect("the file again");
+    assert_eq!(l.test.time.len(), 801);
+    assert!(!again.ident.settings.example);
+}

@@ -25,8 +25,14 @@ pub const CODES: [&str; 13] = [
 
 /// Choices kept between runs.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct IdentSettings {
     pub path: String,
+    /// The shipped example is what is loaded (it has no path).
+    pub example: bool,
+    /// The step, operating point, window and filter chosen on the loaded test, restored
+    /// with it after a restart.
+    pub experiment: Option<Experiment>,
     pub time_col: String,
     pub y_col: String,
     pub u_col: String,
@@ -43,6 +49,8 @@ impl Default for IdentSettings {
     fn default() -> Self {
         Self {
             path: String::new(),
+            example: false,
+            experiment: None,
             time_col: String::new(),
             y_col: String::new(),
             u_col: String::new(),
@@ -106,10 +114,30 @@ pub enum IdentAction {
 
 impl IdentView {
     /// A view with nothing loaded and the given settings.
+    /// A view with the given settings, with the test they name loaded again (the example or
+    /// the file, with the choices made on it), as it was when the app was closed.
     pub fn with_settings(settings: IdentSettings) -> Self {
-        Self {
-            settings,
+        let mut view = Self {
+            settings: settings.clone(),
             ..Default::default()
+        };
+        if settings.example {
+            view.load_example();
+        } else if !settings.path.is_empty() {
+            view.load_path(&settings.path);
+        }
+        if let (Some(e), Some(l)) = (settings.experiment, view.loaded.as_mut()) {
+            l.experiment = e;
+            view.rebuild(true);
+        }
+        view
+    }
+
+    /// The settings to keep between runs, with the loaded test's choices.
+    pub fn settings_to_save(&self) -> IdentSettings {
+        IdentSettings {
+            experiment: self.loaded.as_ref().map(|l| l.experiment.clone()),
+            ..self.settings.clone()
         }
     }
 
@@ -120,7 +148,10 @@ impl IdentView {
         match options.and_then(|o| {
             data::load_file(std::path::Path::new(path), &o).map_err(|e| e.to_string())
         }) {
-            Ok(test) => self.accept(test, path),
+            Ok(test) => {
+                self.settings.example = false;
+                self.accept(test, path);
+            }
             Err(e) => {
                 self.message = Some((
                     true,
@@ -137,6 +168,7 @@ impl IdentView {
         match data::load_str(LECI_EXAMPLE, &LoadOptions::default()) {
             Ok(test) => {
                 self.settings.path.clear();
+                self.settings.example = true;
                 self.accept(test, "the LECI example of the course notes");
                 if let Some(l) = self.loaded.as_mut() {
                     l.experiment.t0 = 5.0;
@@ -158,7 +190,11 @@ impl IdentView {
     /// Loads columns pasted as text.
     pub fn load_text(&mut self, text: &str) {
         match data::from_columns(text) {
-            Ok(test) => self.accept(test, "pasted data"),
+            Ok(test) => {
+                self.settings.example = false;
+                self.settings.path.clear();
+                self.accept(test, "pasted data");
+            }
             Err(e) => {
                 self.message = Some((
                     true,

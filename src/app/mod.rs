@@ -596,7 +596,7 @@ impl eframe::App for DegrauApp {
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        self.saved.ident = self.ident.settings.clone();
+        self.saved.ident = self.ident.settings_to_save();
         eframe::set_value(storage, eframe::APP_KEY, &self.saved);
     }
 }
