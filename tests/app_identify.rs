@@ -318,3 +318,25 @@ fn a_restart_reloads_the_test_and_its_choices() {
     assert_eq!(l.test.time.len(), 801);
     assert!(!again.ident.settings.example);
 }
+
+/// A test whose input is already stepped at the first sample (the heater on from t = 0): the
+/// step is found once the input before the record is typed.
+#[test]
+fn the_input_before_the_record_finds_a_step_at_the_first_sample() {
+    const DROPOUTS: &str = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../shared/data/real/tclab_step_q1_50_dropouts.csv"
+    );
+    let mut h = harness();
+    h.state_mut().ident.settings.y_col = "T1".into();
+    h.state_mut().ident.settings.u_col = "Q1".into();
+    load(&mut h, DROPOUTS);
+    h.get_by_label_contains("the step could not be found");
+    h.state_mut().ident.settings.initial_input = "0".into();
+    load(&mut h, DROPOUTS);
+    let e = h.state().ident.loaded.as_ref().unwrap().experiment.clone();
+    assert_eq!((e.t0, e.du), (0.0, 50.0));
+    h.state_mut().ident.settings.initial_input = "zero".into();
+    load(&mut h, DROPOUTS);
+    h.get_by_label_contains("\"zero\" is not a number");
+}

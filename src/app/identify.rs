@@ -18,6 +18,20 @@ use crate::ident::models::{Model, Param, Structure, Values, pair_poles};
 /// The LECI step test of the course notes (`t, y`), shipped with the app.
 const LECI_EXAMPLE: &str = include_str!("../../assets/leci_step.csv");
 
+/// A number typed in a field (a decimal comma is accepted); empty is `None`.
+fn optional_number(text: &str, what: &str) -> Result<Option<f64>, String> {
+    let text = text.trim();
+    if text.is_empty() {
+        return Ok(None);
+    }
+    text.replace(',', ".")
+        .parse::<f64>()
+        .ok()
+        .filter(|x| x.is_finite())
+        .map(Some)
+        .ok_or_else(|| format!("{what}: \"{text}\" is not a number"))
+}
+
 /// The model codes offered, in the order of the notes.
 pub const CODES: [&str; 13] = [
     "P1", "P1D", "P2", "P2D", "P2U", "P2DU", "P2Z", "P2DZ", "P2DUZ", "P3", "P3D", "P1I", "P1DI",
@@ -38,6 +52,9 @@ pub struct IdentSettings {
     pub u_col: String,
     /// Sampling period for files without a time column (text as typed).
     pub sampling_period: String,
+    /// The input before the record started, for a test whose step came at the first sample
+    /// (text as typed; empty: none).
+    pub initial_input: String,
     pub code: String,
     pub drift: bool,
     pub method: Method,
@@ -55,6 +72,7 @@ impl Default for IdentSettings {
             y_col: String::new(),
             u_col: String::new(),
             sampling_period: String::new(),
+            initial_input: String::new(),
             code: "P2DU".into(),
             drift: false,
             method: Method::LevenbergMarquardt,
@@ -207,16 +225,9 @@ impl IdentView {
     }
 
     fn load_options(&self) -> Result<LoadOptions, String> {
-        let ts = self.settings.sampling_period.trim();
         let sampling_period =
-            if ts.is_empty() {
-                None
-            } else {
-                let value = ts.replace(',', ".").parse::<f64>();
-                Some(value.map_err(|_| {
-                    format!("the sampling period \"{ts}\" is not a number of seconds")
-                })?)
-            };
+            optional_number(&self.settings.sampling_period, "the sampling period (s)")?;
+        optional_number(&self.settings.initial_input, "the input before the record")?;
         let s = &self.settings;
         Ok(LoadOptions::from_text(
             &s.time_col,
@@ -228,7 +239,8 @@ impl IdentView {
     }
 
     fn accept(&mut self, test: StepTest, source: &str) {
-        let (experiment, step_note) = match Experiment::new(&test, None, None, None) {
+        let initial_input = optional_number(&self.settings.initial_input, "").unwrap_or(None);
+        let (experiment, step_note) = match Experiment::new(&test, None, None, initial_input) {
             Ok(e) => (e, None),
             Err(e) => {
                 let t0 = test.time.first().copied().unwrap_or(0.0);
@@ -591,6 +603,11 @@ impl IdentView {
                         "Sampling period (s)",
                         &mut self.settings.sampling_period,
                         "only for files without time",
+                    ),
+                    (
+                        "Input before the record",
+                        &mut self.settings.initial_input,
+                        "only if the step is at the first sample",
                     ),
                 ] {
                     let l = ui.label(name);

@@ -182,6 +182,8 @@ pub fn show(
         )
         .x_axis_label("t (s)")
         .y_axis_label("y(t)")
+        .y_grid_spacer(super::grid::one_two_five())
+        .y_axis_formatter(super::grid::tick_label)
         .label_formatter(unit_hover)
         .include_y(0.0)
         .include_x(0.0)

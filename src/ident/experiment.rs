@@ -26,8 +26,9 @@ pub enum Offset {
 pub enum ExperimentError {
     #[error(
         "the step could not be found: the file has no input column, or the input never changes \
-         (when the step came at the first sample, give the input before it: --initial-input on \
-         the command line); give the step time t0 and its size Δu"
+         (when the step came at the first sample, give the input before the record: \
+         --initial-input, or the app's field of that name); else give the step time t0 and its \
+         size Δu"
     )]
     NoStep,
     #[error("the step size Δu must be a finite number other than zero, not {0}")]
