@@ -5,27 +5,19 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use degrau::ident::diagnose::{DiagnoseOptions, diagnose};
 use degrau::ident::fit::FitData;
-use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
+use degrau::ident::models::{Param, StepSetup, Structure};
+
+mod common;
 
 fn data() -> FitData {
-    let s = Structure::parse("P2D").unwrap();
-    let mut v = Values::default();
-    v.set(Param::Kp, 1.8);
-    v.set(Param::Tp1, 12.0);
-    v.set(Param::Tp2, 5.0);
-    v.set(Param::Td, 4.0);
-    v.set(Param::Y0, 30.0);
-    let setup = StepSetup { t0: 20.0, du: 4.0 };
-    let times: Vec<f64> = (0..800).map(|k| 0.25 * k as f64).collect();
-    let mut y = Model::new(s, v).simulate(&setup, &times).unwrap();
-    let mut state = 7u64;
-    for v in y.iter_mut() {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        *v += 0.07 * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
-    }
-    FitData { times, y, setup }
+    let truth = [
+        (Param::Kp, 1.8),
+        (Param::Tp1, 12.0),
+        (Param::Tp2, 5.0),
+        (Param::Td, 4.0),
+        (Param::Y0, 30.0),
+    ];
+    common::noisy_800("P2D", &truth, StepSetup { t0: 20.0, du: 4.0 }, 0.07, 7)
 }
 
 fn bench(c: &mut Criterion) {

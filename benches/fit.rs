@@ -6,7 +6,9 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use degrau::ident::fit::{FitData, FitOptions, fit};
 use degrau::ident::guess::auto_guess;
-use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
+use degrau::ident::models::{Param, StepSetup, Structure};
+
+mod common;
 
 fn leci() -> FitData {
     let text = std::fs::read_to_string(concat!(
@@ -31,24 +33,14 @@ fn leci() -> FitData {
 
 /// 800 samples of a P2DU with ±1 % uniform noise (deterministic).
 fn synthetic_800() -> FitData {
-    let s = Structure::parse("P2DU").unwrap();
-    let mut v = Values::default();
-    v.set(Param::Kp, 0.8);
-    v.set(Param::Tw, 4.0);
-    v.set(Param::Zeta, 0.3);
-    v.set(Param::Td, 6.0);
-    v.set(Param::Y0, 20.0);
-    let setup = StepSetup { t0: 10.0, du: 5.0 };
-    let times: Vec<f64> = (0..800).map(|k| 0.25 * k as f64).collect();
-    let mut y = Model::new(s, v).simulate(&setup, &times).unwrap();
-    let mut state = 12345u64;
-    for v in y.iter_mut() {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        *v += 0.04 * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
-    }
-    FitData { times, y, setup }
+    let truth = [
+        (Param::Kp, 0.8),
+        (Param::Tw, 4.0),
+        (Param::Zeta, 0.3),
+        (Param::Td, 6.0),
+        (Param::Y0, 20.0),
+    ];
+    common::noisy_800("P2DU", &truth, StepSetup { t0: 10.0, du: 5.0 }, 0.04, 12345)
 }
 
 fn benches(c: &mut Criterion) {

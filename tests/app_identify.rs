@@ -41,6 +41,21 @@ fn load(h: &mut Harness<'_, DegrauApp>, path: &str) {
     h.run_steps(3);
 }
 
+/// Drags the widget labelled `label` right by `pixels`, in five moves as a hand would.
+fn drag_right(h: &mut Harness<'_, DegrauApp>, label: &str, pixels: f32) {
+    let from = h.get_by_label(label).rect().center();
+    h.hover_at(from);
+    h.run_steps(1);
+    h.drag_at(from);
+    h.run_steps(1);
+    for k in 1..=5 {
+        h.hover_at(from + Vec2::new(pixels * k as f32 / 5.0, 0.0));
+        h.run_steps(1);
+    }
+    h.drop_at(from + Vec2::new(pixels, 0.0));
+    h.run_steps(2);
+}
+
 /// Steps until `done` holds (the fit runs on its own thread), at most 20 s.
 fn wait_for(h: &mut Harness<'_, DegrauApp>, done: impl Fn(&Harness<'_, DegrauApp>) -> bool) {
     let start = Instant::now();
@@ -76,17 +91,7 @@ fn load_drag_the_dead_time_fit_and_read_the_results() {
         .unwrap()
         .guess
         .get(Param::Td);
-    let handle = h.get_by_label("dead time handle").rect().center();
-    h.hover_at(handle);
-    h.run_steps(1);
-    h.drag_at(handle);
-    h.run_steps(1);
-    for k in 1..=5 {
-        h.hover_at(handle + Vec2::new(6.0 * k as f32, 0.0));
-        h.run_steps(1);
-    }
-    h.drop_at(handle + Vec2::new(30.0, 0.0));
-    h.run_steps(2);
+    drag_right(&mut h, "dead time handle", 30.0);
     let td_after = h
         .state()
         .ident
@@ -209,17 +214,7 @@ fn the_step_time_line_drags_t0() {
     h.run_steps(3);
     let t0 = |h: &Harness<'_, DegrauApp>| h.state().ident.loaded.as_ref().unwrap().experiment.t0;
     assert_eq!(t0(&h), 5.0);
-    let line = h.get_by_label("step time line").rect().center();
-    h.hover_at(line);
-    h.run_steps(1);
-    h.drag_at(line);
-    h.run_steps(1);
-    for k in 1..=5 {
-        h.hover_at(line + Vec2::new(8.0 * k as f32, 0.0));
-        h.run_steps(1);
-    }
-    h.drop_at(line + Vec2::new(40.0, 0.0));
-    h.run_steps(2);
+    drag_right(&mut h, "step time line", 40.0);
     let moved = t0(&h);
     // 40 px on a plot of about 40 s across some 800 px: about 2 s later.
     assert!(moved > 5.5 && moved < 9.0, "t0 5 → {moved}");

@@ -7,8 +7,10 @@ use std::ops::RangeInclusive;
 
 use egui_plot::{GridInput, GridMark, uniform_grid_spacer};
 
-/// The smallest of 1, 2, 5 × 10ᵏ at or above `x` (> 0).
-fn nice_at_least(x: f64) -> f64 {
+/// The smallest of 1, 2, 5 × 10ᵏ at or above `x` (> 0), for grid steps here and on the
+/// s-plane; a mantissa a rounding error above 1, 2 or 5 (0.2 = 2.0000000000000004 × 0.1)
+/// stays there.
+pub fn nice_step(x: f64) -> f64 {
     let p = 10f64.powf(x.log10().floor());
     let m = x / p;
     let nice = if m <= 1.0 + 1e-9 {
@@ -28,7 +30,7 @@ fn nice_at_least(x: f64) -> f64 {
 fn steps(input: GridInput) -> [f64; 3] {
     let base = input.base_step_size.abs();
     let fine = if base.is_finite() && base > 0.0 {
-        nice_at_least(base)
+        nice_step(base)
     } else {
         1.0
     };
@@ -58,12 +60,13 @@ mod tests {
 
     #[test]
     fn steps_go_one_two_five() {
-        assert_eq!(nice_at_least(0.7), 1.0);
-        assert_eq!(nice_at_least(1.0), 1.0);
-        assert_eq!(nice_at_least(1.3), 2.0);
-        assert_eq!(nice_at_least(3.0), 5.0);
-        assert_eq!(nice_at_least(6.0), 10.0);
-        assert!((nice_at_least(0.031) - 0.05).abs() < 1e-15);
+        assert_eq!(nice_step(0.7), 1.0);
+        assert_eq!(nice_step(1.0), 1.0);
+        assert_eq!(nice_step(1.3), 2.0);
+        assert_eq!(nice_step(3.0), 5.0);
+        assert_eq!(nice_step(6.0), 10.0);
+        assert!((nice_step(0.031) - 0.05).abs() < 1e-15);
+        assert_eq!(nice_step(0.2), 0.2, "a rounding error above 2 stays at 2");
         let at = |base: f64| {
             steps(GridInput {
                 bounds: (-5.0, 5.0),

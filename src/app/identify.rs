@@ -171,10 +171,12 @@ impl IdentView {
                 self.accept(test, path);
             }
             Err(e) => {
-                self.message = Some((
-                    true,
-                    format!("Not loaded ({path}): {e}. What was loaded before is kept."),
-                ))
+                let kept = if self.loaded.is_some() {
+                    " What was loaded before is kept."
+                } else {
+                    ""
+                };
+                self.message = Some((true, format!("Not loaded ({path}): {e}.{kept}")))
             }
         }
     }

@@ -448,7 +448,7 @@ impl DegrauApp {
             .saved
             .splane
             .view
-            .map_or(0.1, |v| splane::nice_step(70.0 / v.pixels_per_unit) / 10.0);
+            .map_or(0.1, |v| grid::nice_step(70.0 / v.pixels_per_unit) / 10.0);
         let (dx, dy) = ui.input(|i| {
             let mut d = (0.0, 0.0);
             if i.key_pressed(Key::ArrowLeft) {

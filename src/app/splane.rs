@@ -82,25 +82,8 @@ impl Transform {
 
     /// A 1-2-5 grid step giving about [`GRID_PIXELS`] between lines.
     pub fn grid_step(&self) -> f64 {
-        nice_step(GRID_PIXELS / self.view.pixels_per_unit)
+        super::grid::nice_step(GRID_PIXELS / self.view.pixels_per_unit)
     }
-}
-
-/// The 1, 2 or 5 × 10ⁿ nearest above `raw`.
-pub fn nice_step(raw: f64) -> f64 {
-    let exponent = raw.log10().floor();
-    let base = 10f64.powf(exponent);
-    let mantissa = raw / base;
-    let nice = if mantissa <= 1.0 {
-        1.0
-    } else if mantissa <= 2.0 {
-        2.0
-    } else if mantissa <= 5.0 {
-        5.0
-    } else {
-        10.0
-    };
-    nice * base
 }
 
 /// A view showing every root and the origin with a margin.
@@ -537,14 +520,6 @@ pub fn readout(re: f64, im: f64, name: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn nice_steps() {
-        assert_eq!(nice_step(0.7), 1.0);
-        assert_eq!(nice_step(1.3), 2.0);
-        assert_eq!(nice_step(3.0), 5.0);
-        assert!((nice_step(0.031) - 0.05).abs() < 1e-15);
-    }
 
     #[test]
     fn transform_round_trip() {

@@ -2,6 +2,8 @@
 //! (step instant and size, operating point, window, filter), turned into the data a fit
 //! sees. The command line and the app both go through here, so they fit the same thing.
 
+use std::borrow::Cow;
+
 use serde::{Deserialize, Serialize};
 
 use super::data::StepTest;
@@ -33,8 +35,9 @@ pub enum ExperimentError {
     NoStep,
     #[error("the step size Δu must be a finite number other than zero, not {0}")]
     BadStep(f64),
-    #[error("{0}")]
-    Window(String),
+    /// A window or filter that cannot be applied.
+    #[error(transparent)]
+    Prepare(#[from] prepare::PrepareError),
     #[error(transparent)]
     Model(#[from] ModelError),
     #[error(transparent)]
@@ -90,19 +93,19 @@ impl Experiment {
             return Err(ExperimentError::BadStep(self.du));
         }
         let kept = match self.window {
-            Some((start, end)) => prepare::apply_window(test, prepare::Window::Time { start, end })
-                .map_err(|e| ExperimentError::Window(e.to_string()))?,
-            None => test.clone(),
+            Some((start, end)) => Cow::Owned(prepare::apply_window(
+                test,
+                prepare::Window::Time { start, end },
+            )?),
+            None => Cow::Borrowed(test),
         };
-        let mut y = kept.output;
+        let mut y = kept.output.clone();
         if let Some(fc) = self.filter_hz {
             let ts = prepare::sampling_period(&kept.time).unwrap_or(1.0);
-            let filter = prepare::Ewma::try_new(fc, ts)
-                .map_err(|e| ExperimentError::Window(e.to_string()))?;
-            y = filter.apply(&y);
+            y = prepare::Ewma::try_new(fc, ts)?.apply(&y);
         }
         Ok(FitData {
-            times: kept.time,
+            times: kept.time.clone(),
             y,
             setup: StepSetup {
                 t0: self.t0,

@@ -921,8 +921,8 @@ fn between_sample_swing(model: &Model, data: &FitData) -> f64 {
     worst
 }
 
-/// A small reproducible generator for the spread-out starts.
-struct Lcg(u64);
+/// A small reproducible generator for the spread-out starts (and the tests' noise).
+pub(crate) struct Lcg(pub(crate) u64);
 
 impl Lcg {
     fn next(&mut self) -> u64 {
@@ -937,7 +937,7 @@ impl Lcg {
         self.next() as f64 / (1u64 << 53) as f64
     }
     /// Uniform in [−1, 1).
-    fn symmetric(&mut self) -> f64 {
+    pub(crate) fn symmetric(&mut self) -> f64 {
         2.0 * self.unit() - 1.0
     }
 }

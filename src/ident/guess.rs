@@ -178,7 +178,7 @@ pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
     let mut v = Values::default();
     v.set(Param::Y0, f.y0);
     v.set(Param::Drift, 0.0);
-    let positive = |x: f64| x.max(2.0 * ts).min(10.0 * duration);
+    let positive = |x: f64| lag_in_range(x, ts, duration);
     // Total lag (sum of time constants plus dead time) from the 63.2 % time.
     let t63 = f.t63.unwrap_or(duration / 3.0);
     let two_point = f.t28.map(|t28| 1.5 * (t63 - t28)).filter(|tau| *tau > 0.0);
@@ -249,7 +249,7 @@ fn set_zero(v: &mut Values, structure: Structure, f: &CurveFeatures, ts: f64, du
     } else {
         v.get(Param::Tp1)
     };
-    let positive = |x: f64| x.max(2.0 * ts).min(10.0 * duration);
+    let positive = |x: f64| lag_in_range(x, ts, duration);
     let tz = match (f.t_dip, f.t_peak, f.overshoot_decay) {
         (Some(_), _, _) => -0.5 * tp,
         (None, Some(t_peak), Some(decay)) if !structure.underdamped => {
@@ -266,6 +266,12 @@ fn set_zero(v: &mut Values, structure: Structure, f: &CurveFeatures, ts: f64, du
         _ => 0.3 * tp,
     };
     v.set(Param::Tz, tz);
+}
+
+/// A guessed lag kept where the record can show it: two sampling periods to ten record
+/// lengths.
+fn lag_in_range(lag: f64, ts: f64, duration: f64) -> f64 {
+    lag.max(2.0 * ts).min(10.0 * duration)
 }
 
 /// Tw = 1/ωn kept where the sampling can show it: an oscillation is seen up to ωd = π/Ts, so
@@ -370,19 +376,6 @@ mod tests {
         );
     }
 
-    /// A deterministic stand-in for noise: uniform in ±amplitude (a small LCG).
-    fn jitter(n: usize, amplitude: f64) -> Vec<f64> {
-        let mut state: u64 = 0x2545_F491_4F6C_DD1D;
-        (0..n)
-            .map(|_| {
-                state = state
-                    .wrapping_mul(6_364_136_223_846_793_005)
-                    .wrapping_add(1_442_695_040_888_963_407);
-                amplitude * (2.0 * ((state >> 11) as f64 / (1u64 << 53) as f64) - 1.0)
-            })
-            .collect()
-    }
-
     fn noisy(structure: &str, truth: &[(Param, f64)], noise: f64) -> FitData {
         let s = Structure::parse(structure).unwrap();
         let mut v = Values::default();
@@ -392,11 +385,8 @@ mod tests {
         let setup = StepSetup { t0: 2.0, du: 1.0 };
         let times: Vec<f64> = (0..600).map(|k| 0.1 * k as f64).collect();
         let y = Model::new(s, v).simulate(&setup, &times).unwrap();
-        let y = y
-            .iter()
-            .zip(jitter(600, noise))
-            .map(|(y, e)| y + e)
-            .collect();
+        let mut rng = crate::ident::fit::Lcg(0x2545_F491_4F6C_DD1D);
+        let y = y.iter().map(|y| y + noise * rng.symmetric()).collect();
         FitData { times, y, setup }
     }
 
