@@ -4,6 +4,7 @@
 //!
 //! Pure math: nothing here knows about the GUI or the command line.
 
+pub mod divided;
 pub mod expr;
 pub mod metrics;
 pub mod parse;
