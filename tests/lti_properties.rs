@@ -592,7 +592,8 @@ proptest! {
         let options = StepInfoOptions::default();
         let pruned = StepInfo::of_response(&r, &options);
         let y_final = r.final_value().unwrap();
-        let full = StepInfo::from_pieces(&LtiPieces::new(&r, None), 0.0, y_final, &options);
+        let full = StepInfo::from_pieces(&LtiPieces::new(&r, None), 0.0, y_final, &options)
+            .delayed(r.delay());
         let eps_y = 1e-11 * term_scale(&r, full.settling_time.unwrap_or(1.0));
         let value_tol = |a: f64| eps_y + 1e-12 * a.abs();
         // A time found where y or y' crosses a level moves by the rounding over the slope.
