@@ -419,3 +419,49 @@ proptest! {
         prop_assert!(refused == 0, "{} of {} refused: {:?}", refused, cases.len(), cases);
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// Large and tiny arguments (library level; the CLI ones are in cli_step_large.rs)
+// ---------------------------------------------------------------------------------------
+
+#[test]
+fn a_dead_time_of_1e16_leaves_every_duration_exact() {
+    let poles = [
+        C64::new(-1.0, 2.0),
+        C64::new(-1.0, -2.0),
+        C64::new(-5.0, 0.0),
+    ];
+    let g = TransferFunction::from_zpk(&[], &poles, 0.5).unwrap();
+    let options = StepInfoOptions::default();
+    let plain = StepInfo::of_response(&StepResponse::new(&g, 1.0).unwrap(), &options);
+    for delay in [1e16, 1e17] {
+        let r = StepResponse::new(&g.clone().with_delay(delay).unwrap(), 1.0).unwrap();
+        let info = StepInfo::of_response(&r, &options);
+        assert_eq!(info.rise_time, plain.rise_time, "delay {delay}");
+        assert_eq!(info.overshoot, plain.overshoot);
+        assert_eq!(info.peak, plain.peak);
+        assert_eq!(info.settling_time, plain.settling_time.map(|t| t + delay));
+    }
+    assert!((plain.rise_time.unwrap() - 0.7732).abs() < 1e-4);
+}
+
+#[test]
+fn subnormal_inputs_are_refused_by_name() {
+    let tiny = C64::new(1e-320, 0.0);
+    let err = TransferFunction::from_zpk(&[tiny], &[C64::new(-1.0, 0.0)], 1.0).unwrap_err();
+    assert!(err.to_string().contains("zero 1 is 1e-320"), "{err}");
+    let err = TransferFunction::from_zpk(&[], &[C64::new(-1.0, 0.0)], 1e-320).unwrap_err();
+    assert!(err.to_string().contains("the gain k is 1e-320"), "{err}");
+    let err = TransferFunction::from_coeffs(&[1.0], &[1.0, 1e-320]).unwrap_err();
+    assert!(
+        err.to_string().contains("coefficient 2 of the denominator"),
+        "{err}"
+    );
+    let g = TransferFunction::from_zpk(&[], &[C64::new(-1.0, 0.0)], 1.0).unwrap();
+    assert!(StepResponse::new(&g, 1e-320).is_err());
+    // A final value below the normal range, from normal inputs: refused, not shown as 0.
+    let g = TransferFunction::from_zpk(&[C64::new(-1e-200, 0.0)], &[C64::new(-1.0, 0.0)], 1e-150)
+        .unwrap();
+    let err = StepResponse::new(&g, 1.0).unwrap_err();
+    assert!(err.to_string().contains("the final value"), "{err}");
+}
