@@ -5,7 +5,9 @@
 //!
 //! or, in amplitude–phase form, `1/25 − (1/20)e^{−t} sin(2t + 36.87°) − e^{−5t}/100`.
 //! Repeated poles give t·e^{pt} terms; a dead time θ writes (t − θ) for t and says that
-//! y = 0 before it.
+//! y = 0 before it. A cluster of distinct but nearly equal poles is written as a repeated
+//! pole at its centre; when that form differs visibly from the exact y(t), the text says
+//! "≈", names the poles and states the largest difference.
 
 use super::response::StepResponse;
 
@@ -22,6 +24,9 @@ pub enum OscillationForm {
 const MAX_DENOMINATOR: i64 = 1000;
 /// A fraction must match the number to this relative accuracy.
 const FRACTION_TOLERANCE: f64 = 1e-10;
+/// A repeated-pole form this close to the exact y (relative to the size of its terms) is
+/// written with "=": the difference is far below the six digits printed.
+const INVISIBLE_ERROR: f64 = 1e-10;
 /// Terms smaller than this fraction of the largest are dropped as rounding noise.
 const NEGLIGIBLE_TERM: f64 = 1e-13;
 
@@ -102,11 +107,66 @@ pub fn expression(response: &StepResponse, form: OscillationForm) -> String {
     if body.is_empty() {
         body.push('0');
     }
+    let (relation, note) = approximation_note(response);
     if delay > 0.0 {
         let d = format_number(delay);
-        format!("y(t) = {body} for t ≥ {d} (y = 0 before {d})")
+        format!("y(t) {relation} {body} for t ≥ {d} (y = 0 before {d}){note}")
     } else {
-        format!("y(t) = {body}")
+        format!("y(t) {relation} {body}{note}")
+    }
+}
+
+/// "=" when the text is the exact form (to far below the digits it prints); "≈" and a note
+/// naming the clusters of distinct poles written as repeated poles at their centres, and
+/// how far that form is from the exact y(t), otherwise.
+fn approximation_note(response: &StepResponse) -> (&'static str, String) {
+    let error = response.repeated_form_error();
+    if error <= INVISIBLE_ERROR * response.magnitude_scale() {
+        return ("=", String::new());
+    }
+    let clusters: Vec<String> = response
+        .clusters()
+        .iter()
+        .filter(|c| !c.is_repeated())
+        .map(|c| {
+            let poles: Vec<String> = c.poles().iter().map(|&p| format_root(p)).collect();
+            format!(
+                "the poles {} as a {}-fold pole at {}",
+                poles.join(", "),
+                c.multiplicity,
+                format_root(c.center)
+            )
+        })
+        .collect();
+    let size = if error.is_finite() {
+        format!(
+            "differs from the exact y(t) by up to {}",
+            format_number(error)
+        )
+    } else {
+        "drifts away from the exact y(t) as t grows".to_string()
+    };
+    (
+        "≈",
+        format!(
+            " [written with {}; this form {size}, while the curve and the metrics use the \
+             exact response]",
+            clusters.join(" and ")
+        ),
+    )
+}
+
+/// `-1.0002`, `-0.5+3j` with [`format_number`]'s digits.
+fn format_root(p: super::C64) -> String {
+    if p.im == 0.0 {
+        format_number(p.re)
+    } else {
+        let sign = if p.im < 0.0 { '-' } else { '+' };
+        format!(
+            "{}{sign}{}j",
+            format_number(p.re),
+            format_number(p.im.abs())
+        )
     }
 }
 

@@ -116,6 +116,11 @@ pub trait MonotonePieces {
 impl StepInfo {
     /// Metrics of the exact step response of a system.
     pub fn of_response(response: &StepResponse, options: &StepInfoOptions) -> Self {
+        Self::of_rational(response, options).delayed(response.delay())
+    }
+
+    /// The metrics with every instant in τ = t − θ, from the end of the dead time.
+    pub(crate) fn of_rational(response: &StepResponse, options: &StepInfoOptions) -> Self {
         match response.behaviour() {
             Behaviour::Settles => {
                 let y_final = response.final_value().unwrap_or(0.0);
@@ -123,17 +128,32 @@ impl StepInfo {
                 Self::from_pieces(&pieces, 0.0, y_final, options)
             }
             Behaviour::Oscillating => {
-                let horizon = response.auto_horizon() - response.delay();
-                let pieces = LtiPieces::new(response, Some(horizon));
+                let pieces = LtiPieces::new(response, Some(response.rational_horizon()));
                 let mut info = Self::not_settling(0.0, Behaviour::Oscillating);
-                if let Some((t, y)) = largest_deviation(pieces.breakpoints(), 0.0) {
+                if let Some((tau, y)) = largest_deviation(pieces.breakpoints(), 0.0) {
                     info.peak = Some(y.abs());
-                    info.peak_time = Some(t);
+                    info.peak_time = Some(tau);
                 }
                 info
             }
             other => Self::not_settling(0.0, other),
         }
+    }
+
+    /// The same metrics for the response delayed by θ seconds: every instant moves by θ,
+    /// the durations (rise time) stay. Metrics are found in τ = t − θ and only shifted
+    /// here, so a dead time of 1e16 s leaves the rise time exact.
+    pub fn delayed(mut self, delay: f64) -> Self {
+        for t in [
+            &mut self.rise_start,
+            &mut self.rise_end,
+            &mut self.settling_time,
+            &mut self.peak_time,
+            &mut self.undershoot_time,
+        ] {
+            *t = t.map(|t| t + delay);
+        }
+        self
     }
 
     /// Every metric absent: the response has no final value.
@@ -234,7 +254,8 @@ impl StepInfo {
             (min_i, undershoot)
         };
         if peak_e > 1.0 + NEGLIGIBLE {
-            info.peak = Some(peak_e * span);
+            // From y itself, not peak_e·span: e overflows when |Δ| is tiny next to y.
+            info.peak = Some((points[peak_i].1 - y_init).abs());
             info.peak_time = Some(points[peak_i].0);
         } else {
             info.peak = Some(span);
@@ -280,10 +301,12 @@ fn largest_deviation(points: &[(f64, f64)], y_init: f64) -> Option<(f64, f64)> {
         .find(|d| d.1.abs() >= largest * (1.0 - 1e-12))
 }
 
-/// Monotone pieces of an exact LTI step response over [0, horizon].
+/// Monotone pieces of an exact LTI step response over [0, horizon], in τ = t − θ (time
+/// from the end of the dead time): [`StepInfo::delayed`] turns metrics found on them into
+/// times from the step.
 pub struct LtiPieces<'a> {
     response: &'a StepResponse,
-    /// Breakpoints in absolute time (delay included).
+    /// Breakpoints (τ, y).
     points: Vec<(f64, f64)>,
 }
 
@@ -348,12 +371,11 @@ impl<'a> LtiPieces<'a> {
         } else {
             response.fastest_rate().map_or(1.0, |r| 10.0 / r)
         };
-        let delay = response.delay();
         let y0 = response.eval_rational(Derivative::Value, 0.0);
-        let mut points = vec![(delay, 0.0), (delay, y0)];
+        let mut points = vec![(0.0, 0.0), (0.0, y0)];
         let (critical, end) = critical_points(response, end, tail, pruning, y0);
-        points.extend(critical.into_iter().map(|(tau, y)| (delay + tau, y)));
-        points.push((delay + end, response.eval_rational(Derivative::Value, end)));
+        points.extend(critical);
+        points.push((end, response.eval_rational(Derivative::Value, end)));
         Self { response, points }
     }
 }
@@ -386,12 +408,11 @@ impl MonotonePieces for LtiPieces<'_> {
         if a.0 == b.0 {
             return a.0; // inside the jump at the step
         }
-        let delay = self.response.delay();
         let f = |tau: f64| {
             let (y, slope) = self.response.eval_rational_pair(Derivative::Value, tau);
             (y - level, slope)
         };
-        delay + safe_newton(f, a.0 - delay, b.0 - delay, a.1 - level, b.1 - level)
+        safe_newton(f, a.0, b.0, a.1 - level, b.1 - level)
     }
 }
 

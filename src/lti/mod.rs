@@ -4,6 +4,7 @@
 //!
 //! Pure math: nothing here knows about the GUI or the command line.
 
+pub mod divided;
 pub mod expr;
 pub mod metrics;
 pub mod parse;
@@ -65,6 +66,17 @@ pub enum LtiError {
          cannot be computed reliably (rescale time, or drop roots far faster than the rest)"
     )]
     OutOfRange,
+    #[error(
+        "{what} is {value:e}, below the smallest normal double-precision number (2.2e-308): \
+         it carries too few significant digits to compute with; type 0 if you mean 0, or \
+         rescale the units"
+    )]
+    Subnormal { what: String, value: f64 },
+    #[error(
+        "{what} is {value:e} (too small for double precision: below 2.2e-308), so the \
+         response cannot be computed reliably; rescale the gain or the units"
+    )]
+    Underflow { what: String, value: f64 },
     #[error("finding the roots of a degree-{degree} polynomial did not converge")]
     RootsDidNotConverge { degree: usize },
     #[error("the system has order {0}; Degrau handles orders up to {max}", max = tf::MAX_ORDER)]

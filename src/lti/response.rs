@@ -1,28 +1,43 @@
 //! The exact step response y(t) of A·G(s)/s, evaluated from its closed form.
 //!
 //! Y(s) = A·k·Π(s − zᵢ) / (s·Π(s − pⱼ)) is split into partial fractions over *clusters* of
-//! poles (the step's own pole at the origin included). Each cluster of multiplicity m and
-//! centre c contributes e^{ct}·Σ_{j<m} q_j·t^j, with q_j = a_{m−1−j}/j! and a_n the Taylor
-//! coefficients at c of everything else in Y(s); those are computed from the roots in
-//! product form, so no ill-conditioned polynomial coefficients are involved. This is the
-//! residue formula for distinct poles and the classical t^j·e^{pt} formula for repeated ones.
+//! poles (the step's own pole at the origin included). The contribution of a cluster with
+//! nodes x₁…x_m (its poles, distinct, repeated or both) is the divided difference
+//! (R(s)·e^{sτ})[x₁…x_m], R = everything else in Y(s); by Leibniz's rule it is
+//! Σ_k R[x₁…x_k]·e^{sτ}[x_k…x_m]. Both factors are computed stably through the Opitz
+//! matrix of the nodes (see [`super::divided`]): no residue 1/δ^{m−1} of two poles δ apart
+//! is ever formed, so nearly equal poles cost no accuracy. For a single pole this is the
+//! residue formula; for an exactly repeated pole of multiplicity m at c it is the classical
+//! e^{cτ}·Σ_{j<m} q_j·τ^j with q_j = R[c…c]_{m−j}/j!, kept in that polynomial form.
 //!
-//! Poles closer than [`CLUSTER_RELATIVE`] (relative) are merged at their centroid: the
-//! error made is O(δ²t²) (the divided difference about the mean), about 1e-12 at the
-//! merging threshold, while keeping them apart would cost eps/δ by cancellation. Exactly
-//! repeated poles (double pole at −10, integrator × step) are exact.
+//! Which poles form a cluster: those within [`MERGE_RELATIVE`] of each other (single
+//! linkage, relative to their modulus), then, while the partial fractions of some cluster
+//! would still amplify rounding by more than [`AMPLIFICATION_LIMIT`] (many poles a few
+//! percent apart), the closest clusters are merged too, up to [`MAX_MERGE_GAP`].
 //!
 //! No ODE is integrated: every sample is the closed form at that instant. Uniform grids use
-//! the recurrence e^{c(t+h)} = e^{ct}·e^{ch}, re-anchored every [`REANCHOR`] steps.
+//! the recurrence e^{c(t+h)} = e^{ct}·e^{ch} (and exp((τ+h)N) = exp(τN)·exp(hN) for a
+//! cluster), re-anchored every [`REANCHOR`] steps.
 
 use serde::{Deserialize, Serialize};
 
 use super::LtiError;
+use super::divided;
 use super::poly::C64;
 use super::tf::TransferFunction;
 
-/// Poles this close (relative to their modulus) are treated as one repeated pole.
-pub const CLUSTER_RELATIVE: f64 = 1e-6;
+/// Poles this close (relative to the larger modulus) always form one cluster.
+pub const MERGE_RELATIVE: f64 = 1e-2;
+/// Clusters further apart than this (relative) are never merged: their partial fractions
+/// are well conditioned, and a wider cluster only costs squarings.
+pub const MAX_MERGE_GAP: f64 = 0.5;
+/// The largest Π|p|/|c − p| (over the poles p outside a cluster with centre c) accepted
+/// before clusters are merged further: how much larger than the final value a cluster's
+/// terms may be, so how much rounding the sum of the partial fractions may amplify.
+pub const AMPLIFICATION_LIMIT: f64 = 1e4;
+/// Poles on the imaginary axis this close are one repeated pair (classification only: the
+/// roots of (s² + 1)² come out as j(1 ± 1e-9)).
+pub const REPEATED_AXIS_RELATIVE: f64 = 1e-6;
 /// Steps of the exponential recurrence between exact re-evaluations.
 const REANCHOR: usize = 64;
 
@@ -52,21 +67,46 @@ impl Behaviour {
     }
 }
 
-/// One group of (nearly) equal poles and its contribution e^{ct}·Σ q_j t^j.
+/// One group of equal or nearly equal poles and its contribution to y.
 #[derive(Debug, Clone)]
 pub struct Cluster {
-    /// Pole location (centroid of the merged poles), rad/s. Only Im ≥ 0 is kept.
+    /// Centre of the cluster (mean of its poles), rad/s. Only Im ≥ 0 is kept.
     pub center: C64,
     /// How many poles of Y(s) the cluster holds (the step's pole counts).
     pub multiplicity: usize,
     /// 1 for a real cluster, 2 for a complex one standing for itself and its mirror.
     pub weight: f64,
-    /// q_j of the contribution, lowest power of t first.
+    /// q_j of e^{cτ}·Σ q_j τ^j, lowest power of τ first: the exact contribution for an
+    /// exactly repeated pole; for a cluster of distinct poles, that of the repeated pole
+    /// at its centre it approaches (q_j = a_{m−1−j}/j!, a_n the Taylor coefficients of R
+    /// at c), an approximation (see [`Cluster::approximation`]).
     pub coeffs: Vec<C64>,
+    /// b_j with |contribution(τ)| ≤ weight·e^{στ}·Σ b_j τ^j, σ = [`Cluster::decay_rate`]:
+    /// |q_j| for a repeated pole, |R[x₁…x_{m−j}]|/j! for a spread cluster.
+    bound: Vec<f64>,
     /// Coefficients of the first derivative's polynomial factor: c·P + P'.
     d1: Vec<C64>,
     /// Coefficients of the second derivative's polynomial factor.
     d2: Vec<C64>,
+    /// The largest |Im| of its poles (rad/s).
+    frequency: f64,
+    /// The exact form of a cluster of distinct poles.
+    spread: Option<Spread>,
+}
+
+/// A cluster whose poles are not all equal: its divided-difference form.
+#[derive(Debug, Clone)]
+struct Spread {
+    /// The poles (both halves for a self-conjugate cluster), rad/s.
+    nodes: Vec<C64>,
+    /// x_i − c.
+    offsets: Vec<C64>,
+    /// max |x_i − c| (rad/s).
+    radius: f64,
+    /// max Re(x_i − c) (rad/s): |e^{sτ}[x_k…x_m]| ≤ e^{(Re c + growth)τ}·τ^{m−k}/(m−k)!.
+    growth: f64,
+    /// R[x₁…x_k], (R·s)[x₁…x_k], (R·s²)[x₁…x_k] for y, y', y''.
+    differences: [Vec<C64>; 3],
 }
 
 /// Which derivative of y to evaluate.
@@ -75,6 +115,24 @@ pub enum Derivative {
     Value,
     First,
     Second,
+}
+
+impl Derivative {
+    fn index(self) -> usize {
+        match self {
+            Derivative::Value => 0,
+            Derivative::First => 1,
+            Derivative::Second => 2,
+        }
+    }
+}
+
+/// What a cluster's y, y' and y'' at one τ are built from.
+struct Basis {
+    /// e^{cτ}.
+    exp_ct: C64,
+    /// e^{(s − c)τ}[x_k…x_m], k = 1…m, for a spread cluster (empty otherwise).
+    row: Vec<C64>,
 }
 
 impl Cluster {
@@ -86,25 +144,69 @@ impl Cluster {
         }
     }
 
-    /// weight·Re(e^{cτ}·P(τ)) given e^{cτ} already computed.
-    fn contribution(&self, which: Derivative, exp_ct: C64, tau: f64) -> f64 {
-        let p = horner(self.poly(which), tau);
-        self.weight * (exp_ct * p).re
+    /// The poles of the cluster (for a complex one, those above the axis), rad/s.
+    pub fn poles(&self) -> Vec<C64> {
+        match &self.spread {
+            Some(s) => s.nodes.clone(),
+            None => vec![self.center; self.multiplicity],
+        }
+    }
+
+    /// True when the poles are exactly equal, so [`Cluster::coeffs`] is the exact form.
+    pub fn is_repeated(&self) -> bool {
+        self.spread.is_none()
+    }
+
+    /// The largest distance of a pole from the centre (rad/s); 0 for a repeated pole.
+    pub fn radius(&self) -> f64 {
+        self.spread.as_ref().map_or(0.0, |s| s.radius)
+    }
+
+    /// The exponential rate that bounds the cluster's decay (1/s): the largest real part
+    /// among its poles.
+    pub fn decay_rate(&self) -> f64 {
+        self.center.re + self.spread.as_ref().map_or(0.0, |s| s.growth)
+    }
+
+    /// The largest oscillation frequency among its poles (rad/s).
+    pub fn frequency(&self) -> f64 {
+        self.frequency
+    }
+
+    fn basis(&self, tau: f64) -> Basis {
+        let exp_ct = (self.center * tau).exp();
+        let row = match &self.spread {
+            Some(s) if exp_ct != C64::new(0.0, 0.0) => {
+                divided::exp_last_row(&s.offsets, s.radius, tau)
+            }
+            _ => Vec::new(),
+        };
+        Basis { exp_ct, row }
+    }
+
+    /// weight·Re(contribution) at τ from its basis there.
+    fn contribution(&self, which: Derivative, basis: &Basis, tau: f64) -> f64 {
+        let value = match &self.spread {
+            None => horner(self.poly(which), tau),
+            Some(_) if basis.row.is_empty() => return 0.0,
+            Some(s) => dot(&s.differences[which.index()], &basis.row),
+        };
+        self.weight * (basis.exp_ct * value).re
     }
 
     /// An upper bound of |contribution| at τ ≥ 0.
     pub fn envelope(&self, tau: f64) -> f64 {
-        let poly: f64 = self
-            .coeffs
-            .iter()
-            .rev()
-            .fold(0.0, |acc, q| acc * tau + q.norm());
-        self.weight * poly * (self.center.re * tau).exp()
+        let poly: f64 = self.bound.iter().rev().fold(0.0, |acc, b| acc * tau + b);
+        self.weight * poly * (self.decay_rate() * tau).exp()
     }
 
     fn is_step_constant(&self) -> bool {
         self.center == C64::new(0.0, 0.0) && self.multiplicity == 1
     }
+}
+
+fn dot(a: &[C64], b: &[C64]) -> C64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 fn horner(coeffs: &[C64], tau: f64) -> C64 {
@@ -140,10 +242,16 @@ impl StepResponse {
         }
         let mut poles: Vec<C64> = tf.poles().to_vec();
         poles.push(C64::new(0.0, 0.0));
-        let groups = cluster(&poles);
-        let clusters = partial_fractions(&groups, tf.zeros(), amplitude * tf.gain());
+        let clusters = partial_fractions(&poles, tf.zeros(), amplitude * tf.gain());
+        if amplitude.is_subnormal() {
+            return Err(LtiError::Subnormal {
+                what: "the step amplitude".into(),
+                value: amplitude,
+            });
+        }
         let behaviour = classify(tf);
         let final_value = (behaviour == Behaviour::Settles).then(|| amplitude * tf.dc_gain());
+        check_representable(final_value, tf, amplitude)?;
         if let Some(expected) = final_value {
             check_final_value(&clusters, expected)?;
         }
@@ -223,7 +331,7 @@ impl StepResponse {
     pub(crate) fn eval_rational(&self, which: Derivative, tau: f64) -> f64 {
         self.clusters
             .iter()
-            .map(|c| c.contribution(which, (c.center * tau).exp(), tau))
+            .map(|c| c.contribution(which, &c.basis(tau), tau))
             .sum()
     }
 
@@ -235,10 +343,10 @@ impl StepResponse {
             _ => Derivative::Second,
         };
         self.clusters.iter().fold((0.0, 0.0), |(f, df), c| {
-            let e = (c.center * tau).exp();
+            let basis = c.basis(tau);
             (
-                f + c.contribution(which, e, tau),
-                df + c.contribution(next, e, tau),
+                f + c.contribution(which, &basis, tau),
+                df + c.contribution(next, &basis, tau),
             )
         })
     }
@@ -279,17 +387,9 @@ impl StepResponse {
     ) {
         out.iter_mut().for_each(|v| *v = 0.0);
         for c in &self.clusters {
-            let poly = c.poly(which);
-            let step = (c.center * h).exp();
-            let mut e = C64::new(0.0, 0.0);
-            for (i, v) in out.iter_mut().enumerate() {
-                let tau = tau0 + h * i as f64;
-                e = if i % REANCHOR == 0 {
-                    (c.center * tau).exp()
-                } else {
-                    e * step
-                };
-                *v += c.weight * (e * horner(poly, tau)).re;
+            match &c.spread {
+                None => uniform_repeated(c, c.poly(which), tau0, h, out),
+                Some(s) => uniform_spread(c, s, &s.differences[which.index()], tau0, h, out),
             }
         }
     }
@@ -303,23 +403,23 @@ impl StepResponse {
             .iter()
             .filter(|c| !c.is_step_constant() && keep(c))
             .collect();
-        let terms: usize = kept.iter().map(|c| c.coeffs.len()).sum();
+        let terms: usize = kept.iter().map(|c| c.bound.len()).sum();
         let share = eps / terms.max(1) as f64;
         kept.iter()
             .flat_map(|c| {
-                c.coeffs
+                c.bound
                     .iter()
                     .enumerate()
-                    .map(move |(j, q)| term_decay_time(c.weight * q.norm(), j, c.center.re, share))
+                    .map(move |(j, &b)| term_decay_time(c.weight * b, j, c.decay_rate(), share))
             })
             .fold(0.0, f64::max)
     }
 
     /// A scale of the response's magnitude: |final value| plus the sizes of the transients.
-    pub(crate) fn magnitude_scale(&self) -> f64 {
+    pub fn magnitude_scale(&self) -> f64 {
         self.clusters
             .iter()
-            .map(|c| c.weight * c.coeffs.iter().map(|q| q.norm()).sum::<f64>())
+            .map(|c| c.weight * c.bound.iter().sum::<f64>())
             .sum()
     }
 
@@ -327,7 +427,7 @@ impl StepResponse {
     pub(crate) fn fastest_rate(&self) -> Option<f64> {
         self.clusters
             .iter()
-            .map(|c| c.center.norm())
+            .map(|c| c.center.norm() + c.radius())
             .filter(|&r| r > 0.0)
             .reduce(f64::max)
     }
@@ -337,8 +437,34 @@ impl StepResponse {
         self.clusters
             .iter()
             .filter(|c| keep(c))
-            .map(|c| c.center.im)
+            .map(|c| c.frequency())
             .fold(0.0, f64::max)
+    }
+
+    /// How far the repeated-pole form of the clusters of distinct poles (what
+    /// [`Cluster::coeffs`] write, the closed-form text) is from the exact y: the largest
+    /// difference on a 4000-point grid over each such cluster's transient, 0 when every
+    /// cluster is an exactly repeated pole, infinite when such a cluster does not decay.
+    pub fn repeated_form_error(&self) -> f64 {
+        let scale = self.magnitude_scale().max(f64::MIN_POSITIVE);
+        self.clusters
+            .iter()
+            .filter(|c| !c.is_repeated())
+            .map(|c| {
+                if c.decay_rate() >= 0.0 {
+                    return f64::INFINITY;
+                }
+                let end = self.envelope_time(1e-12 * scale, |k| std::ptr::eq(k, c));
+                (0..=4000)
+                    .map(|i| {
+                        let tau = end * i as f64 / 4000.0;
+                        let exact = c.contribution(Derivative::Value, &c.basis(tau), tau);
+                        let form = c.weight * ((c.center * tau).exp() * horner(&c.coeffs, tau)).re;
+                        (exact - form).abs()
+                    })
+                    .fold(0.0, f64::max)
+            })
+            .sum()
     }
 
     /// A time window (seconds from the step, delay included) that shows the whole
@@ -346,21 +472,26 @@ impl StepResponse {
     /// not settle, the stable part's transient and a few periods of the sustained
     /// oscillation or e-foldings of the growth.
     pub fn auto_horizon(&self) -> f64 {
+        self.delay + self.rational_horizon()
+    }
+
+    /// [`StepResponse::auto_horizon`] counted from the end of the dead time (seconds).
+    pub(crate) fn rational_horizon(&self) -> f64 {
         let scale = self.magnitude_scale().max(f64::MIN_POSITIVE);
-        let stable = |c: &Cluster| c.center.re < 0.0;
+        let stable = |c: &Cluster| c.decay_rate() < 0.0;
         let transient = 1.5 * self.envelope_time(0.02 * scale, stable);
         let rational = match self.behaviour {
             Behaviour::Settles => {
-                let info = super::metrics::StepInfo::of_response(self, &Default::default());
-                let settle = info.settling_time.map(|t| t - self.delay).unwrap_or(0.0);
-                let peak = info.peak_time.map(|t| t - self.delay).unwrap_or(0.0);
+                let info = super::metrics::StepInfo::of_rational(self, &Default::default());
+                let settle = info.settling_time.unwrap_or(0.0);
+                let peak = info.peak_time.unwrap_or(0.0);
                 (1.5 * settle).max(1.2 * peak).max(transient)
             }
             Behaviour::Unstable => {
                 let growth = self
                     .clusters
                     .iter()
-                    .map(|c| c.center.re)
+                    .map(|c| c.decay_rate())
                     .fold(0.0, f64::max);
                 let repeated_axis =
                     self.max_frequency(|c| c.center.re == 0.0 && c.multiplicity > 1);
@@ -377,8 +508,8 @@ impl StepResponse {
                 let slowest_w = self
                     .clusters
                     .iter()
-                    .filter(|c| c.center.re == 0.0 && c.center.im > 0.0)
-                    .map(|c| c.center.im)
+                    .filter(|c| c.center.re == 0.0 && c.frequency() > 0.0)
+                    .map(|c| c.frequency())
                     .fold(w, f64::min);
                 let by_period = if slowest_w > 0.0 {
                     4.0 * std::f64::consts::TAU / slowest_w
@@ -388,12 +519,60 @@ impl StepResponse {
                 transient.max(by_period)
             }
         };
-        let rational = if rational > 0.0 && rational.is_finite() {
+        if rational > 0.0 && rational.is_finite() {
             rational
         } else {
             self.fastest_rate().map_or(10.0, |r| 10.0 / r)
+        }
+    }
+}
+
+/// Adds a repeated cluster's weight·Re(e^{cτ}·P(τ)) on the grid τ₀ + i·h.
+fn uniform_repeated(c: &Cluster, poly: &[C64], tau0: f64, h: f64, out: &mut [f64]) {
+    let step = (c.center * h).exp();
+    let mut e = C64::new(0.0, 0.0);
+    for (i, v) in out.iter_mut().enumerate() {
+        let tau = tau0 + h * i as f64;
+        e = if i % REANCHOR == 0 {
+            (c.center * tau).exp()
+        } else {
+            e * step
         };
-        self.delay + rational
+        *v += c.weight * (e * horner(poly, tau)).re;
+    }
+}
+
+/// Adds a spread cluster's contribution on the grid τ₀ + i·h: the last row of exp(τN)
+/// advances by one product with exp(hN) per step.
+fn uniform_spread(
+    c: &Cluster,
+    s: &Spread,
+    differences: &[C64],
+    tau0: f64,
+    h: f64,
+    out: &mut [f64],
+) {
+    let step = (c.center * h).exp();
+    let advance = divided::exp_matrix(&s.offsets, s.radius, h);
+    let mut e = C64::new(0.0, 0.0);
+    let mut row = vec![C64::new(0.0, 0.0); s.offsets.len()];
+    let mut next = row.clone();
+    for (i, v) in out.iter_mut().enumerate() {
+        let tau = tau0 + h * i as f64;
+        if i % REANCHOR == 0 {
+            let basis = c.basis(tau);
+            e = basis.exp_ct;
+            if basis.row.is_empty() {
+                row.iter_mut().for_each(|r| *r = C64::new(0.0, 0.0));
+            } else {
+                row.copy_from_slice(&basis.row);
+            }
+        } else {
+            e *= step;
+            advance.row_times(&row, &mut next);
+            std::mem::swap(&mut row, &mut next);
+        }
+        *v += c.weight * (e * dot(differences, &row)).re;
     }
 }
 
@@ -441,127 +620,215 @@ fn check_final_value(clusters: &[Cluster], expected: f64) -> Result<(), LtiError
     }
 }
 
-/// Single-linkage grouping of poles closer than the merging tolerance. Returns (centroid,
-/// multiplicity) per group, with Im ≥ 0 groups only: a self-conjugate group gets a real
-/// centroid, a group entirely above the axis stands for itself and its mirror.
-///
-/// Closeness is relative to the poles' own modulus only. A tolerance relative to the fastest
-/// pole merged the step's pole at the origin with a slow pole (s² + 1e7·s + 1: 0 and −1e−7
-/// next to −1e7) into a double pole, whose t·e^{ct} expansion is only valid while
-/// |δ|·t ≪ 1, and the response never rose; poles that far apart relative to themselves have
-/// residues of the size of the response, so nothing cancels when they are kept apart.
-fn cluster(poles: &[C64]) -> Vec<(C64, usize, f64)> {
-    let close = |a: C64, b: C64| {
-        let d = (a - b).norm();
-        d == 0.0 || d <= CLUSTER_RELATIVE * a.norm().max(b.norm())
+/// Refuses a final value A·G(0) that fell below the normal range of f64 (or to 0 without
+/// a zero at the origin): the metrics are measured in units of it.
+fn check_representable(
+    final_value: Option<f64>,
+    tf: &TransferFunction,
+    amplitude: f64,
+) -> Result<(), LtiError> {
+    let Some(value) = final_value else {
+        return Ok(());
     };
+    let lost = value.is_subnormal() || (value == 0.0 && tf.system_type() == 0);
+    let scale = amplitude * tf.gain();
+    if lost || !scale.is_normal() {
+        return Err(LtiError::Underflow {
+            what: if lost {
+                "the final value A·G(0)".into()
+            } else {
+                "the product A·k of the step amplitude and the gain".into()
+            },
+            value: if lost { value } else { scale },
+        });
+    }
+    Ok(())
+}
+
+/// How far apart two poles are, relative to the larger modulus (0 when equal).
+fn relative_gap(a: C64, b: C64) -> f64 {
+    let d = (a - b).norm();
+    if d == 0.0 {
+        0.0
+    } else {
+        d / a.norm().max(b.norm())
+    }
+}
+
+/// Single-linkage labels: poles within `tolerance` (relative) of each other, directly or
+/// through a chain, share a label.
+fn single_linkage(poles: &[C64], tolerance: f64) -> Vec<usize> {
     let n = poles.len();
-    let mut group: Vec<usize> = (0..n).collect();
+    let mut label: Vec<usize> = (0..n).collect();
     for i in 0..n {
         for j in (i + 1)..n {
-            if close(poles[i], poles[j]) {
-                let (gi, gj) = (group[i], group[j]);
-                if gi != gj {
-                    group.iter_mut().filter(|g| **g == gj).for_each(|g| *g = gi);
-                }
+            if relative_gap(poles[i], poles[j]) <= tolerance && label[i] != label[j] {
+                let (keep, drop) = (label[i], label[j]);
+                label
+                    .iter_mut()
+                    .filter(|l| **l == drop)
+                    .for_each(|l| *l = keep);
             }
         }
     }
-    let mut out = Vec::new();
-    let mut seen = Vec::new();
-    for i in 0..n {
-        let g = group[i];
-        if seen.contains(&g) {
-            continue;
-        }
-        seen.push(g);
-        let members: Vec<C64> = (0..n)
-            .filter(|&k| group[k] == g)
-            .map(|k| poles[k])
-            .collect();
-        let m = members.len();
-        let mean = members.iter().sum::<C64>() / m as f64;
-        let self_conjugate =
-            members.iter().any(|p| p.im <= 0.0) && members.iter().any(|p| p.im >= 0.0);
-        if self_conjugate {
-            out.push((C64::new(mean.re, 0.0), m, 1.0));
-        } else if mean.im > 0.0 {
-            out.push((mean, m, 2.0));
-        }
-    }
-    out
+    label
 }
 
-/// Truncated power series (lowest order first) arithmetic for the Taylor coefficients.
-fn series_mul(a: &[C64], b: &[C64], len: usize) -> Vec<C64> {
-    let mut out = vec![C64::new(0.0, 0.0); len];
-    for (i, &x) in a.iter().enumerate().take(len) {
-        for (j, &y) in b.iter().enumerate().take(len - i) {
-            out[i + j] += x * y;
-        }
-    }
-    out
-}
-
-/// Series of 1/(d + x) truncated to `len` terms.
-fn series_reciprocal_linear(d: C64, len: usize) -> Vec<C64> {
-    let inv = C64::new(1.0, 0.0) / d;
-    let mut out = Vec::with_capacity(len);
-    let mut term = inv;
-    for _ in 0..len {
-        out.push(term);
-        term *= -inv;
-    }
-    out
-}
-
-/// The contribution coefficients q_j of every cluster.
-fn partial_fractions(groups: &[(C64, usize, f64)], zeros: &[C64], scale: f64) -> Vec<Cluster> {
-    // Mirror images of the upper clusters are poles too.
-    let mut all_poles: Vec<(C64, usize)> = Vec::new();
-    for &(c, m, w) in groups {
-        all_poles.push((c, m));
-        if w == 2.0 {
-            all_poles.push((c.conj(), m));
+/// The members of each label, in order of first appearance.
+fn members(poles: &[C64], label: &[usize]) -> Vec<Vec<C64>> {
+    let mut seen: Vec<usize> = Vec::new();
+    let mut groups: Vec<Vec<C64>> = Vec::new();
+    for (&p, &l) in poles.iter().zip(label) {
+        match seen.iter().position(|&s| s == l) {
+            Some(i) => groups[i].push(p),
+            None => {
+                seen.push(l);
+                groups.push(vec![p]);
+            }
         }
     }
     groups
-        .iter()
-        .map(|&(center, m, weight)| {
-            let mut series = vec![C64::new(0.0, 0.0); m];
-            series[0] = C64::new(scale, 0.0);
-            for &z in zeros {
-                series = series_mul(&series, &[center - z, C64::new(1.0, 0.0)], m);
+}
+
+fn mean(poles: &[C64]) -> C64 {
+    poles.iter().sum::<C64>() / poles.len() as f64
+}
+
+/// The largest Π_{p outside}|p|/|c − p| over the groups (c a group's centre, p ≠ 0): how
+/// much larger than the final value a group's partial-fraction terms are.
+fn amplification(groups: &[Vec<C64>]) -> f64 {
+    let log = |g: usize| -> f64 {
+        let c = mean(&groups[g]);
+        groups
+            .iter()
+            .enumerate()
+            .filter(|&(h, _)| h != g)
+            .flat_map(|(_, members)| members.iter())
+            .filter(|p| p.norm() > 0.0)
+            .map(|&p| (p.norm() / (c - p).norm()).ln())
+            .sum()
+    };
+    (0..groups.len())
+        .map(log)
+        .fold(f64::NEG_INFINITY, f64::max)
+        .exp()
+}
+
+/// Groups the poles of Y(s) into clusters: single linkage at [`MERGE_RELATIVE`], then at the
+/// next larger gap while some group's partial fractions would amplify rounding by more than
+/// [`AMPLIFICATION_LIMIT`] (ten poles 2 % apart: about 1e8), up to [`MAX_MERGE_GAP`].
+///
+/// Closeness is relative to the poles' own modulus only. A tolerance relative to the fastest
+/// pole merged the step's pole at the origin with a slow pole (s² + 1e7·s + 1: 0 and −1e−7
+/// next to −1e7); the origin is never within a relative gap below 1 of another pole, so it
+/// stays alone (or with the integrators exactly at 0).
+fn group_poles(poles: &[C64]) -> Vec<Vec<C64>> {
+    let mut tolerance = MERGE_RELATIVE;
+    loop {
+        let label = single_linkage(poles, tolerance);
+        let groups = members(poles, &label);
+        if amplification(&groups) <= AMPLIFICATION_LIMIT {
+            return groups;
+        }
+        let next = (0..poles.len())
+            .flat_map(|i| (i + 1..poles.len()).map(move |j| (i, j)))
+            .filter(|&(i, j)| label[i] != label[j])
+            .map(|(i, j)| relative_gap(poles[i], poles[j]))
+            .fold(f64::INFINITY, f64::min);
+        if next > MAX_MERGE_GAP {
+            return groups;
+        }
+        tolerance = next;
+    }
+}
+
+/// One group as a cluster of Y(s) = scale·Π(s − z)/Π(s − p): `None` for the mirror image of
+/// a complex group (its partner above the axis stands for both).
+fn make_cluster(group: &[C64], others: &[C64], zeros: &[C64], scale: f64) -> Option<Cluster> {
+    let m = group.len();
+    let repeated = group.iter().all(|&p| p == group[0]);
+    let self_conjugate = group.iter().any(|p| p.im <= 0.0) && group.iter().any(|p| p.im >= 0.0);
+    let center = if repeated { group[0] } else { mean(group) };
+    let (center, weight) = if self_conjugate {
+        (C64::new(center.re, 0.0), 1.0)
+    } else if center.im > 0.0 {
+        (center, 2.0)
+    } else {
+        return None;
+    };
+    let nodes: Vec<C64> = if repeated {
+        vec![center; m]
+    } else {
+        group.to_vec()
+    };
+    let value = divided::rational(&nodes, scale, zeros, others);
+    let at_center = if repeated {
+        value.clone()
+    } else {
+        divided::rational(&vec![center; m], scale, zeros, others)
+    };
+    let coeffs = taylor_to_powers(&at_center);
+    let bound = taylor_to_powers(&value).iter().map(|q| q.norm()).collect();
+    let d1 = differentiate(center, &coeffs);
+    let d2 = differentiate(center, &d1);
+    let frequency = group.iter().map(|p| p.im.abs()).fold(0.0, f64::max);
+    let spread = (!repeated).then(|| {
+        let offsets: Vec<C64> = nodes.iter().map(|&x| x - center).collect();
+        let mut first = value.clone();
+        divided::times_linear(&mut first, &nodes, C64::new(0.0, 0.0));
+        let mut second = first.clone();
+        divided::times_linear(&mut second, &nodes, C64::new(0.0, 0.0));
+        Spread {
+            radius: offsets.iter().map(|d| d.norm()).fold(0.0, f64::max),
+            growth: offsets
+                .iter()
+                .map(|d| d.re)
+                .fold(f64::NEG_INFINITY, f64::max),
+            offsets,
+            nodes,
+            differences: [value, first, second],
+        }
+    });
+    Some(Cluster {
+        center,
+        multiplicity: m,
+        weight,
+        coeffs,
+        bound,
+        d1,
+        d2,
+        frequency,
+        spread,
+    })
+}
+
+/// q_j = v_{m−1−j}/j! from divided differences v_k = f[x₁…x_{k+1}] (Taylor coefficients
+/// when the nodes are equal): the coefficients of τ^j.
+fn taylor_to_powers(v: &[C64]) -> Vec<C64> {
+    let m = v.len();
+    let mut factorial = 1.0;
+    (0..m)
+        .map(|j| {
+            if j > 0 {
+                factorial *= j as f64;
             }
-            for &(p, mult) in &all_poles {
-                if p == center {
-                    continue;
-                }
-                let recip = series_reciprocal_linear(center - p, m);
-                for _ in 0..mult {
-                    series = series_mul(&series, &recip, m);
-                }
-            }
-            // q_j = a_{m-1-j} / j!
-            let mut factorial = 1.0;
-            let coeffs: Vec<C64> = (0..m)
-                .map(|j| {
-                    if j > 0 {
-                        factorial *= j as f64;
-                    }
-                    series[m - 1 - j] / factorial
-                })
+            v[m - 1 - j] / factorial
+        })
+        .collect()
+}
+
+/// The clusters of Y(s) = scale·Π(s − z)/Π(s − p) (the step's pole included in `poles`).
+fn partial_fractions(poles: &[C64], zeros: &[C64], scale: f64) -> Vec<Cluster> {
+    let groups = group_poles(poles);
+    (0..groups.len())
+        .filter_map(|g| {
+            let others: Vec<C64> = groups
+                .iter()
+                .enumerate()
+                .filter(|&(h, _)| h != g)
+                .flat_map(|(_, members)| members.iter().copied())
                 .collect();
-            let d1 = differentiate(center, &coeffs);
-            let d2 = differentiate(center, &d1);
-            Cluster {
-                center,
-                multiplicity: m,
-                weight,
-                coeffs,
-                d1,
-                d2,
-            }
+            make_cluster(&groups[g], &others, zeros, scale)
         })
         .collect()
 }
@@ -589,12 +856,12 @@ fn classify(tf: &TransferFunction) -> Behaviour {
         .copied()
         .filter(|p| p.re == 0.0 && p.im != 0.0)
         .collect();
-    // "Repeated" with the tolerance the closed form merges poles with (see [`cluster`]):
+    // "Repeated" to [`REPEATED_AXIS_RELATIVE`]:
     // j(1 ± 1e-9) from the roots of (s² + 1)² is one double pair there, so y grows as t·sin t.
     let repeated_axis = on_axis.iter().enumerate().any(|(i, p)| {
         on_axis[i + 1..]
             .iter()
-            .any(|q| (p - q).norm() <= CLUSTER_RELATIVE * p.norm().max(q.norm()))
+            .any(|q| (p - q).norm() <= REPEATED_AXIS_RELATIVE * p.norm().max(q.norm()))
     });
     if repeated_axis {
         Behaviour::Unstable

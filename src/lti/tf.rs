@@ -60,6 +60,12 @@ impl TransferFunction {
         if !gain.is_finite() || gain == 0.0 {
             return Err(LtiError::BadGain(gain));
         }
+        if gain.is_subnormal() {
+            return Err(LtiError::Subnormal {
+                what: "the gain k".into(),
+                value: gain,
+            });
+        }
         Ok(Self {
             zeros: paired(zeros, "zero")?,
             poles: paired(poles, "pole")?,
@@ -293,6 +299,17 @@ fn paired(roots: &[C64], what: &'static str) -> Result<Vec<C64>, LtiError> {
         return Err(LtiError::NonFiniteRoot {
             what,
             index: index + 1,
+        });
+    }
+    if let Some((index, value)) = roots.iter().enumerate().find_map(|(i, r)| {
+        [r.re, r.im]
+            .into_iter()
+            .find(|x| x.is_subnormal())
+            .map(|x| (i, x))
+    }) {
+        return Err(LtiError::Subnormal {
+            what: format!("{what} {}", index + 1),
+            value,
         });
     }
     let mut lower: Vec<C64> = roots.iter().copied().filter(|r| r.im < 0.0).collect();

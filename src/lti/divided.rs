@@ -1,0 +1,220 @@
+//! Divided differences through the Opitz matrix, the stable way to evaluate a cluster of
+//! nearly equal poles.
+//!
+//! For nodes x₁…x_m, the lower bidiagonal Opitz matrix J (x_i on the diagonal, 1 below it)
+//! carries every divided difference of a function f in f(J): f(J)_{j,i} = f[x_i…x_j]
+//! (Opitz 1964). Two cases are needed:
+//! - a rational f = k·Π(s − z)/Π(s − p) with no pole among the nodes: the first column of
+//!   f(J) is built factor by factor, a bidiagonal product for each zero and a bidiagonal
+//!   forward substitution for each pole. No truncation, no cancellation beyond the
+//!   problem's own (no 1/δ terms: every division is by a distance to a pole *outside*);
+//! - the exponential e^{sτ} over nodes close to a centre c: e^{cτ}·exp(τ·(J − cI)), the
+//!   Taylor series on τ scaled until ‖τ(x − c)‖ ≤ 1/2, then squared back (McCurdy, Ng &
+//!   Parlett 1984, "Accurate computation of divided differences of the exponential
+//!   function"). For real nodes every entry is positive, so the squarings cannot cancel.
+//!
+//! Nodes equal to each other are allowed (confluent divided differences: derivatives).
+
+use super::poly::C64;
+
+/// Taylor terms beyond the nilpotent part once ‖τ·d‖ ≤ [`SCALED_NORM`]: the remainder is
+/// below (1/2)^19/19!·e^{1/2} < 1e-22 of the result.
+const EXTRA_TERMS: usize = 19;
+/// The Taylor series runs on τ/2^s with τ·max|x − c|/2^s at most this.
+const SCALED_NORM: f64 = 0.5;
+/// More squarings than this (τ·|x − c| > 2^60) are never needed: such a term has long
+/// decayed below any representable number or is outside the range of f64 anyway.
+const MAX_SQUARINGS: u32 = 60;
+
+const ZERO: C64 = C64::new(0.0, 0.0);
+
+/// f[x₁…x_k] for k = 1…m, f(s) = scale·Π(s − zᵢ)/Π(s − pⱼ): the first column of f(J).
+/// No pole may equal a node. Zeros and poles are applied alternately, which keeps the
+/// intermediate magnitudes near those of the result.
+pub fn rational(nodes: &[C64], scale: f64, zeros: &[C64], poles: &[C64]) -> Vec<C64> {
+    let mut v = vec![ZERO; nodes.len()];
+    if let Some(first) = v.first_mut() {
+        *first = C64::new(scale, 0.0);
+    }
+    for i in 0..zeros.len().max(poles.len()) {
+        if let Some(&z) = zeros.get(i) {
+            times_linear(&mut v, nodes, z);
+        }
+        if let Some(&p) = poles.get(i) {
+            over_linear(&mut v, nodes, p);
+        }
+    }
+    v
+}
+
+/// v ← (J − zI)·v: the divided differences of (s − z)·f from those of f (Leibniz).
+pub fn times_linear(v: &mut [C64], nodes: &[C64], z: C64) {
+    for k in (0..v.len()).rev() {
+        let below = if k > 0 { v[k - 1] } else { ZERO };
+        v[k] = (nodes[k] - z) * v[k] + below;
+    }
+}
+
+/// v ← (J − pI)⁻¹·v: the divided differences of f/(s − p) from those of f.
+fn over_linear(v: &mut [C64], nodes: &[C64], p: C64) {
+    let mut previous = ZERO;
+    for (k, value) in v.iter_mut().enumerate() {
+        previous = (*value - previous) / (nodes[k] - p);
+        *value = previous;
+    }
+}
+
+/// A lower triangular m×m matrix, row-major, full storage (m ≤ 31).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lower {
+    m: usize,
+    a: Vec<C64>,
+}
+
+impl Lower {
+    fn identity(m: usize) -> Self {
+        let mut a = vec![ZERO; m * m];
+        (0..m).for_each(|i| a[i * m + i] = C64::new(1.0, 0.0));
+        Self { m, a }
+    }
+
+    fn at(&self, j: usize, i: usize) -> C64 {
+        self.a[j * self.m + i]
+    }
+
+    /// self·(h·N), N = diag(d) + subdiagonal of ones.
+    fn times_opitz(&self, d: &[C64], h: f64) -> Self {
+        let m = self.m;
+        let mut a = vec![ZERO; m * m];
+        for j in 0..m {
+            for i in 0..=j {
+                let right = if i < j { self.at(j, i + 1) } else { ZERO };
+                a[j * m + i] = (self.at(j, i) * d[i] + right) * h;
+            }
+        }
+        Self { m, a }
+    }
+
+    fn squared(&self) -> Self {
+        let m = self.m;
+        let mut a = vec![ZERO; m * m];
+        for j in 0..m {
+            for i in 0..=j {
+                a[j * m + i] = (i..=j).map(|k| self.at(j, k) * self.at(k, i)).sum();
+            }
+        }
+        Self { m, a }
+    }
+
+    /// row·self: the row vector r (length m) times this matrix.
+    pub fn row_times(&self, row: &[C64], out: &mut [C64]) {
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = (i..self.m).map(|j| row[j] * self.at(j, i)).sum();
+        }
+    }
+
+    fn last_row(&self) -> Vec<C64> {
+        self.a[(self.m - 1) * self.m..].to_vec()
+    }
+}
+
+/// How many halvings bring τ·radius to at most [`SCALED_NORM`].
+fn squarings(tau: f64, radius: f64) -> u32 {
+    let x = tau.abs() * radius;
+    if x <= SCALED_NORM || !x.is_finite() {
+        0
+    } else {
+        ((x / SCALED_NORM).log2().ceil() as u32).min(MAX_SQUARINGS)
+    }
+}
+
+fn terms(m: usize) -> usize {
+    m + EXTRA_TERMS
+}
+
+/// exp(τ·N) for N = diag(d) + subdiagonal of ones, |d_i| ≤ `radius`: entry (j, i) is
+/// e^{uτ}[d_i…d_j].
+pub fn exp_matrix(d: &[C64], radius: f64, tau: f64) -> Lower {
+    let m = d.len();
+    let s = squarings(tau, radius);
+    let h = tau / 2f64.powi(s as i32);
+    let mut sum = Lower::identity(m);
+    let mut term = Lower::identity(m);
+    for n in 1..=terms(m) {
+        term = term.times_opitz(d, h / n as f64);
+        sum.a.iter_mut().zip(&term.a).for_each(|(s, t)| *s += t);
+    }
+    (0..s).fold(sum, |acc, _| acc.squared())
+}
+
+/// The last row of exp(τ·N): e^{uτ}[d_k…d_m] for k = 1…m. A row-vector Taylor series
+/// (O(m²)) when τ·radius is small, the full matrix with squarings otherwise.
+pub fn exp_last_row(d: &[C64], radius: f64, tau: f64) -> Vec<C64> {
+    let m = d.len();
+    if m == 0 {
+        return Vec::new();
+    }
+    if squarings(tau, radius) > 0 {
+        return exp_matrix(d, radius, tau).last_row();
+    }
+    let mut term = vec![ZERO; m];
+    term[m - 1] = C64::new(1.0, 0.0);
+    let mut sum = term.clone();
+    for n in 1..=terms(m) {
+        let h = tau / n as f64;
+        for i in 0..m {
+            let right = if i + 1 < m { term[i + 1] } else { ZERO };
+            term[i] = (term[i] * d[i] + right) * h;
+        }
+        sum.iter_mut().zip(&term).for_each(|(s, t)| *s += t);
+    }
+    sum
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn c(re: f64) -> C64 {
+        C64::new(re, 0.0)
+    }
+
+    #[test]
+    fn two_node_exponential_difference() {
+        // e^{uτ}[a, b] = (e^{bτ} − e^{aτ})/(b − a), well separated so the formula is exact.
+        let d = [c(-0.3), c(0.4)];
+        for tau in [0.1, 1.0, 7.0, 40.0] {
+            let row = exp_last_row(&d, 0.4, tau);
+            let exact = ((0.4 * tau).exp() - (-0.3 * tau).exp()) / 0.7;
+            assert!((row[0].re - exact).abs() < 1e-14 * exact, "τ={tau}");
+            assert!((row[1].re - (0.4 * tau).exp()).abs() < 1e-14 * row[1].re);
+        }
+    }
+
+    #[test]
+    fn confluent_nodes_give_derivatives() {
+        // e^{uτ}[0, 0, 0] = τ²/2.
+        let row = exp_last_row(&[c(0.0); 3], 0.0, 3.0);
+        assert!((row[0].re - 4.5).abs() < 1e-15);
+        assert!((row[1].re - 3.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn row_and_squared_matrix_agree() {
+        let d = [c(-0.01), c(0.002), C64::new(0.003, 0.004), c(0.005)];
+        let direct = exp_last_row(&d, 0.01, 30.0);
+        let squared = exp_matrix(&d, 0.01, 30.0).last_row();
+        for (a, b) in direct.iter().zip(&squared) {
+            assert!((a - b).norm() < 1e-13 * b.norm(), "{a} vs {b}");
+        }
+    }
+
+    #[test]
+    fn rational_differences_of_a_simple_pole() {
+        // (1/(s − p))[x₁…x_k] = (−1)^{k−1}... = 1/Π(x_i − p) up to sign: here 1/((x₁−p)(x₂−p)).
+        let nodes = [c(-1.0), c(-1.5)];
+        let v = rational(&nodes, 1.0, &[], &[c(-3.0)]);
+        assert!((v[0].re - 0.5).abs() < 1e-16);
+        assert!((v[1].re + 1.0 / (2.0 * 1.5)).abs() < 1e-16);
+    }
+}
