@@ -395,9 +395,12 @@ pub fn fit(
             observer.cancelled()
         };
         let run = match options.method {
-            Method::LevenbergMarquardt => {
-                problem.levenberg_marquardt(start, options.max_iterations, &mut report)
-            }
+            Method::LevenbergMarquardt => problem.levenberg_marquardt(
+                start,
+                options.max_iterations,
+                Stop::CostSettles,
+                &mut report,
+            ),
             Method::NelderMead => {
                 problem.nelder_mead(start, options.max_iterations * 10, &mut report)
             }
@@ -422,6 +425,8 @@ pub fn fit(
     });
     if cancelled {
         run.termination = Termination::Cancelled;
+    } else if options.method == Method::LevenbergMarquardt {
+        problem.polish(&mut run);
     }
     problem.report(run, options, starts.len())
 }
@@ -468,6 +473,16 @@ impl Run {
     }
 }
 
+/// When Levenberg–Marquardt stops.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Stop {
+    /// Also when an accepted step lowers the cost by less than 1e-10 of itself.
+    CostSettles,
+    /// Only when the steps become negligible (or no step lowers the cost): the parameters to
+    /// about 1e-10, whatever the rounding of the data.
+    StepsSettle,
+}
+
 /// The normal equations of the linearised problem at a point: A = JᵀJ, g = Jᵀr.
 struct Normal {
     a: DMatrix<f64>,
@@ -496,6 +511,7 @@ impl Problem {
     fn new(data: &FitData, structure: Structure, guess: Values) -> Result<Self, FitError> {
         let ts = data.sampling_period();
         let units = Scale::of(data, ts).ok_or(FitError::BadStep(data.setup.du))?;
+        units.check(structure)?;
         let data = units.data_in(data);
         let ts = ts / units.t_unit;
         let duration = data.duration_with(ts);
@@ -681,6 +697,7 @@ impl Problem {
         &self,
         x: &[f64],
         max_iterations: usize,
+        stop: Stop,
         report: &mut dyn FnMut(usize, f64, &[f64]) -> bool,
     ) -> Option<Run> {
         let n = self.data.y.len();
@@ -754,7 +771,7 @@ impl Problem {
                     lambda = damping_after_success(lambda, rho);
                     accepted = true;
                     path.push(x.clone());
-                    if relative < 1e-10 {
+                    if relative < 1e-10 && stop == Stop::CostSettles {
                         termination = Termination::SmallCostChange;
                     }
                     break;
@@ -787,6 +804,27 @@ impl Problem {
             aliased: false,
         })
     }
+    /// Refines a converged run until its steps are negligible, so that the optimum does not
+    /// depend on where the cost test happened to stop it (a few iterations at most).
+    fn polish(&self, run: &mut Run) {
+        if matches!(
+            run.termination,
+            Termination::IterationLimit | Termination::NoImprovement | Termination::Cancelled
+        ) {
+            return;
+        }
+        let Some(fine) = self.levenberg_marquardt(&run.x, 10, Stop::StepsSettle, &mut |_, _, _| false)
+        else {
+            return;
+        };
+        if fine.sse < run.sse {
+            run.iterations += fine.iterations;
+            run.path.extend(fine.path.into_iter().skip(1));
+            run.x = fine.x;
+            run.sse = fine.sse;
+        }
+    }
+
     /// Bounded Nelder–Mead on the sum of squares from `x` (fminsearch's simplex and
     /// coefficients).
     fn nelder_mead(

@@ -216,6 +216,21 @@ impl Scale {
         x.abs().log10() + factor_log10
     }
 
+    /// Whether one internal unit of every parameter of `structure` is representable in the
+    /// record's units (a gain of 1e600 output units per input unit is not).
+    pub fn check(&self, structure: Structure) -> Result<(), Unrepresentable> {
+        match structure.params().into_iter().find(|&p| {
+            let v = self.value_out(p, structure, 1.0);
+            !v.is_finite() || (p != Param::Y0 && !v.is_normal())
+        }) {
+            Some(param) => Err(Unrepresentable {
+                param,
+                log10: self.log10_out(param, structure, 1.0),
+            }),
+            None => Ok(()),
+        }
+    }
+
     /// A model in internal units.
     pub fn model_in(&self, m: &Model) -> Model {
         Model::new(m.structure, self.values_in(m.structure, &m.values))
