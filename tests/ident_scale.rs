@@ -102,16 +102,28 @@ fn a_record_fits_the_same_at_any_scale() {
             assert!(e < 1e-9, "{p:?} off by {e:e} at {at}");
             let (lo, hi) = r.interval(p).unwrap();
             let (ulo, uhi) = unit.interval(p).unwrap();
-            assert!(relative((hi - lo) / kt, uhi - ulo) < 1e-6, "{p:?} interval at {at}");
+            assert!(
+                relative((hi - lo) / kt, uhi - ulo) < 1e-6,
+                "{p:?} interval at {at}"
+            );
         }
         let kp = r.model.get(Param::Kp) * kdu / ky;
         assert!(relative(kp, unit.model.get(Param::Kp)) < 1e-9, "Kp at {at}");
         assert!(relative(r.model.get(Param::Y0) / ky, unit.model.get(Param::Y0)) < 1e-9);
-        assert!((r.fit_percent - unit.fit_percent).abs() < 1e-7, "fit % at {at}");
+        assert!(
+            (r.fit_percent - unit.fit_percent).abs() < 1e-7,
+            "fit % at {at}"
+        );
         assert!(relative(r.rmse / ky, unit.rmse) < 1e-9, "RMSE at {at}");
-        assert!((r.ln_mse - 2.0 * ky.ln() - unit.ln_mse).abs() < 1e-8, "ln MSE at {at}");
+        assert!(
+            (r.ln_mse - 2.0 * ky.ln() - unit.ln_mse).abs() < 1e-8,
+            "ln MSE at {at}"
+        );
         let aic_shift = 2.0 * r.n as f64 * ky.ln();
-        assert!((r.aic - aic_shift - unit.aic).abs() < 1e-6 * unit.aic.abs(), "{at}");
+        assert!(
+            (r.aic - aic_shift - unit.aic).abs() < 1e-6 * unit.aic.abs(),
+            "{at}"
+        );
         // The MSE is (1e-2·ky)²: beyond double precision at 1e±300, and then said so.
         let said = r
             .warnings
@@ -139,10 +151,20 @@ fn the_issue_reproducer_at_1e200_converges_in_more_than_one_iteration() {
         assert!(r.iterations > 1 && r.fit_percent.is_finite(), "{ky}: {r:?}");
         assert!((r.fit_percent - fits[0].fit_percent).abs() < 1e-7, "{ky}");
         let e = relative(r.model.get(Param::Tp1), fits[0].model.get(Param::Tp1));
-        assert!(e < 1e-9, "{ky}: Tp1 off by {e:e}: {:?} {} vs {:?} {}", r.termination, r.iterations, fits[0].termination, fits[0].iterations);
+        assert!(
+            e < 1e-9,
+            "{ky}: Tp1 off by {e:e}: {:?} {} vs {:?} {}",
+            r.termination,
+            r.iterations,
+            fits[0].termination,
+            fits[0].iterations
+        );
         for e in &r.params {
             let (lo, hi) = e.ci95.unwrap();
-            assert!(lo < e.value && e.value < hi, "{ky}: zero-width interval {e:?}");
+            assert!(
+                lo < e.value && e.value < hi,
+                "{ky}: zero-width interval {e:?}"
+            );
         }
     }
 }

@@ -484,8 +484,9 @@ pub fn pair_poles(tw: f64, zeta: f64) -> [C64; 2] {
     }
 }
 
-/// (first, last) when the instants are evenly spaced to 1e-9 relative (and there are ≥ 3).
-fn uniform_grid(times: &[f64]) -> Option<(f64, f64)> {
+/// (first, last) when the instants are evenly spaced to 1e-9 of the spacing, plus the
+/// rounding of instants of their size (and there are ≥ 3).
+pub(crate) fn uniform_grid(times: &[f64]) -> Option<(f64, f64)> {
     let n = times.len();
     if n < 3 {
         return None;
@@ -495,7 +496,8 @@ fn uniform_grid(times: &[f64]) -> Option<(f64, f64)> {
     if dt <= 0.0 {
         return None;
     }
-    let tolerance = 1e-9 * dt.max(last.abs() * 1e-7);
+    let tolerance =
+        1e-9 * dt.max(last.abs() * 1e-7) + 8.0 * f64::EPSILON * first.abs().max(last.abs());
     times
         .iter()
         .enumerate()

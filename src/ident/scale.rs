@@ -147,9 +147,7 @@ impl Scale {
         match p {
             Param::Kp if structure.integrator => self.y_unit / self.du_unit / self.t_unit,
             Param::Kp => self.y_unit / self.du_unit,
-            Param::Tp1 | Param::Tp2 | Param::Tp3 | Param::Tw | Param::Td | Param::Tz => {
-                self.t_unit
-            }
+            Param::Tp1 | Param::Tp2 | Param::Tp3 | Param::Tw | Param::Td | Param::Tz => self.t_unit,
             Param::Zeta => 1.0,
             Param::Y0 => self.y_unit,
             Param::Drift => self.y_unit / self.t_unit,
@@ -319,10 +317,16 @@ mod tests {
         let s = Scale::of(&data(1e300, 1.0, 1e-300), 1.0).unwrap();
         let mut big = v;
         big.set(Param::Kp, 1.0);
-        let e = s.values_out(Structure::parse("P1").unwrap(), &big).unwrap_err();
+        let e = s
+            .values_out(Structure::parse("P1").unwrap(), &big)
+            .unwrap_err();
         assert_eq!(e.param, Param::Kp);
         // Kp = 1 internal = half the range 0.5e300 per 1e-300 input units: 5e599.
-        assert!((e.log10 - (599.0 + 5f64.log10())).abs() < 1e-9, "{}", e.log10);
+        assert!(
+            (e.log10 - (599.0 + 5f64.log10())).abs() < 1e-9,
+            "{}",
+            e.log10
+        );
         assert!((s.ln_mse_out(1.0) - 2.0 * s.y_unit.ln()).abs() < 1e-12);
         assert!(s.mse_out(1.0).is_infinite());
     }
