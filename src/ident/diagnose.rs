@@ -220,10 +220,10 @@ pub struct DiagnoseReport {
     pub static_gain: (f64, Option<(f64, f64)>),
 }
 
-/// BIC of a fit: N·ln(MSE) + p·ln(N).
+/// BIC of a fit: N·ln(MSE) + p·ln(N), from the fit's ln MSE (finite at any scale).
 pub fn bic(r: &FitReport) -> f64 {
     let n = r.n as f64;
-    n * r.mse.max(f64::MIN_POSITIVE).ln() + r.params.len() as f64 * n.ln()
+    n * r.ln_mse + r.params.len() as f64 * n.ln()
 }
 
 /// The residual analysis of a fit on its data.
@@ -287,7 +287,9 @@ pub fn diagnose_from(
 /// extension pays for itself.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
     let (extension, candidate) = best_extension(data, current)?;
-    if bic(&candidate) - bic(current) >= -BIC_THRESHOLD {
+    // A change that is not a finite number (a failed fit) names nothing.
+    let change = bic(&candidate) - bic(current);
+    if !(change.is_finite() && change < -BIC_THRESHOLD) {
         return None;
     }
     let cause = extension.cause(&candidate.model.values);
@@ -329,6 +331,7 @@ fn best_extension(data: &FitData, current: &FitReport) -> Option<(Extension, Fit
                 e == Extension::Underdamped && r.model.get(Param::Zeta) >= OVERDAMPED_ZETA;
             (!overdamped).then_some((e, r))
         })
+        .filter(|(_, r)| bic(r).is_finite())
         .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
 }
 
@@ -354,7 +357,8 @@ fn refit(
                 .iter()
                 .any(|w| matches!(w, super::fit::FitWarning::Alias { .. }))
         })
-        .min_by(|a, b| a.mse.total_cmp(&b.mse))
+        .filter(|r| r.ln_mse.is_finite())
+        .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse))
 }
 
 /// The current values with the new parameter set to a few plausible values.

@@ -12,6 +12,13 @@
 //!   bounds, and to report its path like LM's; `argmin` would add its trait machinery for
 //!   sixty lines of algorithm.
 //!
+//! Every fit runs on the record in its internal units ([`Scale`]: the output about its level
+//! in half-ranges, the step ±1, time from t0 in record lengths) and scales its results back,
+//! so a record at 1e-300 or 1e300, a step of 1e-200, time in nanoseconds or years, fits as a
+//! unit-sized one does. The sums run over pieces of [`CHUNK`] samples: no N × p Jacobian and no
+//! residual vector per start or iteration, so a record of millions of samples fits in little
+//! more memory than the record itself.
+//!
 //! A multi-start option (on by default) runs LM from the guess and from spread-out starts
 //! and keeps the best: the LECI notes show a single start landing on a spurious alias.
 //!
@@ -23,8 +30,12 @@
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
-use super::models::{Model, ModelError, Param, StepSetup, Structure, Values};
+use super::models::{Model, ModelError, Param, Simulator, StepSetup, Structure, Values};
+use super::scale::{Scale, Unrepresentable};
 use super::stats::student_t_quantile;
+
+/// Samples per piece of the sums over the record.
+pub const CHUNK: usize = 8192;
 
 /// The measured test as the fit sees it (already windowed and filtered).
 #[derive(Debug, Clone, PartialEq)]
@@ -42,8 +53,13 @@ impl FitData {
 
     /// Duration of the record after the step (s).
     pub fn duration(&self) -> f64 {
+        self.duration_with(self.sampling_period())
+    }
+
+    /// Duration of the record after the step (s), at least `ts` (the sampling period).
+    pub fn duration_with(&self, ts: f64) -> f64 {
         let last = self.times.last().copied().unwrap_or(self.setup.t0);
-        (last - self.setup.t0).max(self.sampling_period())
+        (last - self.setup.t0).max(ts)
     }
 }
 
@@ -100,6 +116,8 @@ pub enum Termination {
     IterationLimit,
     /// The student cancelled.
     Cancelled,
+    /// No step lowered the cost from the start: the values are the start's.
+    NoImprovement,
 }
 
 impl Termination {
@@ -110,6 +128,9 @@ impl Termination {
             Termination::SmallCostChange => "converged: the cost stopped decreasing",
             Termination::IterationLimit => "stopped at the iteration limit (not converged)",
             Termination::Cancelled => "cancelled",
+            Termination::NoImprovement => {
+                "stopped: no step lowered the cost from the start (not converged)"
+            }
         }
     }
 }
@@ -134,6 +155,13 @@ pub enum FitWarning {
         param: String,
     },
     NotConverged,
+    /// No step lowered the cost from the start.
+    NoImprovement,
+    /// A statistic beyond double precision in the record's units (shown as inf or 0).
+    Unrepresentable {
+        statistic: String,
+        log10: f64,
+    },
 }
 
 impl FitWarning {
@@ -166,6 +194,16 @@ impl FitWarning {
             FitWarning::NotConverged => {
                 "the optimiser did not converge: the values are not an optimum".into()
             }
+            FitWarning::NoImprovement => {
+                "the optimiser found no step that lowers the cost from the start: the values are \
+                 the start's, not an optimum; try another guess or more starts"
+                    .into()
+            }
+            FitWarning::Unrepresentable { statistic, log10 } => format!(
+                "the {statistic} is about 1e{log10:.1} in the data's units, beyond double \
+                 precision, so it shows as {}; the RMSE, fit % and AIC are exact",
+                if *log10 > 0.0 { "inf" } else { "0" }
+            ),
         }
     }
 }
@@ -176,6 +214,7 @@ pub struct Progress {
     pub start: usize,
     pub starts: usize,
     pub iteration: usize,
+    /// MSE of the current point, in (output units)² (inf where beyond double precision).
     pub cost: f64,
     pub best_cost: f64,
     pub model: Model,
@@ -207,7 +246,12 @@ pub struct FitReport {
     /// Estimated parameters in order, with their 95 % intervals when they exist.
     pub params: Vec<Estimate>,
     pub n: usize,
+    /// Mean squared error in (output units)²; inf or 0 where beyond double precision (then a
+    /// [`FitWarning::Unrepresentable`] says so, and `ln_mse` holds it).
     pub mse: f64,
+    /// ln of the MSE in (output units)², finite at any scale (floored for an exact fit).
+    #[serde(default)]
+    pub ln_mse: f64,
     pub rmse: f64,
     pub fit_percent: f64,
     pub aic: f64,
@@ -217,6 +261,9 @@ pub struct FitReport {
     pub starts: usize,
     /// Every accepted point of the winning start, for the landscape's path.
     pub path: Vec<Values>,
+    /// The internal units the fit ran in.
+    #[serde(default)]
+    pub units: Scale,
 }
 
 impl FitReport {
@@ -228,10 +275,25 @@ impl FitReport {
             .and_then(|e| e.ci95)
     }
 
-    /// The residuals y − ŷ of this fit on `data`.
+    /// The residuals y − ŷ of this fit on `data` (output units), simulated in the fit's
+    /// internal units, so that they are right at any scale.
     pub fn residuals(&self, data: &FitData) -> Result<Vec<f64>, ModelError> {
-        let yhat = self.model.simulate(&data.setup, &data.times)?;
-        Ok(data.y.iter().zip(yhat).map(|(y, m)| y - m).collect())
+        let units = &self.units;
+        let simulator = units
+            .model_in(&self.model)
+            .simulator(&internal_setup(&data.setup))?;
+        let mut r = vec![0.0; data.y.len()];
+        let mut times = Vec::with_capacity(CHUNK);
+        for (k, out) in r.chunks_mut(CHUNK).enumerate() {
+            let range = k * CHUNK..k * CHUNK + out.len();
+            times.clear();
+            times.extend(data.times[range.clone()].iter().map(|&t| units.time_in(t)));
+            simulator.fill(&times, out);
+            for (o, &y) in out.iter_mut().zip(&data.y[range]) {
+                *o = units.output_difference_out(units.output_in(y) - *o);
+            }
+        }
+        Ok(r)
     }
 }
 
@@ -246,12 +308,45 @@ pub enum FitError {
     BadGuess(ModelError),
     #[error("the data contain a value that is not a finite number")]
     NonFiniteData,
+    #[error("the step time t0 is {0}: it must be a finite number")]
+    BadStepTime(f64),
+    #[error(
+        "the model's error on the data is not a finite number at the initial guess: the guess is \
+         far from the data"
+    )]
+    NonFiniteCost,
+    #[error(
+        "the fitted {param} is about 1e{log10:.1} in the data's units, beyond double precision: \
+         give the data (or the step Δu) in other units"
+    )]
+    Unrepresentable { param: &'static str, log10: f64 },
+}
+
+impl From<Unrepresentable> for FitError {
+    fn from(u: Unrepresentable) -> Self {
+        FitError::Unrepresentable {
+            param: u.param.name(),
+            log10: u.log10,
+        }
+    }
+}
+
+/// The step set-up in internal units: at t̃ = 0, of size ±1.
+fn internal_setup(setup: &StepSetup) -> StepSetup {
+    StepSetup {
+        t0: 0.0,
+        du: setup.du.signum(),
+    }
 }
 
 /// Lower and upper bound of each parameter for this data.
 pub fn bounds(p: Param, data: &FitData) -> (f64, f64) {
-    let ts = data.sampling_period();
-    let duration = data.duration();
+    bounds_with(p, data.sampling_period(), data.duration())
+}
+
+/// [`bounds`] for a record sampled every `ts` seconds and `duration` seconds long after the
+/// step.
+fn bounds_with(p: Param, ts: f64, duration: f64) -> (f64, f64) {
     match p {
         Param::Tp1 | Param::Tp2 | Param::Tp3 | Param::Tw => (1e-3 * ts, 100.0 * duration),
         Param::Zeta => (0.0, 10.0),
@@ -270,45 +365,59 @@ pub fn fit(
     observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
     validate(data, &structure)?;
-    let problem = Problem::new(data, structure, guess);
-    let x0 = problem.clamp(guess.vector(&problem.params));
-    problem.cost(&x0).map_err(FitError::BadGuess)?;
+    let problem = Problem::new(data, structure, guess)?;
+    let x0 = problem.clamp(problem.fixed.vector(&problem.params));
+    if !problem.sse(&x0, None).is_ok_and(f64::is_finite) {
+        return Err(match problem.model(&x0).transfer_function() {
+            Err(e) => FitError::BadGuess(e),
+            Ok(_) => FitError::NonFiniteCost,
+        });
+    }
     let starts = problem.starts(&x0, options.starts.max(1), options.seed);
+    let n = data.y.len() as f64;
     let mut best: Option<Run> = None;
     for (k, start) in starts.iter().enumerate() {
         if observer.cancelled() {
             break;
         }
-        let best_cost = best.as_ref().map_or(f64::INFINITY, |b| b.cost);
-        let mut report = |iteration: usize, cost: f64, x: &[f64]| {
-            observer.progress(&Progress {
-                start: k,
-                starts: starts.len(),
-                iteration,
-                cost,
-                best_cost: best_cost.min(cost),
-                model: problem.model(x),
-            });
+        let best_cost = best.as_ref().map_or(f64::INFINITY, |b| b.sse / n);
+        let mut report = |iteration: usize, sse: f64, x: &[f64]| {
+            if let Ok(model) = problem.model_out(x) {
+                observer.progress(&Progress {
+                    start: k,
+                    starts: starts.len(),
+                    iteration,
+                    cost: problem.units.mse_out(sse / n),
+                    best_cost: problem.units.mse_out(best_cost.min(sse / n)),
+                    model,
+                });
+            }
             observer.cancelled()
         };
         let run = match options.method {
-            Method::LevenbergMarquardt => {
-                problem.levenberg_marquardt(start, options.max_iterations, &mut report)
-            }
+            Method::LevenbergMarquardt => problem.levenberg_marquardt(
+                start,
+                options.max_iterations,
+                Stop::CostSettles,
+                &mut report,
+            ),
             Method::NelderMead => {
                 problem.nelder_mead(start, options.max_iterations * 10, &mut report)
             }
         };
         let Some(mut run) = run else { continue };
-        run.aliased = alias_warning(&problem.model(&run.x), data).is_some();
-        if best.as_ref().is_none_or(|b| run.better_than(b)) {
-            best = Some(run);
+        // Only a run that could win needs the (costly) alias check: see [`Run::better_than`].
+        if best.as_ref().is_none_or(|b| run.sse < b.sse || b.aliased) {
+            run.aliased = problem.alias(&run.x).is_some();
+            if best.as_ref().is_none_or(|b| run.better_than(b)) {
+                best = Some(run);
+            }
         }
     }
     let cancelled = observer.cancelled();
     let mut run = best.unwrap_or_else(|| Run {
         x: x0.clone(),
-        cost: problem.cost(&x0).unwrap_or(f64::INFINITY),
+        sse: problem.sse(&x0, None).unwrap_or(f64::INFINITY),
         iterations: 0,
         termination: Termination::Cancelled,
         path: vec![x0.clone()],
@@ -316,29 +425,35 @@ pub fn fit(
     });
     if cancelled {
         run.termination = Termination::Cancelled;
+    } else if options.method == Method::LevenbergMarquardt {
+        problem.polish(&mut run);
     }
-    Ok(problem.report(run, options, starts.len()))
+    problem.report(run, options, starts.len())
 }
 
 fn validate(data: &FitData, structure: &Structure) -> Result<(), FitError> {
     if !data.setup.du.is_finite() || data.setup.du == 0.0 {
         return Err(FitError::BadStep(data.setup.du));
     }
+    if !data.setup.t0.is_finite() {
+        return Err(FitError::BadStepTime(data.setup.t0));
+    }
     if data.times.iter().chain(&data.y).any(|v| !v.is_finite()) {
         return Err(FitError::NonFiniteData);
     }
     let after = data.times.iter().filter(|&&t| t >= data.setup.t0).count();
     let p = structure.len();
-    if after <= p || data.times.len() <= p + 1 {
+    if after <= p || data.times.len() <= p + 1 || data.y.len() != data.times.len() {
         return Err(FitError::TooFewSamples { n: after, p });
     }
     Ok(())
 }
 
-/// One optimiser run.
+/// One optimiser run, in internal units.
 struct Run {
     x: Vec<f64>,
-    cost: f64,
+    /// Sum of squared residuals (internal units).
+    sse: f64,
     iterations: usize,
     termination: Termination,
     path: Vec<Vec<f64>>,
@@ -353,54 +468,89 @@ impl Run {
         match (self.aliased, other.aliased) {
             (false, true) => true,
             (true, false) => false,
-            _ => self.cost < other.cost,
+            _ => self.sse < other.sse,
         }
     }
 }
 
-/// The least-squares problem in the free parameters.
-struct Problem<'a> {
-    data: &'a FitData,
+/// When Levenberg–Marquardt stops.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Stop {
+    /// Also when an accepted step lowers the cost by less than 1e-10 of itself.
+    CostSettles,
+    /// Only when the steps become negligible (or no step lowers the cost): the parameters to
+    /// about 1e-10, whatever the rounding of the data.
+    StepsSettle,
+}
+
+/// The normal equations of the linearised problem at a point: A = JᵀJ, g = Jᵀr.
+struct Normal {
+    a: DMatrix<f64>,
+    g: DVector<f64>,
+}
+
+/// The least-squares problem in the free parameters, on the record in internal units.
+struct Problem {
+    /// The record in internal units.
+    data: FitData,
+    units: Scale,
+    /// Median sampling period (internal units).
+    ts: f64,
     structure: Structure,
     params: Vec<Param>,
     lower: Vec<f64>,
     upper: Vec<f64>,
-    /// Typical magnitudes, for finite-difference steps.
-    scale: Vec<f64>,
-    /// Values of the parameters that are not estimated (e.g. a fixed Y0).
+    /// Typical magnitudes, for finite-difference steps (internal units).
+    typical: Vec<f64>,
+    /// The guess, with the values of the parameters that are not estimated (e.g. a fixed Y0),
+    /// in internal units.
     fixed: Values,
 }
 
-impl<'a> Problem<'a> {
-    fn new(data: &'a FitData, structure: Structure, held: Values) -> Self {
+impl Problem {
+    fn new(data: &FitData, structure: Structure, guess: Values) -> Result<Self, FitError> {
+        let ts = data.sampling_period();
+        let units = Scale::of(data, ts).ok_or(FitError::BadStep(data.setup.du))?;
+        units.check(structure)?;
+        let data = units.data_in(data);
+        let ts = ts / units.t_unit;
+        let duration = data.duration_with(ts);
         let params = structure.params();
-        let (lower, upper): (Vec<f64>, Vec<f64>) = params.iter().map(|&p| bounds(p, data)).unzip();
+        let (lower, upper): (Vec<f64>, Vec<f64>) =
+            params.iter().map(|&p| bounds_with(p, ts, duration)).unzip();
         let y_span = data.y.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b))
             - data.y.iter().fold(f64::INFINITY, |a, &b| a.min(b));
         let y_scale = y_span.abs().max(1e-12);
-        let scale = params
+        let typical = params
             .iter()
             .map(|&p| match p {
-                Param::Kp => y_scale / data.setup.du.abs(),
-                Param::Y0 => y_scale,
-                Param::Drift => y_scale / data.duration(),
+                Param::Kp | Param::Y0 => y_scale,
+                Param::Drift => y_scale / duration,
                 Param::Zeta => 1.0,
-                _ => data.sampling_period(),
+                _ => ts,
             })
             .collect();
-        Self {
+        Ok(Self {
+            fixed: units.values_in(structure, &guess),
             data,
+            units,
+            ts,
             structure,
             params,
             lower,
             upper,
-            scale,
-            fixed: held,
-        }
+            typical,
+        })
     }
 
+    /// The model at `x` (internal units).
     fn model(&self, x: &[f64]) -> Model {
         Model::new(self.structure, self.fixed.with_vector(&self.params, x))
+    }
+
+    /// The model at `x` in the data's units.
+    fn model_out(&self, x: &[f64]) -> Result<Model, Unrepresentable> {
+        self.units.model_out(&self.model(x))
     }
 
     fn clamp(&self, mut x: Vec<f64>) -> Vec<f64> {
@@ -410,53 +560,117 @@ impl<'a> Problem<'a> {
         x
     }
 
-    fn residuals(&self, x: &[f64], out: &mut [f64]) -> Result<(), ModelError> {
-        self.model(x)
-            .simulate_into(&self.data.setup, &self.data.times, out)?;
-        for (r, y) in out.iter_mut().zip(&self.data.y) {
+    fn simulator(&self, x: &[f64]) -> Result<Simulator, ModelError> {
+        self.model(x).simulator(&self.data.setup)
+    }
+
+    /// Residuals y − ŷ of one piece of the record (`range`) into `out`.
+    fn piece(&self, s: &Simulator, range: std::ops::Range<usize>, out: &mut [f64]) {
+        let out = &mut out[..range.len()];
+        s.fill(&self.data.times[range.clone()], out);
+        for (r, y) in out.iter_mut().zip(&self.data.y[range]) {
             *r = y - *r;
         }
-        if out.iter().any(|r| !r.is_finite()) {
-            return Err(ModelError::BadValue {
-                name: "model",
-                value: f64::NAN,
-                why: "its response overflowed",
-            });
+    }
+
+    /// The pieces of the record.
+    fn pieces(&self) -> impl Iterator<Item = std::ops::Range<usize>> + use<> {
+        let n = self.data.y.len();
+        (0..n.div_ceil(CHUNK)).map(move |k| k * CHUNK..(k * CHUNK + CHUNK).min(n))
+    }
+
+    /// Sum of squared residuals at `x`, keeping the residuals in `keep` when given (a slice
+    /// of the record's length); an error when the model is invalid or a residual is not
+    /// finite.
+    fn sse(&self, x: &[f64], mut keep: Option<&mut [f64]>) -> Result<f64, ModelError> {
+        let s = self.simulator(x)?;
+        let mut buffer = if keep.is_some() {
+            Vec::new()
+        } else {
+            vec![0.0; CHUNK.min(self.data.y.len())]
+        };
+        let mut sum = 0.0;
+        for range in self.pieces() {
+            let out = match keep.as_deref_mut() {
+                Some(k) => &mut k[range.clone()],
+                None => &mut buffer[..],
+            };
+            self.piece(&s, range.clone(), out);
+            sum += out[..range.len()].iter().map(|v| v * v).sum::<f64>();
         }
-        Ok(())
+        if sum.is_finite() {
+            Ok(sum)
+        } else {
+            Err(ModelError::BadValue {
+                name: "model",
+                value: sum,
+                why: "its response overflowed",
+            })
+        }
     }
 
-    /// Mean squared error.
-    fn cost(&self, x: &[f64]) -> Result<f64, ModelError> {
-        let mut r = vec![0.0; self.data.y.len()];
-        self.residuals(x, &mut r)?;
-        Ok(r.iter().map(|v| v * v).sum::<f64>() / r.len() as f64)
-    }
-
-    /// Forward-difference Jacobian of the residuals (backward at an upper bound).
-    fn jacobian(&self, x: &[f64], r: &[f64]) -> Option<DMatrix<f64>> {
-        let n = r.len();
-        let mut j = DMatrix::zeros(n, x.len());
+    /// A = JᵀJ and g = Jᵀr at `x` from the forward-difference Jacobian of the residuals
+    /// (backward at an upper bound), summed piece by piece; `known` are the residuals at `x`
+    /// when the caller kept them.
+    fn normal_equations(&self, x: &[f64], known: Option<&[f64]>) -> Option<Normal> {
+        let p = x.len();
+        let base = self.simulator(x).ok()?;
+        let mut steps = Vec::with_capacity(p);
+        let mut shifted_models = Vec::with_capacity(p);
         let mut shifted = x.to_vec();
-        let mut r2 = vec![0.0; n];
-        for i in 0..x.len() {
-            let mut h = f64::EPSILON.sqrt() * x[i].abs().max(self.scale[i]);
+        for i in 0..p {
+            let mut h = f64::EPSILON.sqrt() * x[i].abs().max(self.typical[i]);
             if x[i] + h > self.upper[i] {
                 h = -h;
             }
             shifted[i] = x[i] + h;
-            self.residuals(&shifted, &mut r2).ok()?;
-            for k in 0..n {
-                j[(k, i)] = (r2[k] - r[k]) / h;
-            }
+            shifted_models.push(self.simulator(&shifted).ok()?);
             shifted[i] = x[i];
+            steps.push(h);
         }
-        Some(j)
+        let width = CHUNK.min(self.data.y.len());
+        let mut r = vec![0.0; width];
+        let mut columns = vec![vec![0.0; width]; p];
+        let mut a = DMatrix::<f64>::zeros(p, p);
+        let mut g = DVector::<f64>::zeros(p);
+        for range in self.pieces() {
+            let len = range.len();
+            let r = match known {
+                Some(k) => &k[range.clone()],
+                None => {
+                    self.piece(&base, range.clone(), &mut r);
+                    &r[..len]
+                }
+            };
+            for ((column, s), h) in columns.iter_mut().zip(&shifted_models).zip(&steps) {
+                self.piece(s, range.clone(), column);
+                for (c, base) in column[..len].iter_mut().zip(r) {
+                    *c = (*c - base) / h;
+                }
+            }
+            for i in 0..p {
+                let ci = &columns[i][..len];
+                g[i] += dot(ci, r);
+                for k in 0..=i {
+                    a[(i, k)] += dot(ci, &columns[k][..len]);
+                }
+            }
+        }
+        for i in 0..p {
+            for k in 0..i {
+                a[(k, i)] = a[(i, k)];
+            }
+        }
+        a.iter()
+            .chain(g.iter())
+            .all(|v| v.is_finite())
+            .then_some(Normal { a, g })
     }
 
     /// Start points: the guess, then spread-out points around it (reproducible).
     fn starts(&self, x0: &[f64], count: usize, seed: u64) -> Vec<Vec<f64>> {
         let mut rng = Lcg(seed.wrapping_mul(2654435761).wrapping_add(1));
+        let duration = self.data.duration_with(self.ts);
         let mut out = vec![x0.to_vec()];
         while out.len() < count {
             let x: Vec<f64> = self
@@ -469,10 +683,7 @@ impl<'a> Problem<'a> {
                     }
                     Param::Zeta => 0.05 + 0.9 * rng.unit(),
                     Param::Td => v * (0.3 + 1.4 * rng.unit()),
-                    Param::Tz => {
-                        v + self.scale[0].max(1.0) * 0.0
-                            + rng.symmetric() * self.data.duration() * 0.3
-                    }
+                    Param::Tz => v + rng.symmetric() * duration * 0.3,
                     Param::Kp => v * (0.5 * rng.symmetric()).exp(),
                     Param::Y0 | Param::Drift => v,
                 })
@@ -487,29 +698,29 @@ impl<'a> Problem<'a> {
         &self,
         x: &[f64],
         max_iterations: usize,
+        stop: Stop,
         report: &mut dyn FnMut(usize, f64, &[f64]) -> bool,
     ) -> Option<Run> {
         let n = self.data.y.len();
         let m = x.len();
+        // A record of one piece keeps its residuals between the cost and the Jacobian.
+        let keep = n <= CHUNK;
+        let mut r = vec![0.0; if keep { n } else { 0 }];
+        let mut trial = r.clone();
         let mut x = x.to_vec();
-        let mut r = vec![0.0; n];
-        self.residuals(&x, &mut r).ok()?;
-        let mut sse: f64 = r.iter().map(|v| v * v).sum();
+        let mut sse = self.sse(&x, keep.then_some(&mut r[..])).ok()?;
         let mut lambda = 1e-3;
         let mut path = vec![x.clone()];
         let mut termination = Termination::IterationLimit;
         let mut iterations = 0;
-        let mut trial = vec![0.0; n];
         for iteration in 1..=max_iterations {
             iterations = iteration;
-            if report(iteration, sse / n as f64, &x) {
+            if report(iteration, sse, &x) {
                 termination = Termination::Cancelled;
                 break;
             }
-            let j = self.jacobian(&x, &r)?;
+            let Normal { a, g } = self.normal_equations(&x, keep.then_some(&r[..]))?;
             // With r = y − ŷ and J = ∂r/∂x the cost gradient is 2Jᵀr: descent is −Jᵀr.
-            let g = j.tr_mul(&DVector::from_column_slice(&r));
-            let a = j.tr_mul(&j);
             // Active set: at a bound with the descent direction pointing out of the box.
             let free: Vec<usize> = (0..m)
                 .filter(|&i| {
@@ -519,7 +730,7 @@ impl<'a> Problem<'a> {
                 .collect();
             let gradient_norm = free
                 .iter()
-                .map(|&i| (g[i] * self.scale[i]).abs())
+                .map(|&i| (g[i] * self.typical[i]).abs())
                 .fold(0.0, f64::max);
             if gradient_norm <= 1e-12 * sse.max(f64::MIN_POSITIVE) || free.is_empty() {
                 termination = Termination::Gradient;
@@ -537,7 +748,7 @@ impl<'a> Problem<'a> {
                         lhs[(a_i, a_j)] = a[(i, jj)];
                     }
                     lhs[(a_i, a_i)] +=
-                        lambda * a[(i, i)].max(1e-12 / (self.scale[i] * self.scale[i]));
+                        lambda * a[(i, i)].max(1e-12 / (self.typical[i] * self.typical[i]));
                 }
                 let Some(delta) = lhs.cholesky().map(|c| c.solve(&rhs)) else {
                     lambda *= 10.0;
@@ -547,25 +758,24 @@ impl<'a> Problem<'a> {
                 for (a_i, &i) in free.iter().enumerate() {
                     candidate[i] = (x[i] + delta[a_i]).clamp(self.lower[i], self.upper[i]);
                 }
-                step_small = free
-                    .iter()
-                    .all(|&i| (candidate[i] - x[i]).abs() <= 1e-10 * (x[i].abs() + self.scale[i]));
-                if self.residuals(&candidate, &mut trial).is_ok() {
-                    let new_sse: f64 = trial.iter().map(|v| v * v).sum();
-                    if new_sse < sse {
-                        let relative = (sse - new_sse) / sse.max(f64::MIN_POSITIVE);
-                        let rho = (sse - new_sse) / predicted_reduction(&g, &a, &x, &candidate);
-                        x = candidate;
-                        std::mem::swap(&mut r, &mut trial);
-                        sse = new_sse;
-                        lambda = damping_after_success(lambda, rho);
-                        accepted = true;
-                        path.push(x.clone());
-                        if relative < 1e-10 {
-                            termination = Termination::SmallCostChange;
-                        }
-                        break;
+                step_small = free.iter().all(|&i| {
+                    (candidate[i] - x[i]).abs() <= 1e-10 * (x[i].abs() + self.typical[i])
+                });
+                if let Ok(new_sse) = self.sse(&candidate, keep.then_some(&mut trial[..]))
+                    && new_sse < sse
+                {
+                    let relative = (sse - new_sse) / sse.max(f64::MIN_POSITIVE);
+                    let rho = (sse - new_sse) / predicted_reduction(&g, &a, &x, &candidate);
+                    x = candidate;
+                    std::mem::swap(&mut r, &mut trial);
+                    sse = new_sse;
+                    lambda = damping_after_success(lambda, rho);
+                    accepted = true;
+                    path.push(x.clone());
+                    if relative < 1e-10 && stop == Stop::CostSettles {
+                        termination = Termination::SmallCostChange;
                     }
+                    break;
                 }
                 if step_small {
                     break;
@@ -576,7 +786,9 @@ impl<'a> Problem<'a> {
                 break;
             }
             if !accepted {
-                termination = if step_small {
+                termination = if path.len() == 1 {
+                    Termination::NoImprovement
+                } else if step_small {
                     Termination::SmallStep
                 } else {
                     Termination::SmallCostChange
@@ -586,15 +798,37 @@ impl<'a> Problem<'a> {
         }
         Some(Run {
             x,
-            cost: sse / n as f64,
+            sse,
             iterations,
             termination,
             path,
             aliased: false,
         })
     }
+    /// Refines a converged run until its steps are negligible, so that the optimum does not
+    /// depend on where the cost test happened to stop it (a few iterations at most).
+    fn polish(&self, run: &mut Run) {
+        if matches!(
+            run.termination,
+            Termination::IterationLimit | Termination::NoImprovement | Termination::Cancelled
+        ) {
+            return;
+        }
+        let Some(fine) =
+            self.levenberg_marquardt(&run.x, 10, Stop::StepsSettle, &mut |_, _, _| false)
+        else {
+            return;
+        };
+        if fine.sse < run.sse {
+            run.iterations += fine.iterations;
+            run.path.extend(fine.path.into_iter().skip(1));
+            run.x = fine.x;
+            run.sse = fine.sse;
+        }
+    }
 
-    /// Bounded Nelder–Mead on the MSE from `x` (fminsearch's simplex and coefficients).
+    /// Bounded Nelder–Mead on the sum of squares from `x` (fminsearch's simplex and
+    /// coefficients).
     fn nelder_mead(
         &self,
         x: &[f64],
@@ -602,7 +836,7 @@ impl<'a> Problem<'a> {
         report: &mut dyn FnMut(usize, f64, &[f64]) -> bool,
     ) -> Option<Run> {
         let m = x.len();
-        let f = |p: &[f64]| self.cost(p).unwrap_or(f64::INFINITY);
+        let f = |p: &[f64]| self.sse(p, None).unwrap_or(f64::INFINITY);
         let mut simplex: Vec<(Vec<f64>, f64)> = Vec::with_capacity(m + 1);
         simplex.push((x.to_vec(), f(x)));
         for i in 0..m {
@@ -632,7 +866,7 @@ impl<'a> Problem<'a> {
                     p.iter()
                         .zip(&simplex[0].0)
                         .enumerate()
-                        .map(|(i, (a, b))| (a - b).abs() / (b.abs() + self.scale[i]))
+                        .map(|(i, (a, b))| (a - b).abs() / (b.abs() + self.typical[i]))
                 })
                 .fold(0.0, f64::max);
             if spread_f <= 1e-12 * simplex[0].1.abs().max(f64::MIN_POSITIVE) && spread_x <= 1e-9 {
@@ -691,10 +925,16 @@ impl<'a> Problem<'a> {
             }
         }
         simplex.sort_by(|a, b| a.1.total_cmp(&b.1));
-        let (x, cost) = simplex.swap_remove(0);
-        cost.is_finite().then_some(Run {
+        let (x, sse) = simplex.swap_remove(0);
+        let unmoved = path.len() == 1 && x == path[0];
+        let termination = if unmoved && termination != Termination::Cancelled {
+            Termination::NoImprovement
+        } else {
+            termination
+        };
+        sse.is_finite().then_some(Run {
             x,
-            cost,
+            sse,
             iterations,
             termination,
             path,
@@ -702,46 +942,42 @@ impl<'a> Problem<'a> {
         })
     }
 
-    fn report(&self, run: Run, options: &FitOptions, starts: usize) -> FitReport {
-        let model = self.model(&run.x);
+    fn report(&self, run: Run, options: &FitOptions, starts: usize) -> Result<FitReport, FitError> {
+        let units = &self.units;
+        let model = self.model_out(&run.x)?;
         let n = self.data.y.len();
         let p = self.params.len();
-        let mut r = vec![0.0; n];
-        let ok = self.residuals(&run.x, &mut r).is_ok();
-        let sse: f64 = r.iter().map(|v| v * v).sum();
-        let mse = sse / n as f64;
+        let mse = run.sse / n as f64;
         let mean = self.data.y.iter().sum::<f64>() / n as f64;
-        let spread = self
-            .data
-            .y
-            .iter()
-            .map(|y| (y - mean).powi(2))
-            .sum::<f64>()
-            .sqrt();
+        let spread = dot_self(self.data.y.iter().map(|y| y - mean)).sqrt();
         let fit_percent = if spread > 0.0 {
-            100.0 * (1.0 - sse.sqrt() / spread)
+            100.0 * (1.0 - run.sse.sqrt() / spread)
         } else {
             f64::NAN
         };
-        let aic = n as f64 * mse.max(f64::MIN_POSITIVE).ln()
+        let ln_mse = units.ln_mse_out(mse);
+        let aic = n as f64 * ln_mse
             + 2.0 * p as f64
             + n as f64 * ((2.0 * std::f64::consts::PI).ln() + 1.0);
         let mut warnings = Vec::new();
-        let intervals = if ok {
-            self.intervals(&run.x, &r, sse, &mut warnings)
-        } else {
-            vec![None; p]
-        };
+        let mse_out = units.mse_out(mse);
+        if mse > 0.0 && !mse_out.is_normal() {
+            warnings.push(FitWarning::Unrepresentable {
+                statistic: "MSE".into(),
+                log10: ln_mse / std::f64::consts::LN_10,
+            });
+        }
+        let intervals = self.intervals(&run.x, run.sse, &mut warnings);
         for (i, &param) in self.params.iter().enumerate() {
             for bound in [self.lower[i], self.upper[i]] {
-                let tolerance = 1e-6 * (bound.abs() + self.scale[i]);
+                let tolerance = 1e-6 * (bound.abs() + self.typical[i]);
                 if bound.is_finite()
                     && (run.x[i] - bound).abs() <= tolerance
                     && !(param == Param::Td && bound == 0.0)
                 {
                     warnings.push(FitWarning::AtBound {
                         param: param.name().into(),
-                        bound,
+                        bound: units.value_out(param, self.structure, bound),
                     });
                 }
             }
@@ -751,25 +987,35 @@ impl<'a> Problem<'a> {
                 zeta: model.get(Param::Zeta),
             });
         }
-        if let Some(alias) = alias_warning(&model, self.data) {
+        if let Some(alias) = self.alias(&run.x) {
             warnings.push(alias);
         }
-        if run.termination == Termination::IterationLimit {
-            warnings.push(FitWarning::NotConverged);
+        match run.termination {
+            Termination::IterationLimit => warnings.push(FitWarning::NotConverged),
+            Termination::NoImprovement => warnings.push(FitWarning::NoImprovement),
+            _ => {}
         }
-        FitReport {
+        let out = |param: Param, x: f64| units.value_out(param, self.structure, x);
+        Ok(FitReport {
             params: self
                 .params
                 .iter()
                 .zip(&run.x)
                 .zip(intervals)
-                .map(|((&param, &value), ci95)| Estimate { param, value, ci95 })
+                .map(|((&param, &value), ci95)| Estimate {
+                    param,
+                    value: out(param, value),
+                    ci95: ci95
+                        .map(|(lo, hi)| (out(param, lo), out(param, hi)))
+                        .filter(|(lo, hi)| lo.is_finite() && hi.is_finite()),
+                })
                 .collect(),
             model,
             method: options.method,
             n,
-            mse,
-            rmse: mse.sqrt(),
+            mse: mse_out,
+            ln_mse,
+            rmse: units.output_difference_out(mse.sqrt()),
             fit_percent,
             aic,
             iterations: run.iterations,
@@ -779,28 +1025,27 @@ impl<'a> Problem<'a> {
             path: run
                 .path
                 .iter()
-                .map(|x| self.fixed.with_vector(&self.params, x))
+                .filter_map(|x| self.model_out(x).ok().map(|m| m.values))
                 .collect(),
-        }
+            units: *units,
+        })
     }
 
-    /// 95 % intervals from s²(JᵀJ)⁻¹.
+    /// 95 % intervals from s²(JᵀJ)⁻¹ (internal units).
     fn intervals(
         &self,
         x: &[f64],
-        r: &[f64],
         sse: f64,
         warnings: &mut Vec<FitWarning>,
     ) -> Vec<Option<(f64, f64)>> {
-        let (n, p) = (r.len(), x.len());
+        let (n, p) = (self.data.y.len(), x.len());
         let none = vec![None; p];
         if n <= p {
             return none;
         }
-        let Some(j) = self.jacobian(x, r) else {
+        let Some(Normal { a, .. }) = self.normal_equations(x, None) else {
             return none;
         };
-        let a = j.tr_mul(&j);
         let dof = (n - p) as f64;
         let s2 = sse / dof;
         let t = student_t_quantile(0.975, dof);
@@ -843,6 +1088,21 @@ impl<'a> Problem<'a> {
             })
             .collect()
     }
+
+    /// The alias check of the model at `x`, its frequencies in the data's units.
+    fn alias(&self, x: &[f64]) -> Option<FitWarning> {
+        alias_in(&self.model(x), &self.data, self.ts).map(|w| frequencies_out(w, &self.units))
+    }
+}
+
+/// Σ aᵢbᵢ.
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// Σ xᵢ².
+fn dot_self(x: impl Iterator<Item = f64>) -> f64 {
+    x.map(|v| v * v).sum()
 }
 
 /// The fall of the sum of squares that the linearised model predicts for the step from `x`
@@ -873,9 +1133,20 @@ fn is_positive(x: f64) -> bool {
 
 /// The alias check: an oscillation faster than the sampling can show (ωd ≥ π/Ts), or a
 /// model that swings between samples by more than 10 % of the step's effect beyond what
-/// straight lines through its own samples show.
+/// straight lines through its own samples show. Computed in the record's internal units.
 pub fn alias_warning(model: &Model, data: &FitData) -> Option<FitWarning> {
     let ts = data.sampling_period();
+    let units = Scale::of(data, ts)?;
+    alias_in(
+        &units.model_in(model),
+        &units.data_in(data),
+        ts / units.t_unit,
+    )
+    .map(|w| frequencies_out(w, &units))
+}
+
+/// [`alias_warning`] on a record and model in the same units, sampled every `ts`.
+fn alias_in(model: &Model, data: &FitData, ts: f64) -> Option<FitWarning> {
     let nyquist = std::f64::consts::PI / ts;
     let omega_d = model.damped_frequency().unwrap_or(0.0);
     let effect = (model.get(Param::Kp) * data.setup.du)
@@ -889,32 +1160,59 @@ pub fn alias_warning(model: &Model, data: &FitData) -> Option<FitWarning> {
     })
 }
 
+/// An alias warning's frequencies (rad per internal time unit) in rad/s.
+fn frequencies_out(w: FitWarning, units: &Scale) -> FitWarning {
+    match w {
+        FitWarning::Alias {
+            omega_d,
+            nyquist,
+            between_samples,
+        } => FitWarning::Alias {
+            omega_d: omega_d / units.t_unit,
+            nyquist: nyquist / units.t_unit,
+            between_samples,
+        },
+        other => other,
+    }
+}
+
 /// The largest distance between the model on a 16× finer grid and the straight lines
-/// through the model's values at the sample instants.
+/// through the model's values at the sample instants, over the windows that end after the
+/// step; evaluated a piece of the record at a time.
 fn between_sample_swing(model: &Model, data: &FitData) -> f64 {
     const REFINE: usize = 16;
     let t = &data.times;
-    if t.len() < 2 {
-        return 0.0;
-    }
-    let Ok(at_samples) = model.simulate(&data.setup, t) else {
+    let Ok(simulator) = model.simulator(&data.setup) else {
         return 0.0;
     };
-    let fine: Vec<f64> = t
-        .windows(2)
-        .flat_map(|w| (1..REFINE).map(move |k| w[0] + (w[1] - w[0]) * k as f64 / REFINE as f64))
-        .collect();
-    let Ok(values) = model.simulate(&data.setup, &fine) else {
-        return 0.0;
-    };
+    let windows = t.len().saturating_sub(1);
+    let per_piece = CHUNK / REFINE;
+    let (mut fine, mut values) = (Vec::new(), Vec::new());
     let mut worst: f64 = 0.0;
-    for (i, w) in t.windows(2).enumerate() {
-        for k in 1..REFINE {
-            let s = k as f64 / REFINE as f64;
-            let line = at_samples[i] + s * (at_samples[i + 1] - at_samples[i]);
-            let v = values[i * (REFINE - 1) + k - 1];
-            if w[1] > data.setup.t0 {
-                worst = worst.max((v - line).abs());
+    for start in (0..windows).step_by(per_piece) {
+        let end = (start + per_piece).min(windows);
+        fine.clear();
+        if let Some((a, b)) = super::models::uniform_grid(&t[start..=end]) {
+            // Evenly spaced by construction, so the fast recurrence evaluates it.
+            let m = REFINE * (end - start);
+            fine.extend((0..=m).map(|j| a + (b - a) * j as f64 / m as f64));
+        } else {
+            for i in start..end {
+                let (a, b) = (t[i], t[i + 1]);
+                fine.extend((0..REFINE).map(|k| a + (b - a) * k as f64 / REFINE as f64));
+            }
+            fine.push(t[end]);
+        }
+        values.resize(fine.len(), 0.0);
+        simulator.fill(&fine, &mut values);
+        for (w, i) in (start..end).enumerate() {
+            if t[i + 1] <= data.setup.t0 {
+                continue;
+            }
+            let (ya, yb) = (values[w * REFINE], values[(w + 1) * REFINE]);
+            for k in 1..REFINE {
+                let line = ya + k as f64 / REFINE as f64 * (yb - ya);
+                worst = worst.max((values[w * REFINE + k] - line).abs());
             }
         }
     }

@@ -4,9 +4,13 @@
 //! crossings of the final level (or π over the peak time), an integrator's gain from the
 //! final slope. The dead time is the data's 5 % time minus the 5 % time of the guessed model
 //! without delay, which works for every structure alike.
+//!
+//! Both the features and the guess are read in the record's internal units ([`Scale`]) and
+//! scaled back, so they do not depend on the record's scale (a 1e300 output, time in years).
 
 use super::fit::FitData;
 use super::models::{Model, Param, StepSetup, Structure, Values};
+use super::scale::Scale;
 
 /// What the curve shows, relative to the operating point y0 and the final level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,11 +45,51 @@ pub fn level_before(data: &FitData) -> Option<f64> {
         .filter(|(t, _)| **t < data.setup.t0)
         .map(|(_, y)| *y)
         .collect();
-    (!before.is_empty()).then(|| before.iter().sum::<f64>() / before.len() as f64)
+    (!before.is_empty()).then(|| mean(&before))
+}
+
+/// The mean, without overflow for values near the largest double.
+pub(crate) fn mean(v: &[f64]) -> f64 {
+    let n = v.len() as f64;
+    let sum = v.iter().sum::<f64>();
+    if sum.is_finite() {
+        sum / n
+    } else {
+        v.iter().map(|x| x / n).sum()
+    }
+}
+
+/// The record's internal units and the record in them, `None` when it has none (no step).
+fn internal(data: &FitData) -> Option<(Scale, FitData)> {
+    let units = Scale::of(data, data.sampling_period())?;
+    let inside = units.data_in(data);
+    Some((units, inside))
 }
 
 /// Reads the features of the curve; `y0` overrides the level before the step.
 pub fn features(data: &FitData, y0: Option<f64>) -> CurveFeatures {
+    let Some((u, inside)) = internal(data) else {
+        return features_as_given(data, y0);
+    };
+    let f = features_as_given(&inside, y0.map(|y| u.output_in(y)));
+    let time = |t: Option<f64>| t.map(|t| t * u.t_unit);
+    CurveFeatures {
+        y0: u.y_level + f.y0 * u.y_unit,
+        y_final: u.y_level + f.y_final * u.y_unit,
+        final_slope: f.final_slope * u.y_unit / u.t_unit,
+        t5: time(f.t5),
+        t28: time(f.t28),
+        t63: time(f.t63),
+        t_peak: time(f.t_peak),
+        overshoot_decay: time(f.overshoot_decay),
+        t_dip: time(f.t_dip),
+        period: time(f.period),
+        ..f
+    }
+}
+
+/// [`features`] read in the record's units as they are.
+fn features_as_given(data: &FitData, y0: Option<f64>) -> CurveFeatures {
     let n = data.y.len();
     let y0 = y0
         .or_else(|| level_before(data))
@@ -171,7 +215,17 @@ fn slope(t: &[f64], y: &[f64]) -> f64 {
 
 /// An initial guess for `structure`; `y0` is the operating point when known.
 pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Values {
-    let f = features(data, y0);
+    internal(data)
+        .and_then(|(u, inside)| {
+            let guess = guess_as_given(&inside, structure, y0.map(|y| u.output_in(y)));
+            u.values_out(structure, &guess).ok()
+        })
+        .unwrap_or_else(|| guess_as_given(data, structure, y0))
+}
+
+/// [`auto_guess`] in the record's units as they are.
+fn guess_as_given(data: &FitData, structure: Structure, y0: Option<f64>) -> Values {
+    let f = features_as_given(data, y0);
     let duration = data.duration();
     let ts = data.sampling_period();
     let du = data.setup.du;

@@ -1,12 +1,13 @@
 //! The cost landscape: the mean squared error over a grid of two parameters, the others held
 //! at a model's values (e.g. ζ and ωn with Kp and Td at the fit, as the LECI notes' Figure 4
 //! shows it, with its several local minima). Computed in rows so a caller can show progress
-//! and cancel.
+//! and cancel, in the record's internal units ([`Scale`]) like a fit, and scaled back.
 
 use serde::{Deserialize, Serialize};
 
 use super::fit::FitData;
 use super::models::{Model, Param, Values};
+use super::scale::Scale;
 
 /// One axis of the landscape: a parameter, or ωn = 1/Tw for an underdamped pair.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -57,8 +58,13 @@ pub struct Landscape {
     pub xs: Vec<f64>,
     pub ys: Vec<f64>,
     /// MSE, row-major: `cost[j * xs.len() + i]` at (xs[i], ys[j]); infinite where the model
-    /// is invalid.
+    /// is invalid. In (output units)² when `cost_log10_unit` is 0, else in units of
+    /// 10^cost_log10_unit (output units)² (a 1e300 record's MSE, 1e596, is beyond doubles).
     pub cost: Vec<f64>,
+    /// log₁₀ of the unit of `cost` in (output units)²: 0 unless the MSE itself is beyond
+    /// double precision.
+    #[serde(default)]
+    pub cost_log10_unit: f64,
 }
 
 impl Landscape {
@@ -114,6 +120,10 @@ pub fn compute(
     (y_axis, ys): (Axis, Vec<f64>),
     on_row: &mut dyn FnMut(usize, usize) -> bool,
 ) -> Option<Landscape> {
+    let units = Scale::of(data, data.sampling_period()).unwrap_or_default();
+    let unit_square = units.mse_out(1.0);
+    let physical = unit_square.is_normal();
+    let inside = units.data_in(data);
     let mut cost = Vec::with_capacity(xs.len() * ys.len());
     let mut buffer = vec![0.0; data.times.len()];
     for (j, &y) in ys.iter().enumerate() {
@@ -121,18 +131,19 @@ pub fn compute(
             let mut v = model.values;
             x_axis.set(&mut v, x);
             y_axis.set(&mut v, y);
-            let m = Model::new(model.structure, v);
-            let c = match m.simulate_into(&data.setup, &data.times, &mut buffer) {
+            let m = units.model_in(&Model::new(model.structure, v));
+            let c = match m.simulate_into(&inside.setup, &inside.times, &mut buffer) {
                 Ok(()) => {
                     buffer
                         .iter()
-                        .zip(&data.y)
+                        .zip(&inside.y)
                         .map(|(m, y)| (y - m).powi(2))
                         .sum::<f64>()
-                        / data.y.len() as f64
+                        / inside.y.len() as f64
                 }
                 Err(_) => f64::INFINITY,
             };
+            let c = if physical { c * unit_square } else { c };
             cost.push(if c.is_finite() { c } else { f64::INFINITY });
         }
         if on_row(j + 1, ys.len()) {
@@ -145,6 +156,11 @@ pub fn compute(
         xs,
         ys,
         cost,
+        cost_log10_unit: if physical {
+            0.0
+        } else {
+            2.0 * units.y_unit.log10()
+        },
     })
 }
 

@@ -12,4 +12,5 @@ pub mod landscape;
 pub mod models;
 pub mod prepare;
 pub mod residuals;
+pub mod scale;
 pub mod stats;

@@ -406,33 +406,22 @@ impl Model {
         times: &[f64],
         out: &mut [f64],
     ) -> Result<(), ModelError> {
-        let response = StepResponse::new(&self.transfer_function()?, setup.du)?;
-        let y0 = self.values.get(Param::Y0);
-        let drift = if self.structure.drift {
-            self.values.get(Param::Drift)
-        } else {
-            0.0
-        };
-        let first = times
-            .iter()
-            .position(|&t| t >= setup.t0)
-            .unwrap_or(times.len());
-        for (o, &t) in out.iter_mut().zip(times).take(first) {
-            *o = y0 + drift * (t - setup.t0);
-        }
-        let after = &times[first..];
-        if let Some(uniform) = uniform_grid(after) {
-            let (_, values) =
-                response.sample_uniform(uniform.0 - setup.t0, uniform.1 - setup.t0, after.len());
-            for ((o, &t), v) in out[first..].iter_mut().zip(after).zip(values) {
-                *o = y0 + v + drift * (t - setup.t0);
-            }
-        } else {
-            for (o, &t) in out[first..].iter_mut().zip(after) {
-                *o = y0 + response.value(t - setup.t0) + drift * (t - setup.t0);
-            }
-        }
+        self.simulator(setup)?.fill(times, out);
         Ok(())
+    }
+
+    /// The model's response prepared once, to be evaluated on many pieces of a record.
+    pub fn simulator(&self, setup: &StepSetup) -> Result<Simulator, ModelError> {
+        Ok(Simulator {
+            response: StepResponse::new(&self.transfer_function()?, setup.du)?,
+            t0: setup.t0,
+            y0: self.values.get(Param::Y0),
+            drift: if self.structure.drift {
+                self.values.get(Param::Drift)
+            } else {
+                0.0
+            },
+        })
     }
 
     /// The damped natural frequency ωd of the underdamped pair (rad/s), if oscillatory.
@@ -442,6 +431,43 @@ impl Model {
         }
         let (tw, zeta) = (self.values.get(Param::Tw), self.values.get(Param::Zeta));
         (tw > 0.0 && (0.0..1.0).contains(&zeta)).then(|| (1.0 - zeta * zeta).sqrt() / tw)
+    }
+}
+
+/// A model's output for one step, ready to be evaluated at any instants (see
+/// [`Model::simulator`]): a long record is simulated piece by piece with one set-up.
+#[derive(Debug, Clone)]
+pub struct Simulator {
+    response: StepResponse,
+    t0: f64,
+    y0: f64,
+    drift: f64,
+}
+
+impl Simulator {
+    /// The output at each instant of `times` into `out` (both cut to the shorter); uniform
+    /// time grids use the fast recurrence.
+    pub fn fill(&self, times: &[f64], out: &mut [f64]) {
+        let n = times.len().min(out.len());
+        let (times, out) = (&times[..n], &mut out[..n]);
+        let (t0, y0, drift) = (self.t0, self.y0, self.drift);
+        let first = times.iter().position(|&t| t >= t0).unwrap_or(n);
+        for (o, &t) in out.iter_mut().zip(times).take(first) {
+            *o = y0 + drift * (t - t0);
+        }
+        let after = &times[first..];
+        if let Some(uniform) = uniform_grid(after) {
+            let (_, values) =
+                self.response
+                    .sample_uniform(uniform.0 - t0, uniform.1 - t0, after.len());
+            for ((o, &t), v) in out[first..].iter_mut().zip(after).zip(values) {
+                *o = y0 + v + drift * (t - t0);
+            }
+        } else {
+            for (o, &t) in out[first..].iter_mut().zip(after) {
+                *o = y0 + self.response.value(t - t0) + drift * (t - t0);
+            }
+        }
     }
 }
 
@@ -458,8 +484,9 @@ pub fn pair_poles(tw: f64, zeta: f64) -> [C64; 2] {
     }
 }
 
-/// (first, last) when the instants are evenly spaced to 1e-9 relative (and there are ≥ 3).
-fn uniform_grid(times: &[f64]) -> Option<(f64, f64)> {
+/// (first, last) when the instants are evenly spaced to 1e-9 of the spacing, plus the
+/// rounding of instants of their size (and there are ≥ 3).
+pub(crate) fn uniform_grid(times: &[f64]) -> Option<(f64, f64)> {
     let n = times.len();
     if n < 3 {
         return None;
@@ -469,7 +496,8 @@ fn uniform_grid(times: &[f64]) -> Option<(f64, f64)> {
     if dt <= 0.0 {
         return None;
     }
-    let tolerance = 1e-9 * dt.max(last.abs() * 1e-7);
+    let tolerance =
+        1e-9 * dt.max(last.abs() * 1e-7) + 8.0 * f64::EPSILON * first.abs().max(last.abs());
     times
         .iter()
         .enumerate()

@@ -110,7 +110,7 @@ pub fn operating_point(test: &StepTest, t0: f64) -> Option<f64> {
 }
 
 fn mean(v: &[f64]) -> Option<f64> {
-    (!v.is_empty()).then(|| v.iter().sum::<f64>() / v.len() as f64)
+    (!v.is_empty()).then(|| super::guess::mean(v))
 }
 
 /// The final level: the mean output over the last `fraction` of the record's duration (at
@@ -183,15 +183,20 @@ pub fn apply_window(test: &StepTest, window: Window) -> Result<StepTest, Prepare
     })
 }
 
-/// The median spacing of positive time steps, `None` with fewer than two distinct times.
+/// The median spacing of positive time steps, `None` with fewer than two distinct times
+/// (linear time: a selection, not a sort, for records of millions of samples).
 pub fn sampling_period(time: &[f64]) -> Option<f64> {
     let mut steps: Vec<f64> = time
         .windows(2)
         .map(|w| w[1] - w[0])
         .filter(|d| *d > 0.0)
         .collect();
-    steps.sort_by(f64::total_cmp);
-    steps.get(steps.len() / 2).copied()
+    if steps.is_empty() {
+        return None;
+    }
+    let middle = steps.len() / 2;
+    let (_, median, _) = steps.select_nth_unstable_by(middle, f64::total_cmp);
+    Some(*median)
 }
 
 /// The notes' first-order low-pass (exponentially weighted moving average).

@@ -18,7 +18,10 @@
 //! autocorrelation that the model lacks an underdamped pair.
 //!
 //! Interpreting the diagnosis (which model change to suggest) is not done here.
-//! Assumes finite numbers (no NaN); never panics, whatever the lengths.
+//! Assumes finite numbers (no NaN); never panics, whatever the lengths. Scale-free: the
+//! residuals and times are divided by powers of two near their size before the sums (exact,
+//! so records of unit size are analysed as before) and the results scaled back, so residuals
+//! of 1e300 or times of 1e200 s do not overflow a sum of squares.
 
 use super::fit::FitData;
 use super::models::{Model, Param};
@@ -241,6 +244,50 @@ pub fn boundaries(model: &Model, data: &FitData) -> Boundaries {
 /// Only the first min(times, residuals) samples are used; an input shorter than that is
 /// correlated over its length. Boundaries outside the record are clamped into it.
 pub fn analyse(
+    times: &[f64],
+    residuals: &[f64],
+    input: Option<&[f64]>,
+    boundaries: Boundaries,
+) -> ResidualAnalysis {
+    let n = times.len().min(residuals.len());
+    let largest = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let (e_unit, t_unit) = (
+        power_of_two_near(largest(&residuals[..n])),
+        power_of_two_near(largest(&times[..n])),
+    );
+    if e_unit == 1.0 && t_unit == 1.0 {
+        return analyse_as_given(times, residuals, input, boundaries);
+    }
+    let t: Vec<f64> = times[..n].iter().map(|t| t / t_unit).collect();
+    let e: Vec<f64> = residuals[..n].iter().map(|e| e / e_unit).collect();
+    let b = Boundaries {
+        response_start: boundaries.response_start / t_unit,
+        settled: boundaries.settled / t_unit,
+    };
+    let mut a = analyse_as_given(&t, &e, input, b);
+    for r in &mut a.regions {
+        r.start *= t_unit;
+        r.end *= t_unit;
+        r.mean *= e_unit;
+        r.rms *= e_unit;
+        r.slope *= e_unit / t_unit;
+    }
+    a.std *= e_unit;
+    a.dominant_period = a.dominant_period.map(|p| p * t_unit);
+    a
+}
+
+/// The power of two nearest `x` in logarithm (1 for zero or a non-finite `x`).
+fn power_of_two_near(x: f64) -> f64 {
+    if x.is_finite() && x > 0.0 {
+        2f64.powi((x.log2().round() as i32).clamp(-1000, 1000))
+    } else {
+        1.0
+    }
+}
+
+/// [`analyse`] on the numbers as given.
+fn analyse_as_given(
     times: &[f64],
     residuals: &[f64],
     input: Option<&[f64]>,
