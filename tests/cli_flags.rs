@@ -7,7 +7,10 @@
 use std::process::{Command, Output};
 
 /// y = 50 + 2·(1 − e^{−(t−2)/5}) after a unit step at t = 2 s, Ts = 0.5 s.
-const STEP: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/first_order_step.csv");
+const STEP: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/first_order_step.csv"
+);
 
 fn degrau(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_degrau"))
@@ -69,10 +72,16 @@ fn non_finite_values_are_refused_in_every_numeric_flag() {
         }
         for command in ["fit", "diagnose"] {
             for flag in data_flags {
-                refused(&[command, STEP, flag, value], &[flag, "not a finite number"]);
+                refused(
+                    &[command, STEP, flag, value],
+                    &[flag, "not a finite number"],
+                );
             }
         }
-        refused(&["open", STEP, "--ts", value], &["--ts", "not a finite number"]);
+        refused(
+            &["open", STEP, "--ts", value],
+            &["--ts", "not a finite number"],
+        );
         refused(
             &["fit", STEP, "--guess", &format!("Kp={value}")],
             &["--guess", "finite"],
@@ -84,10 +93,7 @@ fn non_finite_values_are_refused_in_every_numeric_flag() {
         refused(&["fit", STEP, "--y0", value], &["--y0"]);
     }
     // The reproducer: `--t0 NaN` said "0 samples after the step".
-    refused(
-        &["fit", STEP, "--t0", "NaN", "--du", "1"],
-        &["--t0", "NaN"],
-    );
+    refused(&["fit", STEP, "--t0", "NaN", "--du", "1"], &["--t0", "NaN"]);
     refused(&["fit", STEP, "--t0", "two"], &["--t0", "is not a number"]);
 }
 
@@ -95,7 +101,11 @@ fn non_finite_values_are_refused_in_every_numeric_flag() {
 fn huge_and_tiny_finite_steps_are_accepted_by_the_flags() {
     for du in ["1e200", "-1e-200", "1e-300"] {
         let out = degrau(&["fit", STEP, "--model", "P1", "--t0", "2", "--du", du]);
-        assert!(!stderr(&out).contains("invalid value"), "{du}: {}", stderr(&out));
+        assert!(
+            !stderr(&out).contains("invalid value"),
+            "{du}: {}",
+            stderr(&out)
+        );
     }
 }
 
@@ -140,8 +150,14 @@ fn guesses_the_model_lacks_and_duplicates_are_named() {
 
 #[test]
 fn starts_are_capped() {
-    refused(&["fit", STEP, "--starts", "100000"], &["100000 starts", "1000"]);
-    refused(&["fit", STEP, "--starts", "0"], &["0 starts", "1 (the guess only)"]);
+    refused(
+        &["fit", STEP, "--starts", "100000"],
+        &["100000 starts", "1000"],
+    );
+    refused(
+        &["fit", STEP, "--starts", "0"],
+        &["0 starts", "1 (the guess only)"],
+    );
     refused(&["fit", STEP, "--starts", "-3"], &["--starts"]);
     let j = fit_json(&["--model", "P1", "--starts", "1000"]);
     assert_eq!(j["model"], "P1");
@@ -149,21 +165,39 @@ fn starts_are_capped() {
 
 #[test]
 fn odd_counts_and_lists_are_refused() {
-    refused(&["step", "--poles", "-1", "--samples", "0"], &["samples must be between 2"]);
+    refused(
+        &["step", "--poles", "-1", "--samples", "0"],
+        &["samples must be between 2"],
+    );
     refused(
         &["step", "--poles", "-1", "--samples", "1000001"],
         &["samples must be between 2 and 1000000"],
     );
     refused(
-        &["step", "--poles", "-1", "--samples", "99999999999999999999999"],
+        &[
+            "step",
+            "--poles",
+            "-1",
+            "--samples",
+            "99999999999999999999999",
+        ],
         &["--samples"],
     );
-    refused(&["step", "--poles", "-1", "--samples", "-5"], &["--samples"]);
+    refused(
+        &["step", "--poles", "-1", "--samples", "-5"],
+        &["--samples"],
+    );
     refused(&["step", "--poles", ""], &["no poles"]);
     refused(&["step", "--poles", ",,"], &["--poles"]);
     refused(&["step", "--num", "1", "--den", ""], &["--den is empty"]);
-    refused(&["step", "--poles", "-1", "--rise-limits", ""], &["rise limits"]);
-    refused(&["step", "--poles", "-1", "--rise-limits", "0.1,nan"], &["--rise-limits"]);
+    refused(
+        &["step", "--poles", "-1", "--rise-limits", ""],
+        &["rise limits"],
+    );
+    refused(
+        &["step", "--poles", "-1", "--rise-limits", "0.1,nan"],
+        &["--rise-limits"],
+    );
     refused(&["fit", STEP, "--window", "5,1"], &["--window"]);
     refused(&["fit", STEP, "--window", "5"], &["--window"]);
     refused(&["fit", STEP, "--window", ""], &["--window"]);

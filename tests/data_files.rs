@@ -14,10 +14,7 @@ use degrau::ident::data::{
 
 /// A fresh path in the test's temporary directory (inside `target/`).
 fn temp_path(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-        "data-files-{}-{name}",
-        std::process::id()
-    ))
+    Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("data-files-{}-{name}", std::process::id()))
 }
 
 /// Loads on a thread and gives up after a minute, so a regression that blocks fails instead
@@ -36,7 +33,13 @@ fn load_guarded(path: &Path) -> Result<StepTest, DataError> {
 fn a_directory_is_refused() {
     let e = load_guarded(Path::new(env!("CARGO_TARGET_TMPDIR"))).unwrap_err();
     assert!(
-        matches!(&e, DataError::NotAFile { kind: "a directory", .. }),
+        matches!(
+            &e,
+            DataError::NotAFile {
+                kind: "a directory",
+                ..
+            }
+        ),
         "{e:?}"
     );
     assert!(e.to_string().contains("is a directory, not a regular file"));
@@ -67,7 +70,13 @@ fn a_fifo_is_refused_without_waiting_for_a_writer() {
     std::fs::remove_file(&fifo).ok();
     let e = result.unwrap_err();
     assert!(
-        matches!(&e, DataError::NotAFile { kind: "a named pipe (FIFO)", .. }),
+        matches!(
+            &e,
+            DataError::NotAFile {
+                kind: "a named pipe (FIFO)",
+                ..
+            }
+        ),
         "{e:?}"
     );
 }
@@ -137,7 +146,9 @@ fn a_hundred_thousand_columns_load() {
     assert_eq!(t.output, [0.0, 10.0, 20.0, 30.0, 40.0]);
     assert_eq!(t.input, None);
     assert!(
-        t.notes.iter().any(|n| n.contains("not guessed among the 99998")),
+        t.notes
+            .iter()
+            .any(|n| n.contains("not guessed among the 99998")),
         "{:?}",
         t.notes
     );
@@ -200,5 +211,8 @@ fn a_sampling_period_whose_times_overflow_is_refused() {
         ..LoadOptions::default()
     };
     let e = load_str("y\n1\n2\n3\n", &options).unwrap_err();
-    assert!(matches!(e, DataError::TimeOverflow { rows: 3, .. }), "{e:?}");
+    assert!(
+        matches!(e, DataError::TimeOverflow { rows: 3, .. }),
+        "{e:?}"
+    );
 }

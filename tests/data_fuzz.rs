@@ -85,7 +85,10 @@ fn mutate(bytes: &mut Vec<u8>, rng: &mut Lcg) {
         }
         4 if !bytes.is_empty() => {
             // A line repeated: rows with equal times, or a second header.
-            let start = bytes[..at].iter().rposition(|&b| b == b'\n').map_or(0, |k| k + 1);
+            let start = bytes[..at]
+                .iter()
+                .rposition(|&b| b == b'\n')
+                .map_or(0, |k| k + 1);
             let end = bytes[at..]
                 .iter()
                 .position(|&b| b == b'\n')
@@ -129,18 +132,31 @@ fn check(result: &Result<StepTest, DataError>, what: &str) -> String {
             assert_eq!(t.output.len(), n, "{what}");
             assert!(t.time.iter().all(|v| v.is_finite()), "{what}: time");
             assert!(t.output.iter().all(|v| v.is_finite()), "{what}: output");
-            assert!(t.time.windows(2).all(|w| w[0] <= w[1]), "{what}: time order");
+            assert!(
+                t.time.windows(2).all(|w| w[0] <= w[1]),
+                "{what}: time order"
+            );
             if let Some(u) = &t.input {
                 assert_eq!(u.len(), n, "{what}");
                 assert!(u.iter().all(|v| v.is_finite()), "{what}: input");
             }
-            assert!(t.sampling_period.is_none_or(|ts| ts.is_finite() && ts > 0.0));
+            assert!(
+                t.sampling_period
+                    .is_none_or(|ts| ts.is_finite() && ts > 0.0)
+            );
             "loaded".to_string()
         }
         Err(e) => {
             let message = e.to_string();
-            assert!(!message.is_empty() && !message.contains("panicked"), "{what}");
-            assert!(message.len() < 4_000, "{what}: a {}-byte message", message.len());
+            assert!(
+                !message.is_empty() && !message.contains("panicked"),
+                "{what}"
+            );
+            assert!(
+                message.len() < 4_000,
+                "{what}: a {}-byte message",
+                message.len()
+            );
             let debug = format!("{e:?}");
             debug
                 .split(|c: char| !c.is_alphanumeric())
@@ -166,7 +182,9 @@ fn mutated_fixtures_load_or_fail_cleanly() {
         }
         let o = options(&mut rng);
         let what = format!("case {case} (seed {seed}) from {name} with {o:?}");
-        *tally.entry(check(&load_bytes(&bytes, &o), &what)).or_default() += 1;
+        *tally
+            .entry(check(&load_bytes(&bytes, &o), &what))
+            .or_default() += 1;
         if let Ok(text) = std::str::from_utf8(&bytes) {
             let kind = check(&from_columns(text), &what);
             *tally.entry(format!("paste: {kind}")).or_default() += 1;
@@ -176,6 +194,9 @@ fn mutated_fixtures_load_or_fail_cleanly() {
     for (kind, count) in &tally {
         println!("  {kind:<28} {count}");
     }
-    assert!(tally.get("loaded").is_some_and(|&n| n > 0), "some load: {tally:?}");
+    assert!(
+        tally.get("loaded").is_some_and(|&n| n > 0),
+        "some load: {tally:?}"
+    );
     assert!(tally.len() > 5, "varied outcomes: {tally:?}");
 }

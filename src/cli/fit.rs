@@ -218,7 +218,11 @@ fn parse_window(text: &str) -> Result<(f64, f64), CliError> {
 pub fn parse_guess(text: &str) -> Result<Vec<(Param, f64)>, CliError> {
     let mut guesses: Vec<(Param, f64)> = Vec::new();
     for item in text.split(',').filter(|s| !s.trim().is_empty()) {
-        let bad = || CliError::Options(format!("--guess item \"{item}\" must look like Kp=1.2 (names: Kp, Tp1, Tp2, Tp3, Tw, Zeta, Td, Tz, Y0, Drift; finite values)"));
+        let bad = || {
+            CliError::Options(format!(
+                "--guess item \"{item}\" must look like Kp=1.2 (names: Kp, Tp1, Tp2, Tp3, Tw, Zeta, Td, Tz, Y0, Drift; finite values)"
+            ))
+        };
         let (name, value) = item.split_once('=').ok_or_else(bad)?;
         let p = Param::parse(name).ok_or_else(bad)?;
         let v = finite_f64(value).map_err(|_| bad())?;

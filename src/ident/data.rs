@@ -1557,11 +1557,9 @@ fn list_lines(shown: &[usize], total: usize) -> String {
     match shown {
         [] => "no line".to_string(),
         [one] if total == 1 => format!("line {one}"),
-        _ if total > shown.len() => format!(
-            "lines {} and {} more",
-            text.join(", "),
-            total - shown.len()
-        ),
+        _ if total > shown.len() => {
+            format!("lines {} and {} more", text.join(", "), total - shown.len())
+        }
         [.., last] => format!("lines {} and {last}", text[..text.len() - 1].join(", ")),
     }
 }
