@@ -2,6 +2,9 @@
 //! into 1/(s + 1) sampled at 1 ms, about 24 MB) read from a temporary file by `load_file`,
 //! columns detected automatically. Target: ≤ 1 s.
 //!
+//! Wide files: 10⁵ and 10⁶ columns (t, y and unnamed others) of 5 rows, so the time is
+//! linear in the columns (it was quadratic: 1.5 s for 10⁵, minutes for 10⁶).
+//!
 //! Run: `cargo bench --bench data_load`.
 
 use std::fmt::Write as _;
@@ -10,7 +13,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use degrau::ident::data::{LoadOptions, load_file};
+use degrau::ident::data::{LoadOptions, load_file, load_str};
 
 const ROWS: u32 = 1_000_000;
 
@@ -35,6 +38,23 @@ fn generated_file() -> PathBuf {
     path
 }
 
+/// `t,y,c3,…,cN` and 5 rows of small integers.
+fn wide_text(columns: usize) -> String {
+    let mut text = String::from("t,y");
+    for c in 3..=columns {
+        let _ = write!(text, ",c{c}");
+    }
+    text.push('\n');
+    for k in 0..5 {
+        let _ = write!(text, "{k},{}", 2 * k);
+        for c in 3..=columns {
+            let _ = write!(text, ",{}", (c + k) % 10);
+        }
+        text.push('\n');
+    }
+    text
+}
+
 fn bench(c: &mut Criterion) {
     let path = generated_file();
     let options = LoadOptions::default();
@@ -51,6 +71,20 @@ fn bench(c: &mut Criterion) {
     group.bench_function("csv 10^6 rows t,u,y", |b| {
         b.iter(|| load_file(black_box(&path), black_box(&options)))
     });
+    for columns in [100_000, 1_000_000] {
+        let text = wide_text(columns);
+        let start = Instant::now();
+        let test = load_str(&text, &options).expect("the wide file loads");
+        println!(
+            "one load of {columns} columns × {} rows ({} MB): {:.3} s",
+            test.time.len(),
+            text.len() / 1_000_000,
+            start.elapsed().as_secs_f64()
+        );
+        group.bench_function(format!("csv {columns} columns × 5 rows"), |b| {
+            b.iter(|| load_str(black_box(&text), black_box(&options)))
+        });
+    }
     group.finish();
     if let Some(dir) = path.parent() {
         let _ = std::fs::remove_dir_all(dir);

@@ -12,9 +12,13 @@ use serde::Serialize;
 use crate::ident::data::{self, LoadOptions, StepTest};
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
-use crate::ident::models::Param;
+use crate::ident::models::{Param, Structure};
 
-use super::CliError;
+use super::{CliError, finite_f64};
+
+/// The most starts of one fit: each is a full local fit, and 1000 already take minutes on a
+/// long record.
+pub const MAX_STARTS: usize = 1000;
 
 /// How the measured file is read and prepared (shared by `fit` and `diagnose`).
 #[derive(Debug, Clone, Default, Args)]
@@ -31,19 +35,19 @@ pub struct DataArgs {
     #[arg(long)]
     pub u_col: Option<String>,
     /// Sampling period in seconds, for a file without a time column.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub ts: Option<f64>,
     /// Lines to skip at the top (metadata before the table).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
     pub skip_rows: usize,
     /// Step time t0 (s); default: found in the input column.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub t0: Option<f64>,
     /// Step size Δu; default: found in the input column.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub du: Option<f64>,
     /// The input before the record started, when the step is at the first sample.
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub initial_input: Option<f64>,
     /// Operating point y0: auto (mean before the step, else estimated), free, or a value.
     #[arg(long, default_value = "auto", allow_hyphen_values = true)]
@@ -52,7 +56,7 @@ pub struct DataArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub window: Option<String>,
     /// Low-pass the output first (the notes' EWMA filter), cut-off in Hz.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub filter: Option<f64>,
 }
 
@@ -82,8 +86,13 @@ pub struct FitArgs {
     /// Optimiser.
     #[arg(long, value_enum, default_value_t = MethodArg::Lm)]
     pub method: MethodArg,
-    /// Number of starts (1: the guess only).
-    #[arg(long, default_value_t = 16)]
+    /// Number of starts (1: the guess only; at most 1000).
+    #[arg(
+        long,
+        default_value_t = 16,
+        allow_hyphen_values = true,
+        value_parser = starts_count
+    )]
     pub starts: usize,
     /// Add a linear drift term.
     #[arg(long)]
@@ -108,7 +117,7 @@ pub struct OpenArgs {
     #[arg(long)]
     pub u_col: Option<String>,
     /// Sampling period in seconds, for a file without a time column.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub ts: Option<f64>,
     /// Model structure to start with.
     #[arg(long, default_value = "P2DU")]
@@ -155,6 +164,21 @@ impl DataArgs {
     }
 }
 
+/// `--starts`: 1 to [`MAX_STARTS`].
+fn starts_count(text: &str) -> Result<usize, String> {
+    let n: usize = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("\"{text}\" is not a whole number of starts"))?;
+    if (1..=MAX_STARTS).contains(&n) {
+        Ok(n)
+    } else {
+        Err(format!(
+            "{n} starts: give 1 (the guess only) to {MAX_STARTS}; each start is a whole fit"
+        ))
+    }
+}
+
 fn parse_offset(text: &str) -> Result<Offset, CliError> {
     match text.trim().to_ascii_lowercase().as_str() {
         "auto" => Ok(Offset::Auto),
@@ -181,8 +205,8 @@ fn parse_window(text: &str) -> Result<(f64, f64), CliError> {
     };
     let (a, b) = text.split_once(',').ok_or_else(bad)?;
     let (a, b) = (
-        a.trim().parse::<f64>().map_err(|_| bad())?,
-        b.trim().parse::<f64>().map_err(|_| bad())?,
+        finite_f64(a).map_err(|_| bad())?,
+        finite_f64(b).map_err(|_| bad())?,
     );
     if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
         return Err(bad());
@@ -190,18 +214,87 @@ fn parse_window(text: &str) -> Result<(f64, f64), CliError> {
     Ok((a, b))
 }
 
-/// `Kp=1.2,Td=2` into parameter values.
+/// `Kp=1.2,Td=2` into parameter values, each parameter once.
 pub fn parse_guess(text: &str) -> Result<Vec<(Param, f64)>, CliError> {
-    text.split(',')
-        .filter(|s| !s.trim().is_empty())
-        .map(|item| {
-            let bad = || CliError::Options(format!("--guess item \"{item}\" must look like Kp=1.2 (names: Kp, Tp1, Tp2, Tp3, Tw, Zeta, Td, Tz, Y0, Drift)"));
-            let (name, value) = item.split_once('=').ok_or_else(bad)?;
-            let p = Param::parse(name).ok_or_else(bad)?;
-            let v = value.trim().parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(bad)?;
-            Ok((p, v))
-        })
-        .collect()
+    let mut guesses: Vec<(Param, f64)> = Vec::new();
+    for item in text.split(',').filter(|s| !s.trim().is_empty()) {
+        let bad = || {
+            CliError::Options(format!(
+                "--guess item \"{item}\" must look like Kp=1.2 (names: Kp, Tp1, Tp2, Tp3, Tw, Zeta, Td, Tz, Y0, Drift; finite values)"
+            ))
+        };
+        let (name, value) = item.split_once('=').ok_or_else(bad)?;
+        let p = Param::parse(name).ok_or_else(bad)?;
+        let v = finite_f64(value).map_err(|_| bad())?;
+        if let Some(&(_, first)) = guesses.iter().find(|g| g.0 == p) {
+            return Err(CliError::Options(format!(
+                "--guess gives {} twice ({} and {}): give each parameter once",
+                p.name(),
+                fmt(first),
+                fmt(v)
+            )));
+        }
+        guesses.push((p, v));
+    }
+    if guesses.is_empty() {
+        return Err(CliError::Options(
+            "--guess is empty: give guesses like Kp=1.2,Td=2, or leave the flag out".into(),
+        ));
+    }
+    Ok(guesses)
+}
+
+/// The guesses fit the model: each of its parameters, and Y0 only when it is estimated.
+fn check_guesses(
+    guesses: &[(Param, f64)],
+    structure: &Structure,
+    held_y0: Option<f64>,
+    y0_flag: &str,
+) -> Result<(), CliError> {
+    let params = structure.params();
+    for &(p, v) in guesses {
+        if params.contains(&p) {
+            continue;
+        }
+        let message = match (p, held_y0) {
+            (Param::Y0, Some(y0)) if parse_offset(y0_flag).is_ok_and(|o| o != Offset::Auto) => {
+                format!(
+                    "--guess Y0={} conflicts with --y0 {}: Y0 is held at {}, not estimated; \
+                     give --y0 free to estimate it from {}, or leave Y0 out of --guess",
+                    fmt(v),
+                    y0_flag.trim(),
+                    fmt(y0),
+                    fmt(v)
+                )
+            }
+            (Param::Y0, Some(y0)) => format!(
+                "--guess Y0={}: Y0 is held at {} (the mean before the step, --y0 auto), not \
+                 estimated; give --y0 free to estimate it from {}, or --y0 {} to hold it there",
+                fmt(v),
+                fmt(y0),
+                fmt(v),
+                fmt(v)
+            ),
+            (Param::Drift, _) => format!(
+                "--guess Drift={}: the model has no drift term; add --drift",
+                fmt(v)
+            ),
+            _ => format!(
+                "--guess {}={}: the model {} has no {} (its parameters: {})",
+                p.name(),
+                fmt(v),
+                structure.code(),
+                p.name(),
+                params
+                    .iter()
+                    .map(|p| p.name())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        };
+        return Err(CliError::Options(message));
+    }
+    Ok(())
 }
 
 /// The FIT object of the JSON outputs (stable keys).
@@ -259,7 +352,7 @@ impl FitArgs {
                 MethodArg::Lm => Method::LevenbergMarquardt,
                 MethodArg::NelderMead => Method::NelderMead,
             },
-            starts: self.starts.max(1),
+            starts: self.starts.clamp(1, MAX_STARTS),
             ..FitOptions::default()
         }
     }
@@ -267,13 +360,25 @@ impl FitArgs {
 
 /// `degrau fit`.
 pub fn run_fit(args: &FitArgs) -> Result<(), CliError> {
-    let (test, experiment, _) = args.data.prepare()?;
     let overrides = args
         .guess
         .as_deref()
         .map(parse_guess)
         .transpose()?
         .unwrap_or_default();
+    let (mut test, experiment, data) = args.data.prepare()?;
+    let structure = experiment
+        .structure(&args.model, args.drift, &data)
+        .map_err(|e| CliError::Options(e.to_string()))?;
+    check_guesses(
+        &overrides,
+        &structure,
+        experiment.operating_point(&data),
+        &args.data.y0,
+    )?;
+    // The fit reads the time and output again; the input found the step already.
+    drop(data);
+    test.input = None;
     let (_, report) = experiment
         .fit(
             &test,
@@ -348,6 +453,13 @@ mod tests {
         assert!(parse_guess("Kp").is_err());
         assert!(parse_guess("Foo=1").is_err());
         assert!(parse_guess("Kp=nan").is_err());
+        assert!(parse_guess("Kp=1e999").is_err());
+        let twice = parse_guess("Kp=1,kp=2").unwrap_err().to_string();
+        assert!(twice.contains("Kp twice"), "{twice}");
+        assert!(parse_guess(",").is_err());
+        assert_eq!(starts_count("1000"), Ok(1000));
+        assert!(starts_count("0").is_err() && starts_count("1001").is_err());
+        assert!(parse_window("-inf,inf").is_err());
         assert_eq!(parse_offset("free").unwrap(), Offset::Free);
         assert_eq!(parse_offset("50").unwrap(), Offset::Fixed(50.0));
         assert!(parse_offset("x").is_err());

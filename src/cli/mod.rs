@@ -79,7 +79,8 @@ pub struct StepArgs {
         long,
         value_name = "K",
         allow_hyphen_values = true,
-        conflicts_with = "dc_gain"
+        conflicts_with = "dc_gain",
+        value_parser = finite_f64
     )]
     pub gain: Option<f64>,
     /// Numerator coefficients in descending powers of s, e.g. "0.5".
@@ -89,22 +90,27 @@ pub struct StepArgs {
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub den: Option<String>,
     /// Scale k so that the static gain G(0) is K.
-    #[arg(long, value_name = "K", allow_hyphen_values = true)]
+    #[arg(long, value_name = "K", allow_hyphen_values = true, value_parser = finite_f64)]
     pub dc_gain: Option<f64>,
     /// Transport delay θ in seconds (default 0).
-    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = finite_f64)]
     pub delay: Option<f64>,
     /// Step amplitude A (default 1).
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    #[arg(long, value_name = "A", allow_hyphen_values = true, value_parser = finite_f64)]
     pub amplitude: Option<f64>,
     /// Settling band as a fraction of |y_final − y_init| (default 0.02).
-    #[arg(long, value_name = "FRACTION", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "FRACTION",
+        allow_hyphen_values = true,
+        value_parser = finite_f64
+    )]
     pub settling_threshold: Option<f64>,
     /// Rise-time limits as two fractions of the way to the final value (default 0.1,0.9).
     #[arg(long, value_name = "LOW,HIGH", allow_hyphen_values = true)]
     pub rise_limits: Option<String>,
     /// Add N samples of y(t), evenly spaced over [0, the automatic horizon].
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub samples: Option<usize>,
     /// Print one JSON object instead of text.
     #[arg(long)]
@@ -134,6 +140,8 @@ pub enum CliError {
     Options(String),
     #[error("the rise limits are two fractions like 0.1,0.9, not {0} numbers")]
     RiseLimitsCount(usize),
+    #[error("{0} is empty: give the coefficients in descending powers of s, e.g. 1,7,15,25")]
+    EmptyCoefficients(&'static str),
     #[error("no system given: give the poles (and zeros, gain) or the num and den coefficients")]
     NoSystem,
     #[error("the system is given twice: give the poles and zeros, or num and den, not both")]
@@ -390,22 +398,43 @@ impl StepArgs {
                 .map(|t| parse_list(option, t, parse_complex_list))
                 .transpose()
         };
-        let real = |option, text: &Option<String>| {
-            text.as_deref()
+        let coefficients = |option, text: &Option<String>| {
+            let list = text
+                .as_deref()
                 .map(|t| parse_list(option, t, parse_real_list))
-                .transpose()
+                .transpose()?;
+            match list {
+                Some(c) if c.is_empty() => Err(CliError::EmptyCoefficients(option)),
+                list => Ok(list),
+            }
         };
         Ok(SystemSpec {
             zeros: complex("--zeros", &self.zeros)?,
             poles: complex("--poles", &self.poles)?,
             gain: self.gain,
-            num: real("--num", &self.num)?,
-            den: real("--den", &self.den)?,
+            num: coefficients("--num", &self.num)?,
+            den: coefficients("--den", &self.den)?,
             dc_gain: self.dc_gain,
             delay: self.delay,
             amplitude: self.amplitude,
             samples: self.samples,
         })
+    }
+}
+
+/// The value of every numeric flag: a finite number. clap names the flag in the error
+/// (`invalid value 'NaN' for '--t0 <T0>': NaN is not a finite number`).
+pub fn finite_f64(text: &str) -> Result<f64, String> {
+    let value: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("\"{text}\" is not a number"))?;
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(format!(
+            "{text} is not a finite number (NaN, infinities and numbers beyond ±1.8e308 are refused)"
+        ))
     }
 }
 

@@ -30,6 +30,8 @@
 //!   it takes at most [`MAX_INPUT_LEVELS`] distinct values and changes once, or between at
 //!   most 1 in 10 consecutive rows (a constant column qualifies). Exactly one step-like
 //!   candidate is taken as the input (with a note); several are left alone (with a note).
+//!   With more than [`MAX_GUESS_COLUMNS`] candidates the input is not guessed (a note says
+//!   so): choose it.
 //! - An unnamed output is the one column left; several left is an error listing them.
 //! - A column with an empty header name (or pandas' `Unnamed: 0`), the row index pandas
 //!   writes, is never chosen automatically.
@@ -44,6 +46,18 @@
 //! (one extra empty cell from a trailing separator is tolerated). At least [`MIN_SAMPLES`]
 //! samples must remain. Nothing here panics, whatever the bytes.
 //!
+//! # Files
+//! Only regular files are read: a directory, a FIFO, a device or a socket is refused before
+//! it is opened (opening a FIFO waits for a writer; `/dev/zero` never ends). A file (or text)
+//! larger than [`MAX_FILE_BYTES`] is refused from its size, and the read stops one byte past
+//! the cap should the file grow while it is read.
+//!
+//! # Cost
+//! Time is linear in the rows and the columns: the cells of a row are split once, only the
+//! chosen columns are parsed and kept, and the candidates for an unnamed input are judged
+//! as their values come, without keeping them. A kept row costs 8 bytes per chosen column
+//! and 4 for its line number; the text is read once, whole.
+//!
 //! Hand-written rather than with the `csv` crate: `csv` cannot collapse runs of whitespace
 //! (MATLAB `.dat`/`.txt`), knows no comment headers or decimal commas, and the formats are
 //! line-based and simple. Cells are borrowed slices of the text (no allocation per cell), so
@@ -52,6 +66,8 @@
 use std::borrow::Cow;
 use std::convert::Infallible;
 use std::fmt;
+use std::fs::{FileType, Metadata};
+use std::io::Read;
 use std::path::Path;
 use std::str::FromStr;
 
@@ -80,6 +96,15 @@ pub const INPUT_NAMES: [&str; 8] = [
 ];
 /// A step-like column takes at most this many distinct values.
 pub const MAX_INPUT_LEVELS: usize = 8;
+/// The largest file (or text) read, 1 GiB: a step test is far smaller (10⁶ rows of t, u, y
+/// take about 25 MB), and a larger one would only fill the memory.
+pub const MAX_FILE_BYTES: u64 = 1 << 30;
+/// The most columns an unnamed input is guessed among; with more, choose it.
+pub const MAX_GUESS_COLUMNS: usize = 256;
+/// Columns listed in a message before "and N more".
+const LISTED_COLUMNS: usize = 20;
+/// Characters of a cell or a name shown in a message before "…".
+const SHOWN_CHARS: usize = 60;
 /// Lines looked at to detect the separator.
 const SAMPLE_LINES: usize = 20;
 /// Lines listed in a note before "and N more".
@@ -280,20 +305,109 @@ pub enum DataError {
     BadSamplingPeriod(f64),
     #[error("line {line} has {found} column(s); a paste needs 2 (t, y) or 3 (t, u, y)")]
     PasteColumns { line: usize, found: usize },
+    #[error(
+        "this is {kind}, not a regular file: give the file that holds the data (a pipe or \
+         a device is not read, it could wait or run for ever)"
+    )]
+    NotAFile { path: String, kind: &'static str },
+    #[error(
+        "{what} has {size} bytes or more, over the limit of {MAX_FILE_BYTES} (1 GiB): a step \
+         test is far smaller; keep the rows you need (or every n-th) and load that"
+    )]
+    TooLarge { what: String, size: u64 },
+    #[error(
+        "a sampling period of {sampling_period} s over {rows} rows gives times beyond the \
+         largest number; give the period in seconds"
+    )]
+    TimeOverflow { sampling_period: f64, rows: usize },
 }
 
-/// Loads a step test from a file (any of the formats of the module docs).
+/// Loads a step test from a file (any of the formats of the module docs). Only a regular
+/// file of at most [`MAX_FILE_BYTES`] is read: a directory, a FIFO or a device is refused
+/// before it is opened (opening a FIFO waits for a writer; `/dev/zero` never ends).
 pub fn load_file(path: impl AsRef<Path>, options: &LoadOptions) -> Result<StepTest, DataError> {
-    let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|e| DataError::Io {
-        path: path.display().to_string(),
-        reason: e.to_string(),
-    })?;
+    let bytes = read_capped(path.as_ref())?;
     load_bytes(&bytes, options)
+}
+
+/// The bytes of a regular file of at most [`MAX_FILE_BYTES`].
+fn read_capped(path: &Path) -> Result<Vec<u8>, DataError> {
+    let shown = || path.display().to_string();
+    let io = |e: std::io::Error| DataError::Io {
+        path: shown(),
+        reason: e.to_string(),
+    };
+    // Checked before opening, then again on the file opened (had the path been replaced).
+    check_regular(&shown, &std::fs::metadata(path).map_err(io)?)?;
+    let file = std::fs::File::open(path).map_err(io)?;
+    let metadata = file.metadata().map_err(io)?;
+    check_regular(&shown, &metadata)?;
+    let expected = usize::try_from(metadata.len()).unwrap_or(0);
+    let mut bytes = Vec::with_capacity(expected.saturating_add(1));
+    // A file growing while it is read stops one byte past the cap.
+    file.take(MAX_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    check_size("the file", bytes.len())?;
+    Ok(bytes)
+}
+
+/// A regular file within the size cap, from its metadata.
+fn check_regular(shown: &dyn Fn() -> String, metadata: &Metadata) -> Result<(), DataError> {
+    if let Some(kind) = special_kind(&metadata.file_type()) {
+        return Err(DataError::NotAFile {
+            path: shown(),
+            kind,
+        });
+    }
+    if metadata.len() > MAX_FILE_BYTES {
+        return Err(DataError::TooLarge {
+            what: "the file".into(),
+            size: metadata.len(),
+        });
+    }
+    Ok(())
+}
+
+/// What a file that is not a regular file is, in words; `None` for a regular file.
+fn special_kind(file_type: &FileType) -> Option<&'static str> {
+    if file_type.is_file() {
+        return None;
+    }
+    if file_type.is_dir() {
+        return Some("a directory");
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if file_type.is_fifo() {
+            return Some("a named pipe (FIFO)");
+        }
+        if file_type.is_char_device() || file_type.is_block_device() {
+            return Some("a device");
+        }
+        if file_type.is_socket() {
+            return Some("a socket");
+        }
+    }
+    Some("a special file")
+}
+
+/// Text (or bytes) of at most [`MAX_FILE_BYTES`].
+fn check_size(what: &str, len: usize) -> Result<(), DataError> {
+    let len = u64::try_from(len).unwrap_or(u64::MAX);
+    if len > MAX_FILE_BYTES {
+        return Err(DataError::TooLarge {
+            what: what.to_string(),
+            size: len,
+        });
+    }
+    Ok(())
 }
 
 /// Loads a step test from the raw bytes of a file: UTF-8, UTF-16 with BOM, else Latin-1.
 pub fn load_bytes(bytes: &[u8], options: &LoadOptions) -> Result<StepTest, DataError> {
+    check_size("the data", bytes.len())?;
     let (text, note) = decode(bytes)?;
     let mut test = load_str(&text, options)?;
     if let Some(note) = note {
@@ -304,6 +418,7 @@ pub fn load_bytes(bytes: &[u8], options: &LoadOptions) -> Result<StepTest, DataE
 
 /// Loads a step test from text.
 pub fn load_str(text: &str, options: &LoadOptions) -> Result<StepTest, DataError> {
+    check_size("the text", text.len())?;
     if let Some(ts) = options.sampling_period
         && !(ts.is_finite() && ts > 0.0)
     {
@@ -318,6 +433,7 @@ pub fn load_str(text: &str, options: &LoadOptions) -> Result<StepTest, DataError
 /// recognised; otherwise column 1 is the time, and of three columns the step-like one is the
 /// input (t, u, y when that does not decide).
 pub fn from_columns(text: &str) -> Result<StepTest, DataError> {
+    check_size("the pasted text", text.len())?;
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let layout = Layout::detect(text, 0)?;
     if !(2..=3).contains(&layout.columns) {
@@ -537,24 +653,19 @@ enum Header {
     Ignored(usize),
 }
 
-/// `column 1`, `column 2`, …: the names of unnamed columns.
-fn numbered(columns: usize) -> Vec<String> {
-    (1..=columns).map(|k| format!("column {k}")).collect()
-}
-
 /// How a file's table is laid out.
 #[derive(Debug, Clone, PartialEq)]
 struct Layout {
     delimiter: Delimiter,
     decimal_comma: bool,
     header: Option<Header>,
-    /// One per column: the header's, or `column k`.
+    /// One per column from the header, or none (the columns are `column k`).
     names: Vec<String>,
+    /// The names as matched against the known ones ([`normalise`]d), one per name.
+    normalised: Vec<String>,
     columns: usize,
     /// The line that defines the columns: the header row, else the first data row.
     defined_at: usize,
-    /// Mean length of the sampled data lines (bytes), to size the columns.
-    row_bytes: usize,
 }
 
 impl Layout {
@@ -596,20 +707,23 @@ impl Layout {
             decimal_comma,
             header: None,
             names: Vec::new(),
+            normalised: Vec::new(),
             columns: first_cells.len(),
             defined_at: first_no,
-            row_bytes: 1 + sample.iter().map(|l| l.len() + 1).sum::<usize>() / sample.len().max(1),
         };
         if is_header {
             layout.use_header_row(first_no, &first_cells, data.get(1).map(|d| d.1));
         } else if let Some((no, names)) = comment_header(&comments, delimiter, layout.columns) {
-            layout.names = names;
+            layout.set_names(names);
             layout.header = Some(Header::Comment(no));
             layout.defined_at = no;
-        } else {
-            layout.names = numbered(layout.columns);
         }
         Ok(layout)
+    }
+
+    fn set_names(&mut self, names: Vec<String>) {
+        self.normalised = names.iter().map(|n| normalise(n)).collect();
+        self.names = names;
     }
 
     /// Takes the names of a header row, given the row after it.
@@ -630,12 +744,11 @@ impl Layout {
             // Names with spaces in a whitespace-separated file cannot be told apart.
             Some(n) if self.delimiter == Delimiter::Whitespace && n != names.len() => {
                 self.columns = n;
-                self.names = numbered(n);
                 self.header = Some(Header::Ignored(no));
             }
             _ => {
                 self.columns = names.len();
-                self.names = names;
+                self.set_names(names);
             }
         }
     }
@@ -656,7 +769,7 @@ impl Layout {
     /// A column in a message: `"T1"`, or its position without names.
     fn label(&self, column: usize) -> String {
         if self.named() {
-            format!("\"{}\"", self.name(column))
+            format!("\"{}\"", shorten(&self.name(column)))
         } else {
             (column + 1).to_string()
         }
@@ -665,23 +778,35 @@ impl Layout {
     /// A column in a list: `4 "box temp"`, or `column 4` without names.
     fn listing(&self, column: usize) -> String {
         if self.named() {
-            format!("{} \"{}\"", column + 1, self.name(column))
+            format!("{} \"{}\"", column + 1, shorten(&self.name(column)))
         } else {
             format!("column {}", column + 1)
         }
     }
 
-    /// A column by name: exactly (ignoring case and quotes), else ignoring units.
+    /// A column by name: exactly (ignoring case and quotes), else ignoring units; without
+    /// names, `column k`.
     fn find(&self, name: &str) -> Option<usize> {
         let exact = name.trim().trim_matches('"').to_lowercase();
+        if exact.is_empty() {
+            return None;
+        }
+        if self.names.is_empty() {
+            let k: usize = exact.strip_prefix("column")?.trim().parse().ok()?;
+            return (1..=self.columns).contains(&k).then(|| k - 1);
+        }
         self.names
             .iter()
             .position(|n| n.to_lowercase() == exact)
             .or_else(|| {
                 let wanted = normalise(name);
-                self.names.iter().position(|n| normalise(n) == wanted)
+                self.normalised.iter().position(|n| *n == wanted)
             })
-            .filter(|_| !exact.is_empty())
+    }
+
+    /// The normalised name of a column, `None` without names.
+    fn normalised(&self, column: usize) -> Option<&str> {
+        self.normalised.get(column).map(String::as_str)
     }
 
     fn name(&self, column: usize) -> String {
@@ -699,10 +824,7 @@ impl Layout {
                 self.columns, self.columns
             );
         }
-        (0..self.columns)
-            .map(|i| self.listing(i))
-            .collect::<Vec<_>>()
-            .join(", ")
+        join_some((0..self.columns).map(|i| self.listing(i)))
     }
 
     fn describe(&self) -> String {
@@ -793,9 +915,34 @@ fn normalise(name: &str) -> String {
 }
 
 /// A pandas row index: no name, or `Unnamed: k`.
+#[cfg(test)]
 fn is_index_name(name: &str) -> bool {
-    let n = normalise(name);
+    is_index_normalised(&normalise(name))
+}
+
+/// [`is_index_name`] of a normalised name.
+fn is_index_normalised(n: &str) -> bool {
     n.is_empty() || n.starts_with("unnamed")
+}
+
+/// Text for a message: at most [`SHOWN_CHARS`] characters, then "…".
+fn shorten(text: &str) -> Cow<'_, str> {
+    match text.char_indices().nth(SHOWN_CHARS) {
+        Some((k, _)) => Cow::Owned(format!("{}…", &text[..k])),
+        None => Cow::Borrowed(text),
+    }
+}
+
+/// Up to [`LISTED_COLUMNS`] items joined with commas, then how many more.
+fn join_some(items: impl ExactSizeIterator<Item = String>) -> String {
+    let total = items.len();
+    let shown: Vec<String> = items.take(LISTED_COLUMNS).collect();
+    let more = total - shown.len();
+    if more == 0 {
+        shown.join(", ")
+    } else {
+        format!("{}, … and {more} more", shown.join(", "))
+    }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -817,14 +964,14 @@ struct Plan {
 impl Plan {
     fn new(layout: &Layout, options: &LoadOptions, paste: bool) -> Result<Self, DataError> {
         let excluded: Vec<bool> = (0..layout.columns)
-            .map(|i| layout.named() && is_index_name(&layout.name(i)))
+            .map(|i| layout.named() && layout.normalised(i).is_some_and(is_index_normalised))
             .collect();
         let by_alias = |aliases: &[&str], taken: &[Option<usize>]| {
             aliases.iter().find_map(|alias| {
                 (0..layout.columns).find(|&i| {
                     !excluded[i]
                         && !taken.contains(&Some(i))
-                        && normalise(&layout.name(i)) == *alias
+                        && layout.normalised(i) == Some(*alias)
                 })
             })
         };
@@ -879,13 +1026,13 @@ impl Plan {
             .filter(|&i| !excluded[i] && ![time, output, input].contains(&Some(i)))
             .collect();
         if excluded.iter().any(|&e| e) && (output.is_none() || guess_input || time.is_none()) {
-            let ignored: Vec<String> = (0..layout.columns)
-                .filter(|&i| excluded[i])
-                .map(|i| (i + 1).to_string())
-                .collect();
-            let which = match &ignored[..] {
-                [one] => format!("column {one} has"),
-                _ => format!("columns {} have", ignored.join(", ")),
+            let ignored: Vec<usize> = (0..layout.columns).filter(|&i| excluded[i]).collect();
+            let which = match ignored[..] {
+                [one] => format!("column {} has", one + 1),
+                _ => format!(
+                    "columns {} have",
+                    join_some(ignored.iter().map(|i| (i + 1).to_string()))
+                ),
             };
             notes.push(format!(
                 "{which} no name (a row index, as pandas writes): not used"
@@ -901,15 +1048,27 @@ impl Plan {
         })
     }
 
-    /// The columns whose values must be read.
-    fn needed(&self, columns: usize) -> Vec<bool> {
-        let guessing = self.guess_input || self.output.is_none();
-        (0..columns)
-            .map(|i| {
-                [self.time, self.output, self.input].contains(&Some(i))
-                    || (guessing && self.candidates.contains(&i))
-            })
-            .collect()
+    /// The columns to read, in file order: the chosen ones' values; the candidates' values
+    /// when there are at most 3 (more cannot leave a single output; a guessed input among
+    /// more is read again, [`Rows::reread_input`]), and whether they are step-like when the input
+    /// is guessed among at most [`MAX_GUESS_COLUMNS`].
+    fn reads(&self, capacity: usize) -> Vec<ColumnRead> {
+        let chosen = [self.time, self.output, self.input];
+        let guessing = self.output.is_none() || self.guess_input;
+        let candidate_values = guessing && self.candidates.len() <= 3;
+        let candidate_steps = self.guess_input && self.candidates.len() <= MAX_GUESS_COLUMNS;
+        let mut reads: Vec<ColumnRead> = chosen
+            .into_iter()
+            .flatten()
+            .map(|i| ColumnRead::new(i, Some(capacity), false))
+            .collect();
+        if candidate_values || candidate_steps {
+            reads.extend(self.candidates.iter().map(|&i| {
+                ColumnRead::new(i, candidate_values.then_some(capacity), candidate_steps)
+            }));
+        }
+        reads.sort_by_key(|r| r.index);
+        reads
     }
 
     /// Fills in the guessed input and the output left over, from the values read.
@@ -951,21 +1110,26 @@ impl Plan {
             }
             _ => Err(DataError::AmbiguousOutput {
                 line: layout.defined_at,
-                candidates: left
-                    .iter()
-                    .map(|&i| layout.listing(i))
-                    .collect::<Vec<_>>()
-                    .join(", "),
+                candidates: join_some(left.iter().map(|&i| layout.listing(i))),
             }),
         }
     }
 
     fn guess_input_column(&mut self, layout: &Layout, rows: &Rows) {
-        let step_like: Vec<usize> = self
-            .candidates
+        if self.candidates.len() > MAX_GUESS_COLUMNS {
+            self.notes.push(format!(
+                "the input was not guessed among the {} unnamed columns (more than {}): \
+                 choose it by name or position",
+                self.candidates.len(),
+                MAX_GUESS_COLUMNS
+            ));
+            return;
+        }
+        let step_like: Vec<usize> = rows
+            .columns
             .iter()
-            .copied()
-            .filter(|&i| rows.bad_at(i).is_none() && rows.column(i).is_some_and(is_step_like))
+            .filter(|c| c.bad.is_none() && c.step.as_ref().is_some_and(StepLike::holds))
+            .map(|c| c.index)
             .collect();
         let leaves_output = self.output.is_some() || self.candidates.len() >= 2;
         match step_like[..] {
@@ -978,11 +1142,7 @@ impl Plan {
             }
             [_, _, ..] => self.notes.push(format!(
                 "columns {} all look like an input (piecewise constant): none was taken; choose one",
-                step_like
-                    .iter()
-                    .map(|&i| layout.label(i))
-                    .collect::<Vec<_>>()
-                    .join(", ")
+                join_some(step_like.iter().map(|&i| layout.label(i)))
             )),
             _ => {}
         }
@@ -1036,50 +1196,122 @@ fn check_distinct(layout: &Layout, chosen: [(Role, Option<usize>); 3]) -> Result
     Ok(())
 }
 
-/// At most [`MAX_INPUT_LEVELS`] distinct values, changing once or between at most 1 in 10
-/// consecutive rows.
-fn is_step_like(values: &[f64]) -> bool {
-    let present: Vec<f64> = values.iter().copied().filter(|v| !v.is_nan()).collect();
-    let changes = present.windows(2).filter(|w| w[0] != w[1]).count();
-    if present.is_empty() || (changes > 1 && changes * 10 > present.len()) {
-        return false;
-    }
-    let mut levels: Vec<f64> = Vec::new();
-    for &v in &present {
-        if !levels.contains(&v) {
-            if levels.len() == MAX_INPUT_LEVELS {
-                return false;
+/// Whether a column is step-like, decided value by value: at most [`MAX_INPUT_LEVELS`]
+/// distinct values (missing ones aside), changing once or between at most 1 in 10
+/// consecutive present values.
+#[derive(Debug, Clone, Default)]
+struct StepLike {
+    present: usize,
+    changes: usize,
+    last: Option<f64>,
+    levels: [f64; MAX_INPUT_LEVELS],
+    level_count: usize,
+    too_many_levels: bool,
+}
+
+impl StepLike {
+    fn push(&mut self, v: f64) {
+        if v.is_nan() {
+            return;
+        }
+        self.present += 1;
+        if self.last.is_some_and(|last| last != v) {
+            self.changes += 1;
+        }
+        self.last = Some(v);
+        let known = &self.levels[..self.level_count];
+        if self.too_many_levels || known.contains(&v) {
+            return;
+        }
+        match self.levels.get_mut(self.level_count) {
+            Some(slot) => {
+                *slot = v;
+                self.level_count += 1;
             }
-            levels.push(v);
+            None => self.too_many_levels = true,
         }
     }
-    true
+
+    fn holds(&self) -> bool {
+        let rare_changes = self.changes <= 1 || self.changes * 10 <= self.present;
+        self.present > 0 && rare_changes && !self.too_many_levels
+    }
+}
+
+/// [`StepLike`] of a whole column.
+#[cfg(test)]
+fn is_step_like(values: &[f64]) -> bool {
+    let mut s = StepLike::default();
+    values.iter().for_each(|&v| s.push(v));
+    s.holds()
 }
 
 // ---------------------------------------------------------------------------------------
 // Reading the rows
 
-/// The needed columns of every data row; NaN marks a missing cell.
+/// What is read of one column: its values (NaN marks a missing cell), its first text cell,
+/// whether it is step-like.
+struct ColumnRead {
+    /// 0-based position in the row.
+    index: usize,
+    values: Option<Vec<f64>>,
+    bad: Option<(usize, String)>,
+    step: Option<StepLike>,
+}
+
+impl ColumnRead {
+    fn new(index: usize, capacity: Option<usize>, step: bool) -> Self {
+        Self {
+            index,
+            values: capacity.map(Vec::with_capacity),
+            bad: None,
+            step: step.then(StepLike::default),
+        }
+    }
+
+    fn push(&mut self, line: usize, cell: &str) {
+        let v = match parse_cell(cell) {
+            Cell::Value(v) => v,
+            Cell::Missing => f64::NAN,
+            Cell::Text => {
+                if self.bad.is_none() {
+                    self.bad = Some((line, shorten(cell).into_owned()));
+                }
+                f64::NAN
+            }
+        };
+        if let Some(values) = self.values.as_mut() {
+            values.push(v);
+        }
+        if let Some(step) = self.step.as_mut() {
+            step.push(v);
+        }
+    }
+}
+
+/// The columns read from every data row.
 struct Rows {
-    /// File line of each row.
-    lines: Vec<usize>,
-    values: Vec<Option<Vec<f64>>>,
-    /// The first text cell of each needed column.
-    bad: Vec<Option<(usize, String)>>,
+    /// File line of each row (the text is at most [`MAX_FILE_BYTES`], so lines fit).
+    lines: Vec<u32>,
+    /// In file order.
+    columns: Vec<ColumnRead>,
     /// The last line looked at.
     last_line: usize,
 }
 
 impl Rows {
-    fn read(text: &str, skip: usize, layout: &Layout, needed: &[bool]) -> Result<Self, DataError> {
-        let estimate = text.len() / layout.row_bytes.max(1) + 1;
+    /// Reads `columns` (from [`Plan::reads`], in file order) of every data row; `capacity`
+    /// is at least the number of rows ([`row_bound`]).
+    fn read(
+        text: &str,
+        skip: usize,
+        layout: &Layout,
+        columns: Vec<ColumnRead>,
+        capacity: usize,
+    ) -> Result<Self, DataError> {
         let mut rows = Self {
-            lines: Vec::with_capacity(estimate),
-            values: needed
-                .iter()
-                .map(|&n| n.then(|| Vec::with_capacity(estimate)))
-                .collect(),
-            bad: vec![None; needed.len()],
+            lines: Vec::with_capacity(capacity),
+            columns,
             last_line: layout.defined_at,
         };
         let header_row = layout.header_row();
@@ -1097,22 +1329,14 @@ impl Rows {
     fn read_row(&mut self, no: usize, line: &str, layout: &Layout) -> Result<(), DataError> {
         let mut count = 0;
         let mut last_empty = false;
+        let mut next = 0;
         for (c, cell) in fields(line, layout.delimiter).enumerate() {
             count += 1;
             last_empty = cell.is_empty();
-            let Some(Some(column)) = self.values.get_mut(c) else {
-                continue;
-            };
-            column.push(match parse_cell(cell) {
-                Cell::Value(v) => v,
-                Cell::Missing => f64::NAN,
-                Cell::Text => {
-                    if let Some(slot @ None) = self.bad.get_mut(c) {
-                        *slot = Some((no, cell.to_string()));
-                    }
-                    f64::NAN
-                }
-            });
+            if let Some(column) = self.columns.get_mut(next).filter(|r| r.index == c) {
+                column.push(no, cell);
+                next += 1;
+            }
         }
         let tolerated = count == layout.columns + 1 && last_empty;
         if count != layout.columns && !tolerated {
@@ -1123,24 +1347,49 @@ impl Rows {
                 reference: layout.defined_at,
             });
         }
-        self.lines.push(no);
+        self.lines.push(u32::try_from(no).unwrap_or(u32::MAX));
         Ok(())
     }
 
-    fn column(&self, i: usize) -> Option<&[f64]> {
-        self.values.get(i)?.as_deref()
+    /// The values of a guessed input that was judged without keeping them, read again.
+    fn reread_input(
+        &mut self,
+        text: &str,
+        skip: usize,
+        layout: &Layout,
+        input: Option<usize>,
+    ) -> Result<(), DataError> {
+        let Some(i) = input else { return Ok(()) };
+        let Some(k) = self.columns.iter().position(|c| c.index == i) else {
+            return Ok(());
+        };
+        if self.columns[k].values.is_none() {
+            let capacity = self.lines.len();
+            let again = vec![ColumnRead::new(i, Some(capacity), false)];
+            let mut rows = Self::read(text, skip, layout, again, capacity)?;
+            if let Some(column) = rows.columns.pop() {
+                self.columns[k] = column;
+            }
+        }
+        Ok(())
     }
 
     fn bad_at(&self, i: usize) -> Option<&(usize, String)> {
-        self.bad.get(i)?.as_ref()
+        self.columns.iter().find(|c| c.index == i)?.bad.as_ref()
     }
 
     fn take(&mut self, i: usize) -> Vec<f64> {
-        self.values
-            .get_mut(i)
-            .and_then(Option::take)
+        self.columns
+            .iter_mut()
+            .find(|c| c.index == i)
+            .and_then(|c| c.values.take())
             .unwrap_or_default()
     }
+}
+
+/// At least as many as the text's data rows: its lines.
+fn row_bound(text: &str) -> usize {
+    1 + text.bytes().filter(|&b| b == b'\n').count()
 }
 
 fn load_with_layout(
@@ -1150,13 +1399,11 @@ fn load_with_layout(
     paste: bool,
 ) -> Result<StepTest, DataError> {
     let mut plan = Plan::new(layout, options, paste)?;
-    let mut rows = Rows::read(
-        text,
-        options.skip_rows,
-        layout,
-        &plan.needed(layout.columns),
-    )?;
+    let capacity = row_bound(text);
+    let reads = plan.reads(capacity);
+    let mut rows = Rows::read(text, options.skip_rows, layout, reads, capacity)?;
     plan.finish(layout, &rows, paste)?;
+    rows.reread_input(text, options.skip_rows, layout, plan.input)?;
     let output = plan.output.ok_or_else(|| DataError::NoOutput {
         line: layout.defined_at,
         available: layout.available(),
@@ -1191,7 +1438,14 @@ fn load_with_layout(
             plan.notes.push(format!(
                 "the file has no time column: t = k·Ts with Ts = {ts} s (k = 0, 1, …)"
             ));
-            (0..rows.lines.len()).map(|k| k as f64 * ts).collect()
+            let time: Vec<f64> = (0..rows.lines.len()).map(|k| k as f64 * ts).collect();
+            if time.last().is_some_and(|t| !t.is_finite()) {
+                return Err(DataError::TimeOverflow {
+                    sampling_period: ts,
+                    rows: time.len(),
+                });
+            }
+            time
         }
     };
     let output_values = rows.take(output);
@@ -1213,8 +1467,13 @@ fn load_with_layout(
         notes: vec![layout.describe()],
     };
     test.notes.append(&mut plan.notes);
-    let lines = drop_missing(&mut test, &rows.lines);
+    let lines = drop_missing(&mut test, std::mem::take(&mut rows.lines));
     note_equal_times(&mut test, &lines);
+    test.time.shrink_to_fit();
+    test.output.shrink_to_fit();
+    if let Some(u) = test.input.as_mut() {
+        u.shrink_to_fit();
+    }
     if test.time.len() < MIN_SAMPLES {
         return Err(DataError::TooFewSamples {
             line: rows.last_line,
@@ -1225,18 +1484,22 @@ fn load_with_layout(
     Ok(test)
 }
 
+/// Line `k` of a row list, as a line number.
+fn line_of(lines: &[u32], k: usize) -> usize {
+    lines.get(k).map_or(0, |&l| l as usize)
+}
+
 /// Every row has a time, and it never decreases.
-fn check_time(time: &[f64], lines: &[usize], column: &str, hint: &str) -> Result<(), DataError> {
-    let line = |k: usize| lines.get(k).copied().unwrap_or(0);
+fn check_time(time: &[f64], lines: &[u32], column: &str, hint: &str) -> Result<(), DataError> {
     if let Some(k) = time.iter().position(|t| t.is_nan()) {
         return Err(DataError::TimeMissing {
-            line: line(k),
+            line: line_of(lines, k),
             column: column.to_string(),
         });
     }
     match time.windows(2).position(|w| w[1] < w[0]) {
         Some(k) => Err(DataError::TimeNotIncreasing {
-            line: line(k + 1),
+            line: line_of(lines, k + 1),
             time: time[k + 1],
             previous: time[k],
             hint: hint.to_string(),
@@ -1246,77 +1509,67 @@ fn check_time(time: &[f64], lines: &[usize], column: &str, hint: &str) -> Result
 }
 
 /// Drops the rows whose output or input is missing, with a note; returns the kept rows' lines.
-fn drop_missing(test: &mut StepTest, lines: &[usize]) -> Vec<usize> {
+fn drop_missing(test: &mut StepTest, mut lines: Vec<u32>) -> Vec<u32> {
     let input = test.input.as_deref();
     let keep: Vec<bool> = (0..test.output.len())
         .map(|k| {
             !test.output[k].is_nan() && input.is_none_or(|u| u.get(k).is_some_and(|v| !v.is_nan()))
         })
         .collect();
-    let dropped: Vec<usize> = lines
-        .iter()
-        .zip(&keep)
-        .filter(|(_, k)| !**k)
-        .map(|(l, _)| *l)
+    let mut dropped = keep.iter().zip(&lines).filter(|(k, _)| !**k);
+    let total = dropped.clone().count();
+    if total == 0 {
+        return lines;
+    }
+    let shown: Vec<usize> = dropped
+        .by_ref()
+        .take(LISTED_LINES)
+        .map(|(_, &l)| l as usize)
         .collect();
-    if dropped.is_empty() {
-        return lines.to_vec();
-    }
-    let filter = |v: &mut Vec<f64>| {
-        let mut flags = keep.iter();
-        v.retain(|_| flags.next().copied().unwrap_or(false));
-    };
-    filter(&mut test.time);
-    filter(&mut test.output);
-    if let Some(u) = test.input.as_mut() {
-        filter(u);
-    }
     test.notes.push(format!(
         "{}: the output or input is missing (empty or NaN); {} skipped",
-        list_lines(&dropped),
-        if dropped.len() == 1 {
+        list_lines(&shown, total),
+        if total == 1 {
             "that row was"
         } else {
             "those rows were"
         }
     ));
+    fn filter<T>(v: &mut Vec<T>, keep: &[bool]) {
+        let mut flags = keep.iter();
+        v.retain(|_| flags.next().copied().unwrap_or(false));
+    }
+    filter(&mut test.time, &keep);
+    filter(&mut test.output, &keep);
+    if let Some(u) = test.input.as_mut() {
+        filter(u, &keep);
+    }
+    filter(&mut lines, &keep);
+    lines.shrink_to_fit();
     lines
-        .iter()
-        .zip(&keep)
-        .filter(|(_, k)| **k)
-        .map(|(l, _)| *l)
-        .collect()
 }
 
-/// "line 4" / "lines 4, 9 and 12" / "lines 4, 9, … and 37 more".
-fn list_lines(lines: &[usize]) -> String {
-    match lines {
-        [one] => format!("line {one}"),
-        _ if lines.len() > LISTED_LINES => {
-            let shown: Vec<String> = lines[..LISTED_LINES].iter().map(usize::to_string).collect();
-            format!(
-                "lines {} and {} more",
-                shown.join(", "),
-                lines.len() - LISTED_LINES
-            )
-        }
-        [init @ .., last] => {
-            let shown: Vec<String> = init.iter().map(usize::to_string).collect();
-            format!("lines {} and {last}", shown.join(", "))
-        }
+/// "line 4" / "lines 4, 9 and 12" / "lines 4, 9, … and 37 more": `shown` are the first of
+/// `total` lines.
+fn list_lines(shown: &[usize], total: usize) -> String {
+    let shown = &shown[..shown.len().min(LISTED_LINES)];
+    let text: Vec<String> = shown.iter().map(usize::to_string).collect();
+    match shown {
         [] => "no line".to_string(),
+        [one] if total == 1 => format!("line {one}"),
+        _ if total > shown.len() => {
+            format!("lines {} and {} more", text.join(", "), total - shown.len())
+        }
+        [.., last] => format!("lines {} and {last}", text[..text.len() - 1].join(", ")),
     }
 }
 
 /// Notes the consecutive samples that share a time, saying which is before a step.
-fn note_equal_times(test: &mut StepTest, lines: &[usize]) {
-    let equal: Vec<usize> = (1..test.time.len())
-        .filter(|&k| test.time[k] == test.time[k - 1])
-        .collect();
-    let line = |k: usize| lines.get(k).copied().unwrap_or(0);
+fn note_equal_times(test: &mut StepTest, lines: &[u32]) {
+    let mut equal = (1..test.time.len()).filter(|&k| test.time[k] == test.time[k - 1]);
     let mut notes = Vec::new();
-    for &k in equal.iter().take(LISTED_LINES) {
-        let (a, b, t) = (line(k - 1), line(k), test.time[k]);
+    for k in equal.by_ref().take(LISTED_LINES) {
+        let (a, b, t) = (line_of(lines, k - 1), line_of(lines, k), test.time[k]);
         let change = test.input.as_deref().and_then(|u| {
             let (before, after) = (*u.get(k - 1)?, *u.get(k)?);
             (before != after).then_some((before, after))
@@ -1330,11 +1583,9 @@ fn note_equal_times(test: &mut StepTest, lines: &[usize]) {
             None => format!("lines {a} and {b} have the same time {t}; both were kept"),
         });
     }
-    if equal.len() > LISTED_LINES {
-        notes.push(format!(
-            "{} more pairs of rows share a time",
-            equal.len() - LISTED_LINES
-        ));
+    let more = equal.count();
+    if more > 0 {
+        notes.push(format!("{more} more pairs of rows share a time"));
     }
     test.notes.append(&mut notes);
 }
@@ -1424,12 +1675,22 @@ mod tests {
     }
 
     #[test]
+    fn long_text_is_shortened_in_messages() {
+        assert_eq!(shorten("T1"), "T1");
+        let long = "é".repeat(100);
+        assert_eq!(shorten(&long), format!("{}…", "é".repeat(SHOWN_CHARS)));
+        let items = (0..25).map(|k| k.to_string());
+        assert!(join_some(items).ends_with("19, … and 5 more"));
+    }
+
+    #[test]
     fn lines_are_listed_briefly() {
-        assert_eq!(list_lines(&[4]), "line 4");
-        assert_eq!(list_lines(&[4, 9, 12]), "lines 4, 9 and 12");
+        assert_eq!(list_lines(&[4], 1), "line 4");
+        assert_eq!(list_lines(&[4, 9, 12], 3), "lines 4, 9 and 12");
+        assert_eq!(list_lines(&[4], 2), "lines 4 and 1 more");
         let many: Vec<usize> = (1..=20).collect();
         assert_eq!(
-            list_lines(&many),
+            list_lines(&many, many.len()),
             "lines 1, 2, 3, 4, 5, 6, 7, 8 and 12 more"
         );
     }
