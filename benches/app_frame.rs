@@ -1,6 +1,8 @@
 //! CPU time of one app frame while a pole of an 8th-order system is being dragged: egui's
 //! layout, our analysis (exact response, 2000-sample curve, metrics, closed form) and the
-//! tessellation of everything drawn. Driven through egui_kittest, no GPU.
+//! tessellation of everything drawn, and the autosave (the session serialised each frame and
+//! handed to the saver thread, which writes it to a temporary state file). Driven through
+//! egui_kittest, no GPU.
 //! Target (issue 3): ≤ 4 ms per frame on the 2-core machine.
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -32,11 +34,15 @@ fn frame(c: &mut Criterion) {
         system: eighth_order(),
         ..Saved::default()
     };
+    let dir = std::env::temp_dir().join(format!("degrau-bench-app-frame-{}", std::process::id()));
+    let path = dir.join(degrau::app::persist::FILE_NAME);
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    std::fs::write(&path, serde_json::to_string(&saved).expect("json")).expect("a state file");
     let mut h = Harness::builder()
         .with_size([1360.0, 860.0])
         .build_ui_state(
             |ui, app: &mut DegrauApp| app.show(ui),
-            DegrauApp::new(saved),
+            DegrauApp::with_state_file(path),
         );
     h.run_steps(3);
     let start: Pos2 = h.get_by_label("pole 1").rect().center();
@@ -69,6 +75,8 @@ fn frame(c: &mut Criterion) {
         moved != eighth_order().poles[0],
         "the drag must have changed the system"
     );
+    drop(h);
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 criterion_group!(benches, frame);

@@ -53,8 +53,18 @@ impl Analysis {
             ));
         }
         if let Some(r) = response {
-            out.horizon = r.auto_horizon();
-            let (t, y) = r.sample_uniform(0.0, out.horizon, CURVE_SAMPLES);
+            let horizon = r.auto_horizon();
+            let (t, y) = r.sample_uniform(0.0, horizon, CURVE_SAMPLES);
+            if !(horizon.is_finite() && horizon > 0.0) || t.iter().chain(&y).any(|v| !v.is_finite())
+            {
+                // Nothing that is not a number reaches the plot.
+                out.tf = Err(
+                    "the response is beyond double precision (a value or time is not finite)"
+                        .into(),
+                );
+                return out;
+            }
+            out.horizon = horizon;
             out.curve = t.into_iter().zip(y).map(|(t, y)| [t, y]).collect();
             out.info = Some(StepInfo::of_response(&r, &options));
             out.expression = expression(&r, OscillationForm::CosSin);

@@ -8,6 +8,7 @@ use eframe::egui::{self, Color32, DragValue, RichText, Ui};
 use serde::{Deserialize, Serialize};
 
 use crate::app::job::Job;
+use crate::app::system_panel::finite_number;
 use crate::format::sig;
 use crate::ident::data::{self, LoadOptions, StepTest};
 use crate::ident::diagnose::{self, DiagnoseOptions, DiagnoseReport, Step};
@@ -643,13 +644,23 @@ impl IdentView {
         egui::Grid::new("step").num_columns(2).show(ui, |ui| {
             let label = ui.label("Step time t0 (s)");
             changed |= ui
-                .add(DragValue::new(&mut e.t0).speed(0.01).max_decimals(6))
+                .add(
+                    DragValue::new(&mut e.t0)
+                        .speed(0.01)
+                        .max_decimals(6)
+                        .custom_parser(finite_number),
+                )
                 .labelled_by(label.id)
                 .changed();
             ui.end_row();
             let label = ui.label("Step size Δu");
             changed |= ui
-                .add(DragValue::new(&mut e.du).speed(0.01).max_decimals(6))
+                .add(
+                    DragValue::new(&mut e.du)
+                        .speed(0.01)
+                        .max_decimals(6)
+                        .custom_parser(finite_number),
+                )
                 .labelled_by(label.id)
                 .changed();
             ui.end_row();
@@ -671,7 +682,12 @@ impl IdentView {
                 }
                 if let Offset::Fixed(v) = &mut e.offset {
                     changed |= ui
-                        .add(DragValue::new(v).speed(0.01).max_decimals(6))
+                        .add(
+                            DragValue::new(v)
+                                .speed(0.01)
+                                .max_decimals(6)
+                                .custom_parser(finite_number),
+                        )
                         .changed();
                 }
             });
@@ -781,7 +797,12 @@ impl IdentView {
                 let mut v = l.guess.get(p);
                 let speed = 0.01 * v.abs().max(0.01);
                 if ui
-                    .add(DragValue::new(&mut v).speed(speed).max_decimals(6))
+                    .add(
+                        DragValue::new(&mut v)
+                            .speed(speed)
+                            .max_decimals(6)
+                            .custom_parser(finite_number),
+                    )
                     .labelled_by(label.id)
                     .changed()
                 {

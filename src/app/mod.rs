@@ -5,6 +5,11 @@
 //! Every change to the system, whatever made it (a drag, a typed number, a menu), is one
 //! undoable edit: the app compares the system before and after each frame and records the
 //! state before an edit *session* (a drag or a focused text field counts as one).
+//!
+//! The session ([`Saved`]) is kept in the app's own state file ([`persist`]): every state
+//! the app is given, from the file or from a caller, is checked field by field before it
+//! reaches a view, and every change is handed to a saver thread that writes it within a
+//! fraction of a second, frame or no frame.
 
 pub mod analysis;
 pub mod export;
@@ -14,6 +19,7 @@ pub mod identify;
 pub mod job;
 pub mod landscape_view;
 pub mod metrics_table;
+pub mod persist;
 pub mod presets;
 pub mod splane;
 pub mod state;
@@ -51,8 +57,8 @@ pub fn run_with(test: Option<identify::IdentSettings>) -> eframe::Result {
     eframe::run_native(
         "Degrau",
         options,
-        Box::new(move |cc| {
-            let mut app = DegrauApp::from_storage(cc.storage);
+        Box::new(move |_cc| {
+            let mut app = DegrauApp::restore();
             if let Some(settings) = test {
                 let path = settings.path.clone();
                 app.ident.settings = settings;
@@ -74,7 +80,7 @@ pub enum Mode {
     Identify,
 }
 
-/// What is kept between runs (eframe persistence).
+/// What is kept between runs (the state file of [`persist`]).
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Saved {
@@ -107,6 +113,10 @@ pub struct DegrauApp {
     /// The identification view (its settings live in `saved.ident`).
     pub ident: identify::IdentView,
     fonts_ready: bool,
+    /// Writes the session to the state file after each change (none: not kept).
+    saver: Option<persist::Saver>,
+    /// Messages for the student (what could not be restored or saved), dismissable.
+    pub notices: Vec<String>,
 }
 
 /// Adds egui's bundled monospace font (Hack) as a fallback of the proportional one, so
@@ -133,8 +143,56 @@ impl Default for DegrauApp {
 }
 
 impl DegrauApp {
-    /// An app showing `saved`.
+    /// An app showing `saved`, checked field by field as a restored file is (a bad field
+    /// falls back to its default with a notice); nothing is written to disk.
     pub fn new(saved: Saved) -> Self {
+        let (saved, problems) = match serde_json::to_value(&saved) {
+            Ok(value) => persist::restore_value(&value),
+            Err(e) => (
+                Saved::default(),
+                vec![persist::FieldProblem {
+                    field: "the whole session".into(),
+                    reason: e.to_string(),
+                }],
+            ),
+        };
+        let mut app = Self::unchecked(saved);
+        app.notices.extend(restore_notice(&problems, None, None));
+        app
+    }
+
+    /// The session kept in the state file at `path` (restored field by field; a file that
+    /// could not be restored whole is copied aside first), saved there after every change.
+    pub fn with_state_file(path: std::path::PathBuf) -> Self {
+        let restored = persist::restore(&path);
+        let mut app = Self::unchecked(restored.saved);
+        app.notices.extend(restore_notice(
+            &restored.problems,
+            restored.backup.as_deref(),
+            restored.backup_error.as_deref(),
+        ));
+        app.saver = Some(persist::Saver::spawn(path));
+        app
+    }
+
+    /// The last session from the state file in its usual place ([`persist::default_path`]),
+    /// or the built-in example.
+    pub fn restore() -> Self {
+        match persist::default_path() {
+            Some(path) => Self::with_state_file(path),
+            None => {
+                let mut app = Self::default();
+                app.notices.push(
+                    "There is no home directory to keep the session in: it will not be saved."
+                        .into(),
+                );
+                app
+            }
+        }
+    }
+
+    /// An app showing `saved` as it is (the callers check it first).
+    fn unchecked(saved: Saved) -> Self {
         let saved_ident = saved.ident.clone();
         let analysis = Analysis::new(&saved.system, saved.options);
         let compare_analysis = saved
@@ -154,15 +212,14 @@ impl DegrauApp {
             plot_rect: None,
             ident: identify::IdentView::with_settings(saved_ident),
             fonts_ready: false,
+            saver: None,
+            notices: Vec::new(),
         }
     }
 
-    /// Restores the last session, or the built-in example.
-    pub fn from_storage(storage: Option<&dyn eframe::Storage>) -> Self {
-        let saved = storage
-            .and_then(|s| eframe::get_value::<Saved>(s, eframe::APP_KEY))
-            .unwrap_or_default();
-        Self::new(saved)
+    /// The state file the session is saved to, if it is saved.
+    pub fn state_file(&self) -> Option<&std::path::Path> {
+        self.saver.as_ref().map(|s| s.path())
     }
 
     /// The system being edited.
@@ -208,8 +265,15 @@ impl DegrauApp {
         }
     }
 
-    /// Draws one frame into `ui` (the whole window).
+    /// Draws one frame into `ui` (the whole window), then hands the session to the saver if
+    /// it changed.
     pub fn show(&mut self, ui: &mut Ui) {
+        self.show_mode(ui);
+        self.autosave(ui.ctx());
+    }
+
+    /// Draws the frame of the current mode.
+    fn show_mode(&mut self, ui: &mut Ui) {
         if !self.fonts_ready {
             use_math_fallback_font(ui.ctx());
             self.fonts_ready = true;
@@ -226,6 +290,9 @@ impl DegrauApp {
         self.frame_start = self.saved.system.clone();
 
         egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
+        if !self.notices.is_empty() {
+            egui::Panel::top("notices").show(ui, |ui| self.show_notices(ui));
+        }
         self.dropped_and_pasted(ui);
         if self.saved.mode == Mode::Identify {
             self.identify(ui);
@@ -573,6 +640,46 @@ impl DegrauApp {
         }
     }
 
+    /// The notices, each with a button to dismiss it.
+    fn show_notices(&mut self, ui: &mut Ui) {
+        let mut dismissed = None;
+        for (i, text) in self.notices.iter().enumerate() {
+            ui.horizontal_wrapped(|ui| {
+                if ui.button("Dismiss").clicked() {
+                    dismissed = Some(i);
+                }
+                ui.label(RichText::new(text).color(ui.visuals().warn_fg_color));
+            });
+        }
+        if let Some(i) = dismissed {
+            self.notices.remove(i);
+        }
+    }
+
+    /// Hands the session to the saver (it writes only when it changed) and shows a notice
+    /// when writing failed.
+    fn autosave(&mut self, ctx: &egui::Context) {
+        let Some(saver) = self.saver.as_mut() else {
+            return;
+        };
+        self.saved.ident = self.ident.settings_to_save();
+        let offered = serde_json::to_string_pretty(&self.saved)
+            .map_err(|e| e.to_string())
+            .and_then(|json| {
+                saver
+                    .offer(json, Some(ctx))
+                    .then_some(())
+                    .ok_or_else(|| "the saver has stopped".to_string())
+            });
+        let failure = offered.err().or_else(|| saver.take_error());
+        if let Some(reason) = failure {
+            let text = format!("Could not save the session: {reason}");
+            if !self.notices.contains(&text) {
+                self.notices.push(text);
+            }
+        }
+    }
+
     /// The root currently selected on the s-plane.
     pub fn selected(&self) -> Option<RootId> {
         self.saved.splane.selected
@@ -590,13 +697,37 @@ fn compare_pair<'a>(
     }
 }
 
+/// The notice of what could not be restored, naming each field, if anything.
+fn restore_notice(
+    problems: &[persist::FieldProblem],
+    backup: Option<&std::path::Path>,
+    backup_error: Option<&str>,
+) -> Option<String> {
+    if problems.is_empty() {
+        return None;
+    }
+    let parts: Vec<String> = problems
+        .iter()
+        .map(|p| format!("{} ({})", p.field, p.reason))
+        .collect();
+    let mut text = format!(
+        "Part of the last session could not be restored and was reset to its default: {}.",
+        parts.join("; ")
+    );
+    if let Some(path) = backup {
+        text.push_str(&format!(
+            " The file as it was is kept as {}.",
+            path.display()
+        ));
+    }
+    if let Some(reason) = backup_error {
+        text.push_str(&format!(" It could not be kept aside: {reason}."));
+    }
+    Some(text)
+}
+
 impl eframe::App for DegrauApp {
     fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
         self.show(ui);
-    }
-
-    fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        self.saved.ident = self.ident.settings_to_save();
-        eframe::set_value(storage, eframe::APP_KEY, &self.saved);
     }
 }

@@ -8,7 +8,7 @@ use eframe::egui::{
 };
 use serde::{Deserialize, Serialize};
 
-use crate::app::state::{Root, RootId, RootKind, RootRole, System};
+use crate::app::state::{ROOT_LIMIT, Root, RootId, RootKind, RootRole, System};
 use crate::format::sig;
 use crate::lti::expr::format_number;
 
@@ -19,12 +19,45 @@ const MARK_SIZE: f32 = 6.0;
 /// Target pixels between grid lines.
 const GRID_PIXELS: f64 = 70.0;
 
+/// Fewest pixels per unit (1/s) of a view: ±[`ROOT_LIMIT`] fits in a few hundred pixels.
+pub const MIN_PIXELS_PER_UNIT: f64 = 1e-8;
+/// Most pixels per unit of a view (a pixel is 0.1 µ(1/s)).
+pub const MAX_PIXELS_PER_UNIT: f64 = 1e7;
+/// Farthest a view's centre may be from the origin (1/s): ten times [`ROOT_LIMIT`].
+pub const CENTER_LIMIT: f64 = 10.0 * ROOT_LIMIT;
+
 /// Which part of the s-plane is shown: the point at the centre and pixels per unit.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct View {
     pub center_re: f64,
     pub center_im: f64,
     pub pixels_per_unit: f64,
+}
+
+impl View {
+    /// The view clamped to finite, sane ranges (centre within ±[`CENTER_LIMIT`], scale in
+    /// [[`MIN_PIXELS_PER_UNIT`], [`MAX_PIXELS_PER_UNIT`]]); `None` when a number is NaN,
+    /// so the view is fitted to the roots again.
+    pub fn sane(self) -> Option<View> {
+        let View {
+            center_re,
+            center_im,
+            pixels_per_unit,
+        } = self;
+        if center_re.is_nan() || center_im.is_nan() || pixels_per_unit.is_nan() {
+            return None;
+        }
+        Some(View {
+            center_re: center_re.clamp(-CENTER_LIMIT, CENTER_LIMIT),
+            center_im: center_im.clamp(-CENTER_LIMIT, CENTER_LIMIT),
+            pixels_per_unit: pixels_per_unit.clamp(MIN_PIXELS_PER_UNIT, MAX_PIXELS_PER_UNIT),
+        })
+    }
+
+    /// True when the view is already within its sane ranges.
+    pub fn is_sane(&self) -> bool {
+        self.sane() == Some(*self)
+    }
 }
 
 /// The canvas's own state (kept between frames and runs).
@@ -86,12 +119,21 @@ impl Transform {
     }
 }
 
-/// A view showing every root and the origin with a margin.
+/// A view showing every root and the origin with a margin (roots beyond ±[`ROOT_LIMIT`],
+/// or not finite, count as at the limit), within the sane ranges of [`View::sane`].
 pub fn fit_view(system: &System, size: Vec2) -> View {
+    let bounded = |x: f64| {
+        if x.is_nan() {
+            0.0
+        } else {
+            x.clamp(-ROOT_LIMIT, ROOT_LIMIT)
+        }
+    };
     let points: Vec<(f64, f64)> = [RootRole::Pole, RootRole::Zero]
         .iter()
         .flat_map(|&role| system.roots(role).iter())
-        .flat_map(|r| [(r.re, r.im), (r.re, -r.im)])
+        .map(|r| (bounded(r.re), bounded(r.im)))
+        .flat_map(|(re, im)| [(re, im), (re, -im)])
         .chain([(0.0, 0.0)])
         .collect();
     let (min_re, max_re) = points
@@ -102,14 +144,17 @@ pub fn fit_view(system: &System, size: Vec2) -> View {
     let max_im = points.iter().fold(0.0f64, |a, p| a.max(p.1.abs()));
     let half_width = (0.5 * (max_re - min_re) * 1.25).max(1.0);
     let half_height = (max_im * 1.25).max(1.0);
-    let pixels_per_unit = (size.x as f64 / 2.0 / half_width)
-        .min(size.y as f64 / 2.0 / half_height)
-        .max(1e-6);
-    View {
+    let pixels_per_unit = (size.x as f64 / 2.0 / half_width).min(size.y as f64 / 2.0 / half_height);
+    let view = View {
         center_re: 0.5 * (min_re + max_re),
         center_im: 0.0,
         pixels_per_unit,
-    }
+    };
+    view.sane().unwrap_or(View {
+        center_re: 0.0,
+        center_im: 0.0,
+        pixels_per_unit: 100.0,
+    })
 }
 
 /// Colours of the canvas for the current theme.
@@ -161,9 +206,11 @@ impl Palette {
 pub fn show(ui: &mut Ui, system: &mut System, state: &mut SPlaneState) -> Response {
     let size = ui.available_size().max(Vec2::splat(120.0));
     let (rect, background) = ui.allocate_exact_size(size, Sense::click_and_drag());
-    let view = *state
+    let view = state
         .view
-        .get_or_insert_with(|| fit_view(system, rect.size()));
+        .and_then(View::sane)
+        .unwrap_or_else(|| fit_view(system, rect.size()));
+    state.view = Some(view);
     let transform = Transform { rect, view };
     let palette = Palette::of(ui);
     let painter = ui.painter_at(rect);
@@ -198,43 +245,39 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
     let (re1, im0) = t.to_plane(rect.right_bottom());
     let grid = Stroke::new(0.5, palette.grid);
     let font = FontId::proportional(11.0);
-    let mut k = (re0 / step).ceil();
-    while k * step <= re1 {
-        let x = t.to_screen(k * step, 0.0).x;
+    for re in super::grid::multiples(re0, re1, step) {
+        let x = t.to_screen(re, 0.0).x;
         painter.line_segment(
             [Pos2::new(x, rect.top()), Pos2::new(x, rect.bottom())],
             grid,
         );
-        if k != 0.0 {
+        if re != 0.0 {
             let y = origin.y.clamp(rect.top(), rect.bottom() - 14.0);
             painter.text(
                 Pos2::new(x + 2.0, y + 2.0),
                 Align2::LEFT_TOP,
-                format_number(k * step),
+                format_number(re),
                 font.clone(),
                 palette.text,
             );
         }
-        k += 1.0;
     }
-    let mut k = (im0 / step).ceil();
-    while k * step <= im1 {
-        let y = t.to_screen(0.0, k * step).y;
+    for im in super::grid::multiples(im0, im1, step) {
+        let y = t.to_screen(0.0, im).y;
         painter.line_segment(
             [Pos2::new(rect.left(), y), Pos2::new(rect.right(), y)],
             grid,
         );
-        if k != 0.0 {
+        if im != 0.0 {
             let x = origin.x.clamp(rect.left(), rect.right() - 30.0);
             painter.text(
                 Pos2::new(x + 3.0, y),
                 Align2::LEFT_CENTER,
-                format!("{}j", format_number(k * step)),
+                format!("{}j", format_number(im)),
                 font.clone(),
                 palette.text,
             );
         }
-        k += 1.0;
     }
     if damping_grid {
         paint_damping_grid(painter, t, step, palette);
@@ -322,13 +365,15 @@ fn pan_and_zoom(ui: &Ui, background: &Response, t: &Transform, state: &mut SPlan
         let factor = pinch as f64 * (scroll as f64 / 300.0).exp();
         if factor != 1.0 && factor.is_finite() && factor > 0.0 {
             let (re, im) = t.to_plane(pointer);
-            view.pixels_per_unit = (view.pixels_per_unit * factor).clamp(1e-3, 1e7);
+            view.pixels_per_unit =
+                (view.pixels_per_unit * factor).clamp(MIN_PIXELS_PER_UNIT, MAX_PIXELS_PER_UNIT);
             // Keep the point under the pointer fixed.
             let c = t.rect.center();
             view.center_re = re - (pointer.x - c.x) as f64 / view.pixels_per_unit;
             view.center_im = im + (pointer.y - c.y) as f64 / view.pixels_per_unit;
         }
     }
+    state.view = state.view.and_then(View::sane);
 }
 
 fn background_menu(
@@ -353,7 +398,10 @@ fn background_menu(
     };
     background.context_menu(|ui| {
         let mut add = |ui: &mut Ui, text: &str, role: RootRole, root: Root| {
-            if ui.button(text).clicked() {
+            if ui
+                .add_enabled(system.has_room(role), egui::Button::new(text))
+                .clicked()
+            {
                 state.selected = Some(system.add(role, root));
                 ui.close();
             }

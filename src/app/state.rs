@@ -6,6 +6,34 @@ use serde::{Deserialize, Serialize};
 
 use crate::lti::{C64, LtiError, TransferFunction};
 
+/// Largest |σ| and |ω| of a root the app holds (1/s, rad/s); a root typed, dragged or
+/// restored beyond it is clamped to it (typed) or refused (restored).
+pub const ROOT_LIMIT: f64 = 1e9;
+/// Largest |k| or |G(0)| the app holds.
+pub const GAIN_LIMIT: f64 = 1e100;
+/// Largest |A| of the step.
+pub const AMPLITUDE_LIMIT: f64 = 1e100;
+/// Longest dead time θ the app holds (s, about 30 years).
+pub const DELAY_LIMIT: f64 = 1e9;
+/// Most handles (real roots or pairs) in the pole list and in the zero list.
+pub const MAX_ROOTS: usize = 32;
+
+/// `x` clamped to ±[`ROOT_LIMIT`] (NaN stays NaN, for [`System::check`] to refuse).
+fn bounded(x: f64) -> f64 {
+    x.clamp(-ROOT_LIMIT, ROOT_LIMIT)
+}
+
+/// Whether `x` is finite with |x| ≤ `limit`, in words when not.
+fn check_number(what: &str, x: f64, limit: f64) -> Result<(), String> {
+    if x.is_finite() && x.abs() <= limit {
+        Ok(())
+    } else {
+        Err(format!(
+            "{what} = {x} is not a finite number within ±{limit:e}"
+        ))
+    }
+}
+
 /// Whether a handle on the s-plane is one real root or a conjugate pair.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum RootKind {
@@ -26,19 +54,21 @@ pub struct Root {
 }
 
 impl Root {
+    /// A real root at `re` (clamped to ±[`ROOT_LIMIT`]).
     pub fn real(re: f64) -> Self {
         Self {
             kind: RootKind::Real,
-            re,
+            re: bounded(re),
             im: 0.0,
         }
     }
 
+    /// A pair re ± j·|im| (each clamped to ±[`ROOT_LIMIT`]).
     pub fn pair(re: f64, im: f64) -> Self {
         Self {
             kind: RootKind::Pair,
-            re,
-            im: im.abs(),
+            re: bounded(re),
+            im: bounded(im.abs()),
         }
     }
 
@@ -59,10 +89,26 @@ impl Root {
     }
 
     /// Moves the root to s (a real root stays on the axis; a pair follows |Im s|).
+    /// Moves the root to s (a real root stays on the axis; a pair follows |Im s|), clamped
+    /// to ±[`ROOT_LIMIT`].
     pub fn move_to(&mut self, re: f64, im: f64) {
-        self.re = re;
+        self.re = bounded(re);
         if self.kind == RootKind::Pair {
-            self.im = im.abs();
+            self.im = bounded(im.abs());
+        }
+    }
+
+    /// Whether the root is one the app can hold: finite, within ±[`ROOT_LIMIT`], a real
+    /// root on the axis and a pair's ω ≥ 0. `name` is the handle's label ("pole 2").
+    pub fn check(&self, name: &str) -> Result<(), String> {
+        check_number(&format!("{name}: σ"), self.re, ROOT_LIMIT)?;
+        check_number(&format!("{name}: ω"), self.im, ROOT_LIMIT)?;
+        match self.kind {
+            RootKind::Real if self.im != 0.0 => {
+                Err(format!("{name} is real but has ω = {}", self.im))
+            }
+            RootKind::Pair if self.im < 0.0 => Err(format!("{name} has ω = {} < 0", self.im)),
+            _ => Ok(()),
         }
     }
 
@@ -210,7 +256,8 @@ impl System {
         }
     }
 
-    /// Turns a real root into a pair σ ± jω (adding its mirror) or a pair into two real roots.
+    /// Turns a real root into a pair σ ± jω (adding its mirror) or a pair into two real roots
+    /// (when the list has room for one more handle).
     pub fn toggle_pair(&mut self, id: RootId, new_im: f64) {
         let Some(root) = self.root(id).copied() else {
             return;
@@ -221,13 +268,15 @@ impl System {
                     *r = Root::pair(root.re, new_im);
                 }
             }
-            RootKind::Pair => {
+            RootKind::Pair if self.has_room(id.role) => {
                 if let Some(r) = self.root_mut(id) {
                     *r = Root::real(root.re);
                 }
                 self.roots_mut(id.role)
                     .insert(id.index + 1, Root::real(root.re));
             }
+            // A full list keeps the pair rather than drop a root.
+            RootKind::Pair => {}
         }
     }
 
@@ -268,6 +317,21 @@ impl System {
         }
     }
 
+    /// Whether another root fits in the `role` list ([`MAX_ROOTS`] handles at most).
+    pub fn has_room(&self, role: RootRole) -> bool {
+        self.roots(role).len() < MAX_ROOTS
+    }
+
+    /// Whether every number is one the app can hold (see the limits at the top of this
+    /// module), in words naming the first that is not.
+    pub fn check(&self) -> Result<(), String> {
+        check_roots(RootRole::Pole, &self.poles)?;
+        check_roots(RootRole::Zero, &self.zeros)?;
+        check_gain(self.gain)?;
+        check_amplitude(self.amplitude)?;
+        check_delay(self.delay)
+    }
+
     /// Every root id, poles first.
     pub fn ids(&self) -> Vec<RootId> {
         let ids = |role: RootRole, n: usize| (0..n).map(move |index| RootId { role, index });
@@ -275,6 +339,40 @@ impl System {
             .chain(ids(RootRole::Zero, self.zeros.len()))
             .collect()
     }
+}
+
+/// Whether a pole or zero list is one the app can hold: at most [`MAX_ROOTS`] handles, each
+/// passing [`Root::check`].
+pub fn check_roots(role: RootRole, list: &[Root]) -> Result<(), String> {
+    if list.len() > MAX_ROOTS {
+        return Err(format!(
+            "{} {}s, more than the {MAX_ROOTS} the app holds",
+            list.len(),
+            role.name()
+        ));
+    }
+    list.iter()
+        .enumerate()
+        .try_for_each(|(index, root)| root.check(&RootId { role, index }.label()))
+}
+
+/// Whether a gain is finite within ±[`GAIN_LIMIT`].
+pub fn check_gain(gain: f64) -> Result<(), String> {
+    check_number("gain", gain, GAIN_LIMIT)
+}
+
+/// Whether a step amplitude is finite within ±[`AMPLITUDE_LIMIT`].
+pub fn check_amplitude(amplitude: f64) -> Result<(), String> {
+    check_number("step amplitude", amplitude, AMPLITUDE_LIMIT)
+}
+
+/// Whether a dead time is finite in [0, [`DELAY_LIMIT`]] s.
+pub fn check_delay(delay: f64) -> Result<(), String> {
+    check_number("dead time", delay, DELAY_LIMIT)?;
+    if delay < 0.0 {
+        return Err(format!("dead time = {delay} s is negative"));
+    }
+    Ok(())
 }
 
 /// Undo/redo of whole-system snapshots.
@@ -377,6 +475,35 @@ mod tests {
         };
         let tf = s.transfer_function().unwrap();
         assert_eq!(System::from_transfer_function(&tf, s.amplitude), s);
+    }
+
+    #[test]
+    fn roots_stay_within_the_limit_and_bad_numbers_are_named() {
+        let mut r = Root::real(-1e30);
+        assert_eq!(r.re, -ROOT_LIMIT);
+        r.move_to(f64::INFINITY, 3.0);
+        assert_eq!((r.re, r.im), (ROOT_LIMIT, 0.0));
+        assert_eq!(Root::pair(0.0, -1e300).im, ROOT_LIMIT);
+        assert!(System::default().check().is_ok());
+        let mut s = System::default();
+        s.poles[1].re = f64::NAN;
+        let e = s.check().unwrap_err();
+        assert!(e.contains("pole 2: σ"), "{e}");
+        let s = System {
+            delay: -1.0,
+            ..System::default()
+        };
+        assert!(s.check().unwrap_err().contains("dead time"));
+        let s = System {
+            gain: f64::INFINITY,
+            ..System::default()
+        };
+        assert!(s.check().unwrap_err().contains("gain"));
+        let s = System {
+            zeros: vec![Root::real(-1.0); MAX_ROOTS + 1],
+            ..System::default()
+        };
+        assert!(s.check().unwrap_err().contains("zeros"));
     }
 
     #[test]

@@ -6,7 +6,10 @@ use eframe::egui::{self, DragValue, RichText, Ui};
 
 use crate::app::analysis::Analysis;
 use crate::app::presets::Preset;
-use crate::app::state::{GainMode, Root, RootId, RootKind, RootRole, System};
+use crate::app::state::{
+    AMPLITUDE_LIMIT, DELAY_LIMIT, GAIN_LIMIT, GainMode, MAX_ROOTS, ROOT_LIMIT, Root, RootId,
+    RootKind, RootRole, System,
+};
 use crate::lti::poly::format_poly;
 
 /// What the panel asks the app to do beyond editing the system in place.
@@ -78,14 +81,17 @@ fn gain_delay_amplitude(ui: &mut Ui, system: &mut System) {
             number_row(
                 ui,
                 "Gain",
-                DragValue::new(&mut system.gain).speed(0.01).max_decimals(6),
+                DragValue::new(&mut system.gain)
+                    .speed(0.01)
+                    .range(-GAIN_LIMIT..=GAIN_LIMIT)
+                    .max_decimals(6),
             );
             number_row(
                 ui,
                 "Dead time θ (s)",
                 DragValue::new(&mut system.delay)
                     .speed(0.01)
-                    .range(0.0..=f64::MAX)
+                    .range(0.0..=DELAY_LIMIT)
                     .max_decimals(6),
             );
             number_row(
@@ -93,15 +99,28 @@ fn gain_delay_amplitude(ui: &mut Ui, system: &mut System) {
                 "Step amplitude A",
                 DragValue::new(&mut system.amplitude)
                     .speed(0.01)
+                    .range(-AMPLITUDE_LIMIT..=AMPLITUDE_LIMIT)
                     .max_decimals(6),
             );
         });
 }
 
+/// A number typed in a field, as egui reads it (spaces ignored, − as a minus), refused
+/// unless finite: "inf", "NaN" or "1e400" keep the field's value.
+pub fn finite_number(text: &str) -> Option<f64> {
+    let text: String = text
+        .chars()
+        .filter(|c| !c.is_whitespace())
+        .map(|c| if c == '−' { '-' } else { c })
+        .collect();
+    text.parse::<f64>().ok().filter(|x| x.is_finite())
+}
+
 /// A labelled number in a grid row (the label names the field for screen readers and tests).
 fn number_row(ui: &mut Ui, label: &str, value: DragValue<'_>) {
     let name = ui.label(label);
-    ui.add(value).labelled_by(name.id);
+    ui.add(value.custom_parser(finite_number))
+        .labelled_by(name.id);
     ui.end_row();
 }
 
@@ -113,11 +132,18 @@ fn root_list(ui: &mut Ui, system: &mut System, selected: &mut Option<RootId>, ro
     ui.horizontal(|ui| {
         ui.strong(title);
         let name = role.name();
-        if ui.small_button(format!("+ real {name}")).clicked() {
+        let room = system.has_room(role);
+        let full = format!("At most {MAX_ROOTS} {name}s (real or pairs)");
+        let add = |ui: &mut Ui, text: String| {
+            ui.add_enabled(room, egui::Button::new(text).small())
+                .on_disabled_hover_text(&full)
+                .clicked()
+        };
+        if add(ui, format!("+ real {name}")) {
             let re = next_free_real(system.roots(role));
             *selected = Some(system.add(role, Root::real(re)));
         }
-        if ui.small_button(format!("+ {name} pair")).clicked() {
+        if add(ui, format!("+ {name} pair")) {
             let re = next_free_real(system.roots(role));
             *selected = Some(system.add(role, Root::pair(re, 1.0)));
         }
@@ -146,6 +172,8 @@ fn root_list(ui: &mut Ui, system: &mut System, selected: &mut Option<RootId>, ro
                 ui.add(
                     DragValue::new(&mut root.re)
                         .speed(0.02)
+                        .range(-ROOT_LIMIT..=ROOT_LIMIT)
+                        .custom_parser(finite_number)
                         .max_decimals(6)
                         .prefix("σ "),
                 )
@@ -154,7 +182,8 @@ fn root_list(ui: &mut Ui, system: &mut System, selected: &mut Option<RootId>, ro
                     ui.add(
                         DragValue::new(&mut root.im)
                             .speed(0.02)
-                            .range(0.0..=f64::MAX)
+                            .range(0.0..=ROOT_LIMIT)
+                            .custom_parser(finite_number)
                             .max_decimals(6)
                             .prefix("± j"),
                     )
@@ -232,6 +261,20 @@ fn transfer_function(ui: &mut Ui, analysis: &Analysis) {
             ui.label(
                 RichText::new(format!("No system: {reason}")).color(ui.visuals().error_fg_color),
             );
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::finite_number;
+
+    #[test]
+    fn only_finite_numbers_are_read() {
+        assert_eq!(finite_number(" −1e3 "), Some(-1000.0));
+        assert_eq!(finite_number("1 000.5"), Some(1000.5));
+        for bad in ["inf", "-inf", "NaN", "1e400", "", "abc"] {
+            assert_eq!(finite_number(bad), None, "{bad}");
         }
     }
 }

@@ -1,0 +1,294 @@
+//! The app cannot freeze and loses nothing (issue 8), through egui_kittest: an absurd pole
+//! typed in and the s-plane fitted to it, a restored view that is infinite or huge, a state
+//! file with one bad field, and an edit that is on disk without any further frame.
+//!
+//! "Keeps painting" is checked as a person would see it: frames complete, each draws a
+//! bounded number of shapes, and the app still answers (undo, a drag, a button).
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use degrau::app::persist::FILE_NAME;
+use degrau::app::splane::View;
+use degrau::app::state::{ROOT_LIMIT, Root, System};
+use degrau::app::{DegrauApp, Saved};
+use eframe::egui::{self, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+
+/// Most shapes one frame may draw: the s-plane grid is capped at 200 lines a direction, and
+/// the default app draws far fewer than this; an unbounded grid drew millions.
+const MAX_SHAPES: usize = 5000;
+
+fn harness(app: DegrauApp) -> Harness<'static, DegrauApp> {
+    let mut h = Harness::builder()
+        .with_size([1360.0, 860.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), app);
+    h.run_steps(3);
+    h
+}
+
+/// A fresh empty directory for one test's state file.
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("degrau-app-robust-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+/// Runs `frames` frames and checks that each one completes with a bounded drawing.
+fn keeps_painting(h: &mut Harness<'_, DegrauApp>, frames: usize) {
+    for _ in 0..frames {
+        h.step();
+        let shapes = h.output().shapes.len();
+        assert!(
+            shapes > 0 && shapes <= MAX_SHAPES,
+            "a frame drew {shapes} shapes"
+        );
+    }
+}
+
+/// The view the s-plane shows now (set by the last frame).
+fn view(h: &Harness<'_, DegrauApp>) -> View {
+    h.state().saved.splane.view.expect("the s-plane has a view")
+}
+
+/// Types `text` into the number field labelled `label` (the first one) and presses Enter.
+fn type_number(h: &mut Harness<'_, DegrauApp>, label: &str, text: &str) {
+    h.get_all_by_role(egui::accesskit::Role::SpinButton)
+        .find(|n| n.accesskit_node().label().as_deref() == Some(label))
+        .unwrap_or_else(|| panic!("no number field {label:?}"))
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.event(egui::Event::Text(text.into()));
+    h.run_steps(1);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(2);
+}
+
+/// Drags the handle labelled `label` by `by`, as a hand would.
+fn drag(h: &mut Harness<'_, DegrauApp>, label: &str, by: Vec2) {
+    let from = h.get_by_label(label).rect().center();
+    h.hover_at(from);
+    h.run_steps(1);
+    h.drag_at(from);
+    h.run_steps(1);
+    for k in 1..=4 {
+        h.hover_at(from + by * (k as f32 / 4.0));
+        h.run_steps(1);
+    }
+    h.drop_at(from + by);
+    h.run_steps(2);
+}
+
+#[test]
+fn a_pole_typed_as_minus_1e30_and_fit_keep_the_app_painting() {
+    let mut h = harness(DegrauApp::default());
+    type_number(&mut h, "pole 2 ", "-1e30");
+    let pole = h.state().system().poles[1];
+    assert_eq!(
+        pole.re, -ROOT_LIMIT,
+        "the typed σ is clamped to the app's range"
+    );
+    h.get_by_label("Fit").click();
+    keeps_painting(&mut h, 5);
+    assert!(view(&h).is_sane(), "{:?}", view(&h));
+    // The fitted view still shows the far pole.
+    let pole2 = h.get_by_label("pole 2").rect().center();
+    let canvas = h.get_by_label("pole 1").rect().center();
+    assert!(pole2.x < canvas.x, "pole 2 is left of pole 1 on screen");
+    // Usable: undo brings the example back, and its pole can be dragged.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    keeps_painting(&mut h, 2);
+    assert_eq!(h.state().system(), &System::default());
+    h.get_by_label("Fit").click();
+    keeps_painting(&mut h, 2);
+    drag(&mut h, "pole 2", Vec2::new(30.0, 0.0));
+    keeps_painting(&mut h, 2);
+    assert!(
+        h.state().system().poles[1].re > -5.0,
+        "the drag moved pole 2"
+    );
+}
+
+#[test]
+fn absurd_roots_zoom_and_pan_keep_frames_bounded() {
+    let saved = Saved {
+        system: System {
+            poles: vec![Root::pair(-1e30, 1e30), Root::real(1e300)],
+            ..System::default()
+        },
+        ..Saved::default()
+    };
+    // Roots beyond the limit in a given state are refused (the example's poles come back).
+    let mut h = harness(DegrauApp::new(saved));
+    keeps_painting(&mut h, 3);
+    assert_eq!(h.state().system().poles, System::default().poles);
+    h.get_by_label_contains("system.poles");
+    // A pole at the limit, then zoomed all the way in and out and panned far away.
+    h.state_mut().saved.system.poles[1] = Root::real(-ROOT_LIMIT);
+    h.state_mut().saved.splane.view = None;
+    keeps_painting(&mut h, 2);
+    let canvas = h.get_by_label("pole 1").rect().center();
+    for scroll in [3000.0, -3000.0] {
+        for _ in 0..40 {
+            h.hover_at(canvas);
+            h.event(egui::Event::MouseWheel {
+                unit: egui::MouseWheelUnit::Point,
+                delta: Vec2::new(0.0, scroll),
+                modifiers: egui::Modifiers::NONE,
+                phase: egui::TouchPhase::Move,
+                source: egui::MouseWheelSource::Wheel,
+            });
+            keeps_painting(&mut h, 1);
+            assert!(view(&h).is_sane(), "{:?}", view(&h));
+        }
+    }
+    let far = canvas + Vec2::new(-200.0, 0.0);
+    for _ in 0..3 {
+        h.hover_at(canvas);
+        h.run_steps(1);
+        h.drag_at(canvas);
+        h.run_steps(1);
+        h.hover_at(far);
+        keeps_painting(&mut h, 1);
+        h.drop_at(far);
+        keeps_painting(&mut h, 1);
+        assert!(view(&h).is_sane(), "{:?}", view(&h));
+    }
+}
+
+#[test]
+fn a_restored_infinite_view_keeps_painting_and_is_fitted_again() {
+    let mut saved = Saved::default();
+    saved.splane.view = Some(View {
+        center_re: f64::NEG_INFINITY,
+        center_im: f64::NAN,
+        pixels_per_unit: f64::INFINITY,
+    });
+    let mut h = harness(DegrauApp::new(saved));
+    keeps_painting(&mut h, 5);
+    assert!(view(&h).is_sane(), "{:?}", view(&h));
+    h.get_by_label_contains("splane.view");
+    h.get_by_label("pole 1");
+}
+
+#[test]
+fn a_state_file_with_a_huge_view_starts_and_paints() {
+    let dir = temp_dir("huge-view");
+    let path = dir.join(FILE_NAME);
+    // What the unbounded fit used to save after σ = −1e30: every start froze on it.
+    let mut saved = Saved::default();
+    saved.splane.view = Some(View {
+        center_re: -5e29,
+        center_im: 0.0,
+        pixels_per_unit: 1e-6,
+    });
+    std::fs::write(&path, serde_json::to_string(&saved).expect("json")).expect("write");
+    let mut h = harness(DegrauApp::with_state_file(path.clone()));
+    keeps_painting(&mut h, 5);
+    assert!(view(&h).is_sane(), "{:?}", view(&h));
+    h.get_by_label_contains("splane.view");
+    assert_eq!(h.state().system(), &System::default());
+    drop(h);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Polls `path` for up to 2 s until `done` holds for its parsed JSON.
+fn on_disk_soon(path: &Path, done: impl Fn(&serde_json::Value) -> bool) -> serde_json::Value {
+    let start = Instant::now();
+    loop {
+        let value = std::fs::read_to_string(path)
+            .ok()
+            .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok());
+        if let Some(v) = value.filter(&done) {
+            return v;
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(2),
+            "{} does not hold the change after 2 s",
+            path.display()
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+#[test]
+fn a_state_file_with_one_bad_field_restores_the_rest_and_names_it() {
+    let dir = temp_dir("bad-field");
+    let path = dir.join(FILE_NAME);
+    let mut saved = Saved::default();
+    saved.dark = true;
+    saved.phase_form = true;
+    saved.system.gain = 3.0;
+    saved.system.poles[1] = Root::real(-7.0);
+    saved.ident.code = "P1D".into();
+    let mut value = serde_json::to_value(&saved).expect("json");
+    value["system"]["amplitude"] = serde_json::json!("two");
+    let text = serde_json::to_string_pretty(&value).expect("json");
+    std::fs::write(&path, &text).expect("write");
+
+    let mut h = harness(DegrauApp::with_state_file(path.clone()));
+    let s = h.state();
+    assert_eq!(s.system().gain, 3.0);
+    assert_eq!(s.system().poles[1], Root::real(-7.0));
+    assert_eq!(s.system().amplitude, System::default().amplitude);
+    assert!(s.saved.dark && s.saved.phase_form);
+    assert_eq!(s.ident.settings.code, "P1D");
+    h.get_by_label_contains("system.amplitude");
+    // The file as it was is kept aside, and the state file is rewritten whole.
+    let backups: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .expect("dir")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.to_string_lossy().contains(".bad-"))
+        .collect();
+    assert_eq!(backups.len(), 1, "{backups:?}");
+    assert_eq!(std::fs::read_to_string(&backups[0]).expect("backup"), text);
+    let rewritten = on_disk_soon(&path, |v| v["system"]["amplitude"].is_number());
+    assert_eq!(rewritten["system"]["gain"], 3.0);
+    // The notice goes when dismissed.
+    h.get_by_label("Dismiss").click();
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("system.amplitude").is_none());
+    drop(h);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn an_edit_followed_by_no_frame_is_on_disk_within_a_second() {
+    let dir = temp_dir("prompt");
+    let path = dir.join(FILE_NAME);
+    let mut h = harness(DegrauApp::with_state_file(path.clone()));
+    on_disk_soon(&path, |v| {
+        v["system"]["zeros"]
+            .as_array()
+            .is_some_and(|z| z.is_empty())
+    });
+    h.get_by_label("+ real zero").click();
+    h.run_steps(1);
+    assert_eq!(h.state().system().zeros.len(), 1, "the click made the edit");
+    // No further frame: the saver thread alone must write it.
+    let v = on_disk_soon(&path, |v| {
+        v["system"]["zeros"]
+            .as_array()
+            .is_some_and(|z| z.len() == 1)
+    });
+    let restored = DegrauApp::with_state_file(path.clone());
+    assert_eq!(restored.system(), h.state().system());
+    assert!(restored.notices.is_empty(), "{:?}", restored.notices);
+    assert_eq!(
+        v["system"]["zeros"][0]["re"],
+        h.state().system().zeros[0].re
+    );
+    let others: Vec<String> = std::fs::read_dir(&dir)
+        .expect("dir")
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n != FILE_NAME)
+        .collect();
+    assert!(others.is_empty(), "no temporary or backup file: {others:?}");
+    drop((h, restored));
+    std::fs::remove_dir_all(&dir).ok();
+}
