@@ -97,19 +97,6 @@ fn a_file_past_the_cap_is_refused_from_its_size() {
 }
 
 #[test]
-fn a_file_at_the_cap_is_read() {
-    // Exactly the cap, sparse: read, then refused as binary (its bytes are zeros), which
-    // shows the size check let it through.
-    let path = temp_path("at-cap.csv");
-    let file = std::fs::File::create(&path).unwrap();
-    file.set_len(MAX_FILE_BYTES).unwrap();
-    drop(file);
-    let result = load_guarded(&path);
-    std::fs::remove_file(&path).ok();
-    assert_eq!(result.unwrap_err(), DataError::Binary { line: 1 });
-}
-
-#[test]
 fn a_missing_path_and_an_empty_file_say_so() {
     let e = load_guarded(&temp_path("missing.csv")).unwrap_err();
     assert!(matches!(e, DataError::Io { .. }), "{e:?}");
