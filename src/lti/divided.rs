@@ -29,21 +29,15 @@ const MAX_SQUARINGS: u32 = 60;
 const ZERO: C64 = C64::new(0.0, 0.0);
 
 /// f[x₁…x_k] for k = 1…m, f(s) = scale·Π(s − zᵢ)/Π(s − pⱼ): the first column of f(J).
-/// No pole may equal a node. Zeros and poles are applied alternately, which keeps the
-/// intermediate magnitudes near those of the result.
+/// No pole may equal a node. The zeros are applied first, then the poles (for a single
+/// node: the residue k·Π(x − z)·Π 1/(x − p), in that order).
 pub fn rational(nodes: &[C64], scale: f64, zeros: &[C64], poles: &[C64]) -> Vec<C64> {
     let mut v = vec![ZERO; nodes.len()];
     if let Some(first) = v.first_mut() {
         *first = C64::new(scale, 0.0);
     }
-    for i in 0..zeros.len().max(poles.len()) {
-        if let Some(&z) = zeros.get(i) {
-            times_linear(&mut v, nodes, z);
-        }
-        if let Some(&p) = poles.get(i) {
-            over_linear(&mut v, nodes, p);
-        }
-    }
+    zeros.iter().for_each(|&z| times_linear(&mut v, nodes, z));
+    poles.iter().for_each(|&p| over_linear(&mut v, nodes, p));
     v
 }
 
@@ -59,7 +53,7 @@ pub fn times_linear(v: &mut [C64], nodes: &[C64], z: C64) {
 fn over_linear(v: &mut [C64], nodes: &[C64], p: C64) {
     let mut previous = ZERO;
     for (k, value) in v.iter_mut().enumerate() {
-        previous = (*value - previous) / (nodes[k] - p);
+        previous = (*value - previous) * (C64::new(1.0, 0.0) / (nodes[k] - p));
         *value = previous;
     }
 }
