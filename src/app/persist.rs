@@ -50,7 +50,7 @@ pub enum StateError {
     },
     #[error("{} is not a regular file", .0.display())]
     NotAFile(PathBuf),
-    #[error("{} is {1} bytes, more than a saved session can be", .0.display())]
+    #[error("{path} is {1} bytes, more than a saved session can be", path = .0.display())]
     TooLarge(PathBuf, u64),
 }
 
