@@ -221,9 +221,11 @@ fn on_disk_soon(path: &Path, done: impl Fn(&serde_json::Value) -> bool) -> serde
 fn a_state_file_with_one_bad_field_restores_the_rest_and_names_it() {
     let dir = temp_dir("bad-field");
     let path = dir.join(FILE_NAME);
-    let mut saved = Saved::default();
-    saved.dark = true;
-    saved.phase_form = true;
+    let mut saved = Saved {
+        dark: true,
+        phase_form: true,
+        ..Saved::default()
+    };
     saved.system.gain = 3.0;
     saved.system.poles[1] = Root::real(-7.0);
     saved.ident.code = "P1D".into();

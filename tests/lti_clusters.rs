@@ -294,8 +294,8 @@ fn case() -> impl Strategy<Value = Case> {
             let complex = angle_tan != 0.0;
             let count = if complex { (m / 2).max(1) } else { m };
             let mut poles = Vec::new();
-            for k in 0..count {
-                let offset = modulus * spacing * (k as f64 + 0.3 * jitter[k]);
+            for (k, wobble) in jitter.iter().enumerate().take(count) {
+                let offset = modulus * spacing * (k as f64 + 0.3 * wobble);
                 let p = if complex {
                     center + C64::new(-offset, 0.7 * offset)
                 } else {

@@ -831,7 +831,7 @@ impl IdentView {
                 "Run from the guess and from spread-out starts, keep the best result that is not an alias",
             );
             if self.settings.multistart {
-                ui.add(DragValue::new(&mut self.settings.starts).range(2..=256).suffix(" starts"));
+                ui.add(DragValue::new(&mut self.settings.starts).range(2..=crate::ident::fit::MAX_STARTS).suffix(" starts"));
             }
         });
         ui.horizontal(|ui| {

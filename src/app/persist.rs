@@ -25,6 +25,7 @@ use super::identify::{CODES, IdentSettings};
 use super::splane::{SPlaneState, View};
 use super::state::{self, RootRole, System};
 use crate::ident::experiment::{Experiment, Offset};
+use crate::ident::fit::MAX_STARTS;
 
 /// The environment variable naming the directory of the state file (tests use a temporary
 /// one).
@@ -36,8 +37,6 @@ const MAX_STATE_BYTES: u64 = 16 << 20;
 /// How long the saver waits for further changes before writing (a drag writes a few times
 /// a second, not every frame).
 pub const DEBOUNCE: Duration = Duration::from_millis(200);
-/// The most multistart starts the identification panel offers.
-const MAX_STARTS: usize = 256;
 
 /// Why the state file could not be read or written, in plain words.
 #[derive(Debug, thiserror::Error)]

@@ -16,9 +16,7 @@ use crate::ident::models::{Param, Structure};
 
 use super::{CliError, finite_f64};
 
-/// The most starts of one fit: each start is a whole local fit, so the time grows with them
-/// (10⁵ starts took 18 s on the 35 samples of the LECI test, uncapped).
-pub const MAX_STARTS: usize = 1000;
+pub use crate::ident::fit::MAX_STARTS;
 
 /// How the measured file is read and prepared (shared by `fit` and `diagnose`).
 #[derive(Debug, Clone, Default, Args)]
@@ -304,6 +302,9 @@ pub struct FitJson {
     pub params: BTreeMap<String, f64>,
     pub ci95: BTreeMap<String, Option<[f64; 2]>>,
     pub mse: f64,
+    /// ln MSE, finite even where the MSE itself is beyond double precision (`mse` is then
+    /// null and a warning says so).
+    pub ln_mse: f64,
     pub rmse: f64,
     pub fit_percent: f64,
     pub aic: f64,
@@ -331,6 +332,7 @@ impl FitJson {
             params,
             ci95,
             mse: report.mse,
+            ln_mse: report.ln_mse,
             rmse: report.rmse,
             fit_percent: report.fit_percent,
             aic: report.aic,
@@ -366,7 +368,9 @@ pub fn run_fit(args: &FitArgs) -> Result<(), CliError> {
         .map(parse_guess)
         .transpose()?
         .unwrap_or_default();
-    let (mut test, experiment, data) = args.data.prepare()?;
+    let (test, experiment, data) = args.data.prepare()?;
+    // The fit needs only the prepared samples: the record itself goes now.
+    drop(test);
     let structure = experiment
         .structure(&args.model, args.drift, &data)
         .map_err(|e| CliError::Options(e.to_string()))?;
@@ -376,12 +380,9 @@ pub fn run_fit(args: &FitArgs) -> Result<(), CliError> {
         experiment.operating_point(&data),
         &args.data.y0,
     )?;
-    // The fit reads the time and output again; the input found the step already.
-    drop(data);
-    test.input = None;
-    let (_, report) = experiment
-        .fit(
-            &test,
+    let report = experiment
+        .fit_prepared(
+            &data,
             &args.model,
             args.drift,
             &overrides,

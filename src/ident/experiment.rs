@@ -156,12 +156,26 @@ impl Experiment {
         observer: &mut dyn FitObserver,
     ) -> Result<(FitData, FitReport), ExperimentError> {
         let data = self.fit_data(test)?;
-        let structure = self.structure(code, drift, &data)?;
-        let mut guess = self.guess(structure, &data);
+        let report = self.fit_prepared(&data, code, drift, overrides, options, observer)?;
+        Ok((data, report))
+    }
+
+    /// Fits `code` to samples already prepared by [`Experiment::fit_data`] (so a caller that
+    /// holds them needs no second copy of the record).
+    pub fn fit_prepared(
+        &self,
+        data: &FitData,
+        code: &str,
+        drift: bool,
+        overrides: &[(Param, f64)],
+        options: &FitOptions,
+        observer: &mut dyn FitObserver,
+    ) -> Result<FitReport, ExperimentError> {
+        let structure = self.structure(code, drift, data)?;
+        let mut guess = self.guess(structure, data);
         for &(p, v) in overrides {
             guess.set(p, v);
         }
-        let report = fit(&data, structure, guess, options, observer)?;
-        Ok((data, report))
+        Ok(fit(data, structure, guess, options, observer)?)
     }
 }

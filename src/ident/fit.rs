@@ -79,6 +79,11 @@ impl Method {
     }
 }
 
+/// The most starts of one fit (the CLI and the app refuse more): each start is a whole local
+/// fit, so the time grows with them (10⁵ starts took 18 s on the 35 samples of the LECI test,
+/// uncapped).
+pub const MAX_STARTS: usize = 1000;
+
 /// How to fit.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct FitOptions {

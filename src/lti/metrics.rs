@@ -39,6 +39,10 @@ use super::response::{Behaviour, Derivative, StepResponse};
 /// Excursions below this fraction of |Δ| are numerical noise, not overshoot.
 pub const NEGLIGIBLE: f64 = 1e-10;
 
+/// The narrowest settling band accepted (a fraction of the step's effect): the response is
+/// computed to about 1e-12 of its final value, so a band below 1e-9 could not be judged.
+pub const MIN_SETTLING_THRESHOLD: f64 = 1e-9;
+
 /// Thresholds of the metrics, as MATLAB's `stepinfo` options.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct StepInfoOptions {
@@ -61,9 +65,11 @@ impl StepInfoOptions {
     /// Checks that the thresholds make sense: 0 < band < 1 and 0 ≤ low < high ≤ 1.
     pub fn validate(&self) -> Result<(), String> {
         let (lo, hi) = self.rise_limits;
-        if !(self.settling_threshold > 0.0 && self.settling_threshold < 1.0) {
+        if !(self.settling_threshold >= MIN_SETTLING_THRESHOLD && self.settling_threshold < 1.0) {
             return Err(format!(
-                "the settling band must be between 0 and 100 %, not {} %",
+                "the settling band must be between {} % and 100 %, not {} % (a narrower band \
+                 is below what double precision resolves in the response)",
+                100.0 * MIN_SETTLING_THRESHOLD,
                 100.0 * self.settling_threshold
             ));
         }
