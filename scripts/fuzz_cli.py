@@ -129,7 +129,9 @@ FIT_NUMBERS = {"mse", "rmse", "fit_percent", "aic"}
 def suspicious(doc, path=""):
     if isinstance(doc, dict):
         for k, v in doc.items():
-            if k in FIT_NUMBERS and v is None:
+            overflow_said = k == "mse" and any(
+                "beyond double precision" in w for w in doc.get("warnings", []))
+            if k in FIT_NUMBERS and v is None and not overflow_said:
                 return f"{path}.{k} is null"
             bad = suspicious(v, f"{path}.{k}")
             if bad:

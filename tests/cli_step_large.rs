@@ -97,3 +97,27 @@ fn a_tiny_normal_zero_reports_the_true_peak() {
     let v = json(&["step", "--zeros", "1e-300", "--poles", "-1", "--json"]);
     assert_eq!(number(&v, "peak"), 1.0);
 }
+
+#[test]
+fn a_huge_delay_and_a_subnormal_gain_and_a_needle_band() {
+    // e^{−300 000 s}·… : the rise time of 1/(s + 1) is ln 9 whatever the delay.
+    let v = json(&["step", "--poles=-1", "--delay", "1e300", "--json"]);
+    assert!((number(&v, "rise_time") - 9f64.ln()).abs() < 1e-12);
+    let out = degrau(&["step", "--poles=-1", "--gain", "1e-320"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("1e-320"));
+    // A band of 1e-9 settles at ln(1e9) s, known to eps/1e-9 (y' = 1e-9 there); a narrower
+    // one is refused in short words.
+    let v = json(&[
+        "step",
+        "--poles=-1",
+        "--settling-threshold",
+        "1e-9",
+        "--json",
+    ]);
+    assert!((number(&v, "settling_time") - 1e9f64.ln()).abs() < 1e-6);
+    let out = degrau(&["step", "--poles=-1", "--settling-threshold", "1e-300"]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("not 1e-300") && err.len() < 300, "{err}");
+}

@@ -62,22 +62,22 @@ impl Default for StepInfoOptions {
 }
 
 impl StepInfoOptions {
-    /// Checks that the thresholds make sense: 0 < band < 1 and 0 ≤ low < high ≤ 1.
+    /// Checks that the thresholds make sense: 1e-9 ≤ band < 1 and 0 ≤ low < high ≤ 1.
     pub fn validate(&self) -> Result<(), String> {
         let (lo, hi) = self.rise_limits;
         if !(self.settling_threshold >= MIN_SETTLING_THRESHOLD && self.settling_threshold < 1.0) {
             return Err(format!(
-                "the settling band must be between {} % and 100 %, not {} % (a narrower band \
-                 is below what double precision resolves in the response)",
-                100.0 * MIN_SETTLING_THRESHOLD,
-                100.0 * self.settling_threshold
+                "the settling band must be a fraction from {} up to 1 of the step's effect, \
+                 not {} (a narrower band is below what double precision resolves)",
+                super::exact(MIN_SETTLING_THRESHOLD),
+                super::exact(self.settling_threshold)
             ));
         }
         if !((0.0..1.0).contains(&lo) && lo < hi && hi <= 1.0) {
             return Err(format!(
-                "the rise limits must satisfy 0 ≤ low < high ≤ 100 %, not {} % to {} %",
-                100.0 * lo,
-                100.0 * hi
+                "the rise limits must be fractions with 0 ≤ low < high ≤ 1, not {} and {}",
+                super::exact(lo),
+                super::exact(hi)
             ));
         }
         Ok(())
