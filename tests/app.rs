@@ -3,6 +3,7 @@
 
 use degrau::app::DegrauApp;
 use degrau::app::state::{RootKind, System};
+use degrau::ident::fit::Lcg;
 use eframe::egui::{self, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
@@ -257,25 +258,6 @@ fn the_curve_exports_as_csv() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// A small deterministic generator (no dependency needed for a scripted walk).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> u64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        self.0 >> 33
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-    fn unit(&mut self) -> f32 {
-        (self.next() % 10_000) as f32 / 10_000.0
-    }
-}
-
 #[test]
 fn no_sequence_of_edits_panics() {
     for seed in [1u64, 7, 42] {
@@ -292,8 +274,11 @@ fn no_sequence_of_edits_panics() {
                 0..=2 if !labels.is_empty() => {
                     let label = &labels[rng.below(labels.len())];
                     let from = center_of(&h, label);
-                    let to =
-                        canvas + Vec2::new(rng.unit() * 500.0 - 250.0, rng.unit() * 400.0 - 200.0);
+                    let to = canvas
+                        + Vec2::new(
+                            (rng.unit() as f32) * 500.0 - 250.0,
+                            (rng.unit() as f32) * 400.0 - 200.0,
+                        );
                     drag(&mut h, from, to);
                 }
                 3 => {

@@ -9,31 +9,11 @@
 
 use std::collections::BTreeMap;
 
+use degrau::ident::fit::Lcg;
+
 use degrau::ident::data::{
     ColumnChoice, DataError, LoadOptions, MIN_SAMPLES, StepTest, from_columns, load_bytes,
 };
-
-/// A small linear congruential generator (Knuth's MMIX constants).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> u64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        self.0 >> 11
-    }
-
-    /// Uniform in 0..n (n > 0).
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-
-    fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
-        &items[self.below(items.len())]
-    }
-}
 
 fn env_number(name: &str, default: u64) -> u64 {
     std::env::var(name)
