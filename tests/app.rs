@@ -1,6 +1,8 @@
 //! The real app driven through egui_kittest (no GPU): drag poles, add and delete zeros,
 //! undo, watch the metrics, toggle markers. Assertions read what a student reads.
 
+mod kit;
+
 use degrau::app::DegrauApp;
 use degrau::app::state::{RootKind, System};
 use degrau::ident::fit::Lcg;
@@ -311,14 +313,7 @@ fn no_sequence_of_edits_panics() {
                 }
                 _ => {
                     let scroll = if rng.below(2) == 0 { 120.0 } else { -120.0 };
-                    h.hover_at(canvas);
-                    h.event(egui::Event::MouseWheel {
-                        unit: egui::MouseWheelUnit::Point,
-                        delta: Vec2::new(0.0, scroll),
-                        modifiers: egui::Modifiers::NONE,
-                        phase: egui::TouchPhase::Move,
-                        source: egui::MouseWheelSource::Wheel,
-                    });
+                    kit::wheel(&mut h, canvas, scroll);
                 }
             }
             h.run_steps(2);

@@ -1,6 +1,8 @@
 //! The identification view of the real app, through egui_kittest: load a file by path, drag
 //! the dead-time handle, run a fit, cancel one, read the parameter table and residuals.
 
+mod kit;
+
 use std::time::{Duration, Instant};
 
 use degrau::app::DegrauApp;
@@ -41,21 +43,6 @@ fn load(h: &mut Harness<'_, DegrauApp>, path: &str) {
     h.run_steps(3);
 }
 
-/// Drags the widget labelled `label` right by `pixels`, in five moves as a hand would.
-fn drag_right(h: &mut Harness<'_, DegrauApp>, label: &str, pixels: f32) {
-    let from = h.get_by_label(label).rect().center();
-    h.hover_at(from);
-    h.run_steps(1);
-    h.drag_at(from);
-    h.run_steps(1);
-    for k in 1..=5 {
-        h.hover_at(from + Vec2::new(pixels * k as f32 / 5.0, 0.0));
-        h.run_steps(1);
-    }
-    h.drop_at(from + Vec2::new(pixels, 0.0));
-    h.run_steps(2);
-}
-
 /// Steps until `done` holds (the fit runs on its own thread), at most 20 s.
 fn wait_for(h: &mut Harness<'_, DegrauApp>, done: impl Fn(&Harness<'_, DegrauApp>) -> bool) {
     let start = Instant::now();
@@ -91,7 +78,7 @@ fn load_drag_the_dead_time_fit_and_read_the_results() {
         .unwrap()
         .guess
         .get(Param::Td);
-    drag_right(&mut h, "dead time handle", 30.0);
+    kit::drag_by(&mut h, "dead time handle", Vec2::new(30.0, 0.0), 5);
     let td_after = h
         .state()
         .ident
@@ -214,7 +201,7 @@ fn the_step_time_line_drags_t0() {
     h.run_steps(3);
     let t0 = |h: &Harness<'_, DegrauApp>| h.state().ident.loaded.as_ref().unwrap().experiment.t0;
     assert_eq!(t0(&h), 5.0);
-    drag_right(&mut h, "step time line", 40.0);
+    kit::drag_by(&mut h, "step time line", Vec2::new(40.0, 0.0), 5);
     let moved = t0(&h);
     // 40 px on a plot of about 40 s across some 800 px: about 2 s later.
     assert!(moved > 5.5 && moved < 9.0, "t0 5 → {moved}");

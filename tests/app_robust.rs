@@ -5,6 +5,8 @@
 //! "Keeps painting" is checked as a person would see it: frames complete, each draws a
 //! bounded number of shapes, and the app still answers (undo, a drag, a button).
 
+mod kit;
+
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -68,21 +70,6 @@ fn type_number(h: &mut Harness<'_, DegrauApp>, label: &str, text: &str) {
     h.run_steps(2);
 }
 
-/// Drags the handle labelled `label` by `by`, as a hand would.
-fn drag(h: &mut Harness<'_, DegrauApp>, label: &str, by: Vec2) {
-    let from = h.get_by_label(label).rect().center();
-    h.hover_at(from);
-    h.run_steps(1);
-    h.drag_at(from);
-    h.run_steps(1);
-    for k in 1..=4 {
-        h.hover_at(from + by * (k as f32 / 4.0));
-        h.run_steps(1);
-    }
-    h.drop_at(from + by);
-    h.run_steps(2);
-}
-
 #[test]
 fn a_pole_typed_as_minus_1e30_and_fit_keep_the_app_painting() {
     let mut h = harness(DegrauApp::default());
@@ -105,7 +92,7 @@ fn a_pole_typed_as_minus_1e30_and_fit_keep_the_app_painting() {
     assert_eq!(h.state().system(), &System::default());
     h.get_by_label("Fit").click();
     keeps_painting(&mut h, 2);
-    drag(&mut h, "pole 2", Vec2::new(30.0, 0.0));
+    kit::drag_by(&mut h, "pole 2", Vec2::new(30.0, 0.0), 4);
     keeps_painting(&mut h, 2);
     assert!(
         h.state().system().poles[1].re > -5.0,
@@ -136,14 +123,7 @@ fn absurd_roots_zoom_and_pan_keep_frames_bounded() {
     let canvas = h.get_by_label("pole 1").rect().center();
     for scroll in [3000.0, -3000.0] {
         for _ in 0..40 {
-            h.hover_at(canvas);
-            h.event(egui::Event::MouseWheel {
-                unit: egui::MouseWheelUnit::Point,
-                delta: Vec2::new(0.0, scroll),
-                modifiers: egui::Modifiers::NONE,
-                phase: egui::TouchPhase::Move,
-                source: egui::MouseWheelSource::Wheel,
-            });
+            kit::wheel(&mut h, canvas, scroll);
             keeps_painting(&mut h, 1);
             assert!(view(&h).is_sane(), "{:?}", view(&h));
         }

@@ -1,0 +1,34 @@
+//! Hand gestures shared by the kittests: a drag in several moves and a mouse-wheel turn.
+#![allow(dead_code)] // each test binary uses its own subset
+
+use degrau::app::DegrauApp;
+use eframe::egui::{self, Pos2, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+
+/// Drags the widget labelled `label` by `by`, in `moves` moves as a hand would.
+pub fn drag_by(h: &mut Harness<'_, DegrauApp>, label: &str, by: Vec2, moves: usize) {
+    let from = h.get_by_label(label).rect().center();
+    h.hover_at(from);
+    h.run_steps(1);
+    h.drag_at(from);
+    h.run_steps(1);
+    for k in 1..=moves {
+        h.hover_at(from + by * (k as f32 / moves as f32));
+        h.run_steps(1);
+    }
+    h.drop_at(from + by);
+    h.run_steps(2);
+}
+
+/// One turn of the mouse wheel by `dy` points with the pointer at `at` (no frame is run).
+pub fn wheel(h: &mut Harness<'_, DegrauApp>, at: Pos2, dy: f32) {
+    h.hover_at(at);
+    h.event(egui::Event::MouseWheel {
+        unit: egui::MouseWheelUnit::Point,
+        delta: Vec2::new(0.0, dy),
+        modifiers: egui::Modifiers::NONE,
+        phase: egui::TouchPhase::Move,
+        source: egui::MouseWheelSource::Wheel,
+    });
+}
