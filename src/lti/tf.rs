@@ -314,8 +314,16 @@ fn paired(roots: &[C64], what: &'static str) -> Result<Vec<C64>, LtiError> {
     }
     let mut lower: Vec<C64> = roots.iter().copied().filter(|r| r.im < 0.0).collect();
     for upper in roots.iter().filter(|r| r.im > 0.0) {
+        // The nearest partner within the tolerance: in a cluster of pairs the first one
+        // within it may be another pair's, which would leave a root unpaired.
         let tol = PAIR_TOLERANCE * upper.norm();
-        match lower.iter().position(|l| (l.conj() - upper).norm() <= tol) {
+        let nearest = lower
+            .iter()
+            .enumerate()
+            .map(|(i, l)| (i, (l.conj() - upper).norm()))
+            .filter(|&(_, d)| d <= tol)
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        match nearest.map(|(i, _)| i) {
             Some(i) => {
                 lower.swap_remove(i);
             }
