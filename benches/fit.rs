@@ -11,11 +11,9 @@ use degrau::ident::models::{Param, StepSetup, Structure};
 mod common;
 
 fn leci() -> FitData {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../shared/data/seed/leci_step.csv"
-    ))
-    .expect("LECI data");
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv"))
+            .expect("LECI data");
     let (times, y) = text
         .lines()
         .skip(1)

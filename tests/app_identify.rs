@@ -11,13 +11,10 @@ use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
-const LECI: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../shared/data/seed/leci_step.csv"
-);
+const LECI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv");
 const TCLAB: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
-    "/../shared/data/real/tclab_step_q1_50.csv"
+    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
 );
 
 fn harness() -> Harness<'static, DegrauApp> {
@@ -307,7 +304,7 @@ fn a_restart_reloads_the_test_and_its_choices() {
 fn the_input_before_the_record_finds_a_step_at_the_first_sample() {
     const DROPOUTS: &str = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../shared/data/real/tclab_step_q1_50_dropouts.csv"
+        "/tests/data/records/tclab_step_q1_50_dropouts_synthetic.csv"
     );
     let mut h = harness();
     h.state_mut().ident.settings.y_col = "T1".into();

@@ -2,13 +2,10 @@
 
 use std::process::Command;
 
-const LECI: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../shared/data/seed/leci_step.csv"
-);
+const LECI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv");
 const TCLAB: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
-    "/../shared/data/real/tclab_step_q1_50.csv"
+    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
 );
 
 fn fit(args: &[&str]) -> serde_json::Value {

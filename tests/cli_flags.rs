@@ -94,7 +94,10 @@ fn non_finite_values_are_refused_in_every_numeric_flag() {
     }
     // The reproducer: `--t0 NaN` said "0 samples after the step".
     refused(&["fit", STEP, "--t0", "NaN", "--du", "1"], &["--t0", "NaN"]);
-    refused(&["fit", STEP, "--t0", "two"], &["--t0", "is not a number"]);
+    refused(
+        &["fit", STEP, "--t0", "two"],
+        &["--t0", "is not a real number"],
+    );
 }
 
 #[test]

@@ -1,6 +1,7 @@
 //! Loading measured step tests: the malformed and well-formed corpus in tests/data (each
-//! gives a clear error naming its line, or a correct load, never a panic), the real files
-//! in ../shared/data, random bytes and lines, 10⁶ rows, and the measured step
+//! gives a clear error naming its line, or a correct load, never a panic), the lab records
+//! in tests/data/records (real ones where their licence allows, else synthetic stand-ins of
+//! the same format: see its SOURCES.md), random bytes and lines, 10⁶ rows, and the measured step
 //! characteristics of the LECI test of the notes.
 
 use degrau::ident::data::{
@@ -15,8 +16,8 @@ fn corpus(name: &str) -> String {
     format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"))
 }
 
-fn real(name: &str) -> String {
-    format!("{}/../shared/data/real/{name}", env!("CARGO_MANIFEST_DIR"))
+fn record(name: &str) -> String {
+    format!("{}/tests/data/records/{name}", env!("CARGO_MANIFEST_DIR"))
 }
 
 fn load(path: &str, options: &LoadOptions) -> Result<StepTest, DataError> {
@@ -401,10 +402,7 @@ fn pasted_columns() {
 #[test]
 fn leci_loads_35_rows_of_t_and_y() {
     let t = load(
-        concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../shared/data/seed/leci_step.csv"
-        ),
+        concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv"),
         &auto(),
     )
     .unwrap();
@@ -418,10 +416,7 @@ fn leci_loads_35_rows_of_t_and_y() {
 #[test]
 fn leci_measured_step_characteristics() {
     let t = load(
-        concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../shared/data/seed/leci_step.csv"
-        ),
+        concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv"),
         &auto(),
     )
     .unwrap();
@@ -465,7 +460,7 @@ fn tclab_step_with_t0_logged_twice() {
         input: name("Q1"),
         ..auto()
     };
-    let t = load(&real("tclab_step_q1_50.csv"), &o).unwrap();
+    let t = load(&record("tclab_step_q1_50_synthetic.csv"), &o).unwrap();
     assert_eq!(t.time.len(), 801);
     assert_eq!((t.time[0], t.time[1]), (0.0, 0.0));
     assert!(
@@ -482,7 +477,10 @@ fn tclab_step_with_t0_logged_twice() {
         t.notes
     );
     // The names are recognised without options too.
-    assert_eq!(load(&real("tclab_step_q1_50.csv"), &auto()).unwrap(), t);
+    assert_eq!(
+        load(&record("tclab_step_q1_50_synthetic.csv"), &auto()).unwrap(),
+        t
+    );
     let edge = detect_step(&t, None).unwrap();
     assert_eq!((edge.t0, edge.du, edge.index), (0.0, 50.0, 1));
     assert_eq!(operating_point(&t, edge.t0), Some(20.9));
@@ -490,7 +488,7 @@ fn tclab_step_with_t0_logged_twice() {
 
 #[test]
 fn tclab_with_a_pandas_index_column() {
-    let t = load(&real("tclab_step_q1_100_spikes.csv"), &auto()).unwrap();
+    let t = load(&record("tclab_step_q1_100_spikes.csv"), &auto()).unwrap();
     assert_eq!(t.time.len(), 1002);
     assert_eq!(t.time_name, "Time");
     assert_eq!(t.output_name, "T1");
@@ -504,7 +502,7 @@ fn tclab_with_a_pandas_index_column() {
 
 #[test]
 fn tclab_dropouts_file() {
-    let t = load(&real("tclab_step_q1_50_dropouts.csv"), &auto()).unwrap();
+    let t = load(&record("tclab_step_q1_50_dropouts_synthetic.csv"), &auto()).unwrap();
     assert_eq!(t.time.len(), 801);
     assert_eq!(t.input_name.as_deref(), Some("Q1"));
 }
@@ -517,14 +515,14 @@ fn daisy_whitespace_without_header() {
         output: ColumnChoice::Position(3),
         ..auto()
     };
-    let t = load(&real("daisy_heating_system.dat"), &by_position).unwrap();
+    let t = load(&record("daisy_heating_system.dat"), &by_position).unwrap();
     assert_eq!(t.time.len(), 801);
     assert_eq!(
         (t.time[800], t.output[0], t.output[800]),
         (1600.0, 129.32, 120.536)
     );
     // Automatically: column 1 is the time, the piecewise-constant column the input.
-    let a = load(&real("daisy_heating_system.dat"), &auto()).unwrap();
+    let a = load(&record("daisy_heating_system.dat"), &auto()).unwrap();
     assert_eq!(
         (&a.time, &a.output, &a.input),
         (&t.time, &t.output, &t.input)
@@ -548,7 +546,7 @@ fn aeroshield_without_time_column() {
         sampling_period: Some(0.01),
         ..auto()
     };
-    let t = load(&real("aeroshield_pendulum_ident.txt"), &o).unwrap();
+    let t = load(&record("pendulum_aprbs_synthetic.txt"), &o).unwrap();
     assert_eq!(t.time.len(), 5001);
     assert!((t.time[5000] - 50.0).abs() < 1e-9);
     assert_eq!(
@@ -560,7 +558,7 @@ fn aeroshield_without_time_column() {
     let edge = detect_step(&t, Some(0.0)).unwrap();
     assert_eq!((edge.t0, edge.du), (0.0, 0.77618));
     error_of(
-        &real("aeroshield_pendulum_ident.txt"),
+        &record("pendulum_aprbs_synthetic.txt"),
         &auto(),
         &["no sampling period"],
     );
@@ -572,7 +570,7 @@ fn enclosure_with_a_comment_header() {
         output: name("box temp"),
         ..auto()
     };
-    let t = load(&real("enclosure_heater_doublet.csv"), &o).unwrap();
+    let t = load(&record("enclosure_heater_doublet.csv"), &o).unwrap();
     assert_eq!(t.time.len(), 722);
     assert_eq!(t.input_name.as_deref(), Some("control output"));
     assert!(has_note(&t, &["comment on line 1"]));
@@ -581,7 +579,7 @@ fn enclosure_with_a_comment_header() {
     assert!((edge.t0 - 60.8).abs() < 0.1, "{}", edge.t0);
     // Without an output name, the choice is left to the user, with the names.
     error_of(
-        &real("enclosure_heater_doublet.csv"),
+        &record("enclosure_heater_doublet.csv"),
         &auto(),
         &[
             "line 1: several columns could be the output",
@@ -597,7 +595,7 @@ fn oscilloscope_export_with_metadata_and_wall_clock_time() {
         ..auto()
     };
     error_of(
-        &real("rlc_step_underdamped.csv"),
+        &record("rlc_step_underdamped_synthetic.csv"),
         &o,
         &["line 5: several columns could be the output", "3 \"V_C\""],
     );
@@ -607,7 +605,7 @@ fn oscilloscope_export_with_metadata_and_wall_clock_time() {
     };
     // The time column holds wall-clock stamps: an error naming the first one.
     error_of(
-        &real("rlc_step_underdamped.csv"),
+        &record("rlc_step_underdamped_synthetic.csv"),
         &o,
         &[
             "line 6, column \"time\"",
@@ -621,7 +619,7 @@ fn oscilloscope_export_with_metadata_and_wall_clock_time() {
         output: name("V_C"),
         input: name("V_S"),
     };
-    let t = load(&real("rlc_step_underdamped.csv"), &o).unwrap();
+    let t = load(&record("rlc_step_underdamped_synthetic.csv"), &o).unwrap();
     assert_eq!(t.time.len(), 200);
     assert_eq!(t.output[0], 2.762514e-2);
 }
@@ -632,7 +630,7 @@ fn adc_counts_without_header_or_time() {
         sampling_period: Some(0.008),
         ..auto()
     };
-    let t = load(&real("rc2_square_wave_adc.csv"), &o).unwrap();
+    let t = load(&record("rc2_square_wave_adc_synthetic.csv"), &o).unwrap();
     assert_eq!(t.time.len(), 641);
     assert_eq!(t.input_name.as_deref(), Some("column 1"));
     assert_eq!(t.output_name, "column 2");
@@ -726,7 +724,7 @@ proptest! {
 
     #[test]
     fn mutated_real_rows_never_panic(cut in 0usize..2000, junk in "[,;\t \n\"#a-z0-9.]{0,6}") {
-        let text = std::fs::read_to_string(real("tclab_step_q1_50.csv")).unwrap();
+        let text = std::fs::read_to_string(record("tclab_step_q1_50_synthetic.csv")).unwrap();
         let mut at = cut.min(text.len());
         while !text.is_char_boundary(at) {
             at -= 1;

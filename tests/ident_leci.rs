@@ -6,11 +6,9 @@ use degrau::ident::guess::auto_guess;
 use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
 
 fn leci() -> FitData {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../shared/data/seed/leci_step.csv"
-    ))
-    .expect("the LECI data of the notes");
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv"))
+            .expect("the LECI data of the notes");
     let (times, y): (Vec<f64>, Vec<f64>) = text
         .lines()
         .skip(1)

@@ -422,20 +422,11 @@ impl StepArgs {
     }
 }
 
-/// The value of every numeric flag: a finite number. clap names the flag in the error
-/// (`invalid value 'NaN' for '--t0 <T0>': NaN is not a finite number`).
+/// The value of every numeric flag: a finite number, read as the app reads its fields
+/// ([`crate::lti::parse::parse_real`]). clap names the flag in the error
+/// (`invalid value 'NaN' for '--t0 <T0>': "NaN" is not a finite number`).
 pub fn finite_f64(text: &str) -> Result<f64, String> {
-    let value: f64 = text
-        .trim()
-        .parse()
-        .map_err(|_| format!("\"{text}\" is not a number"))?;
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(format!(
-            "{text} is not a finite number (NaN, infinities and numbers beyond ±1.8e308 are refused)"
-        ))
-    }
+    crate::lti::parse::parse_real(text).map_err(|e| e.to_string())
 }
 
 /// Parses an option's list, naming the option in the error.

@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""Writes the synthetic stand-ins in this folder (see SOURCES.md): records of the same format
+and character as real lab records whose licence does not allow shipping them.
+
+    python3 tests/data/records/make_synthetic.py
+
+Deterministic (fixed seeds); the files are committed, so the tests need no Python.
+"""
+import math
+import os
+import random
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def p2_step(t, k, tau1, tau2):
+    """Unit-step response of k/((tau1 s + 1)(tau2 s + 1)) at t >= 0."""
+    if t <= 0:
+        return 0.0
+    return k * (1 - (tau1 * math.exp(-t / tau1) - tau2 * math.exp(-t / tau2)) / (tau1 - tau2))
+
+
+def quantise(x, base, q):
+    return base + q * round((x - base) / q)
+
+
+def ar1(rng, n, sigma, phi):
+    e, out = 0.0, []
+    for _ in range(n):
+        e = phi * e + math.sqrt(1 - phi * phi) * rng.gauss(0, sigma)
+        out.append(e)
+    return out
+
+
+def tclab_step():
+    """TCLab heater 1, 0 -> 50 % at t = 0 (t = 0 logged twice), 1 s, 0.32 °C resolution:
+    the source's own least-squares model 0.69537/((19.689 s + 1)(141.41 s + 1)) from 20.911 °C,
+    with coloured noise."""
+    rng = random.Random(50)
+    noise = ar1(rng, 800, 0.08, 0.6)
+    rows = ["Time,T1,T2,Q1", "0.0,20.9,21.54,0.0"]
+    for k in range(800):
+        t = float(k)
+        t1 = 20.9 if k == 0 else quantise(
+            20.911 + 50 * p2_step(t, 0.69537, 19.689, 141.41) + noise[k], 20.9, 0.322)
+        t2 = quantise(21.54 + 10.0 * (1 - math.exp(-t / 400.0)), 21.54, 0.322)
+        rows.append(f"{t},{t1:.2f},{t2:.2f},50.0")
+    return "\n".join(rows)
+
+
+def tclab_dropouts():
+    """TCLab, heater on at 50 % from the first row (no pre-step row), ~1 s with jitter,
+    0.032 °C resolution, and 46 downward dropouts between 30 and 784 s (down to -14.6 °C)."""
+    rng = random.Random(46)
+    noise = ar1(rng, 801, 0.05, 0.5)
+    drops = set(rng.sample(range(30, 785), 45)) | {640}
+    rows = ["Time,T1,T2,Q1,Q2"]
+    t = 0.0
+    for k in range(801):
+        t1 = 21.543 + 50 * p2_step(t, 0.76, 18.0, 150.0) + noise[k]
+        if k in drops:
+            t1 -= 14.6 if k == 640 else rng.uniform(1.2, 9.0)
+        t1 = quantise(t1, 21.543, 0.0322)
+        t2 = quantise(20.898 + 4.0 * (1 - math.exp(-t / 500.0)), 20.898, 0.0322)
+        rows.append(f"{round(t, 2)},{t1:.3f},{t2:.3f},50.0,0.0")
+        t += rng.choice([0.99, 1.0, 1.01])
+    return "\n".join(rows) + "\n"
+
+
+def pendulum():
+    """A propeller pendulum driven by an amplitude-modulated PRBS (13 changes), Ts = 0.01 s,
+    no time column: a lightly damped second order with a small square-law nonlinearity."""
+    rng = random.Random(13)
+    levels = [0.77618] + [round(rng.uniform(0.3, 1.6), 5) for _ in range(13)]
+    change_at = sorted(rng.sample(range(200, 4900), 13))
+    wn, zeta, h = 6.0, 0.12, 0.01
+    x, v, seg = 0.0, 0.0, 0
+    rows = ["y, u"]
+    for k in range(5001):
+        while seg < 13 and k >= change_at[seg]:
+            seg += 1
+        u = levels[seg]
+        rows.append(f"{max(x, 0.0):.5f}, {u:.5f}")
+        for _ in range(10):  # semi-implicit Euler, 1 ms steps
+            a = wn * wn * (0.9 * u + 0.1 * u * u) - 2 * zeta * wn * v - wn * wn * x
+            v += a * h / 10
+            x += v * h / 10
+    return "\n".join(rows) + "\n"
+
+
+def sci(x):
+    """Oscilloscope-style 4.262618E+0."""
+    if x == 0:
+        return "0.000000E+0"
+    e = math.floor(math.log10(abs(x)))
+    m = x / 10 ** e
+    if round(abs(m), 6) >= 10:
+        m, e = m / 10, e + 1
+    return f"{m:.6f}E{'+' if e >= 0 else '-'}{abs(e)}"
+
+
+def rlc():
+    """An oscilloscope capture of a series RLC driven by a 5 V step: four metadata lines,
+    wall-clock time stamps, 200 samples 3.3 us apart; V_C underdamped (zeta 0.25)."""
+    rng = random.Random(7)
+    lines = [
+        "waveform,V_S,V_C,V_R",
+        "t0,5/7/2021  09:33:31.638054,5/7/2021  09:33:31.638055,5/7/2021  09:33:31.638057",
+        "delta t,3.300000E-6,3.300000E-6,3.300000E-6",
+        "",
+        "time,V_S,V_C,V_R",
+    ]
+    wn, zeta = 2 * math.pi * 8000.0, 0.25
+    wd = wn * math.sqrt(1 - zeta * zeta)
+    start_us = 638054.0
+    for k in range(200):
+        t = (k + 0.3) * 3.3e-6
+        vs = 5.0 - 0.75 * math.exp(-t / 4e-6) + rng.gauss(0, 0.004)
+        vc = 5.0 * (1 - math.exp(-zeta * wn * t) * (math.cos(wd * t)
+                    + zeta / math.sqrt(1 - zeta * zeta) * math.sin(wd * t)))
+        vc = 2.762514e-2 if k == 0 else vc + rng.gauss(0, 0.004)
+        vr = vs - vc + rng.gauss(0, 0.004)
+        stamp = f"5/7/2021  09:33:31.{int(start_us + k * 3.3):06d}"
+        lines.append(f"{stamp},{sci(vs)},{sci(vc)},{sci(vr)}")
+    return "\r\n".join(lines) + "\r\n"
+
+
+def rc_ladder():
+    """A two-stage RC ladder (R C = 0.05 s per stage) driven by a DAC square wave 1241 <-> 2482
+    counts every 100 samples from sample 45, read by a 12-bit ADC every 8 ms; no header."""
+    rng = random.Random(2)
+    h, rc = 0.008, 0.05
+    v1 = v2 = 1241.0
+    rows = []
+    for k in range(641):
+        u = 1241 if k < 45 else (2482 if ((k - 45) // 100) % 2 == 0 else 1241)
+        rows.append(f"{u},{int(round(v2 + rng.gauss(0, 9)))}")
+        for _ in range(20):
+            dt = h / 20
+            i1, i2 = (u - v1) / rc, (v1 - v2) / rc
+            v1 += dt * (i1 - i2)
+            v2 += dt * i2
+    return "\n".join(rows) + "\n"
+
+
+FILES = {
+    "tclab_step_q1_50_synthetic.csv": tclab_step,
+    "tclab_step_q1_50_dropouts_synthetic.csv": tclab_dropouts,
+    "pendulum_aprbs_synthetic.txt": pendulum,
+    "rlc_step_underdamped_synthetic.csv": rlc,
+    "rc2_square_wave_adc_synthetic.csv": rc_ladder,
+}
+
+if __name__ == "__main__":
+    for name, make in FILES.items():
+        with open(os.path.join(HERE, name), "w", newline="") as f:
+            f.write(make())
