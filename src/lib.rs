@@ -4,9 +4,11 @@
 //! - [`ident`]: measured step tests, process models and their fitting (no GUI).
 //! - [`app`]: the egui desktop app, which only calls the library.
 //! - [`cli`]: the headless command line of the `degrau` binary.
+//! - [`text`]: the words of every fact and label, in English and Portuguese.
 
 pub mod app;
 pub mod cli;
 pub mod format;
 pub mod ident;
 pub mod lti;
+pub mod text;

@@ -13,11 +13,13 @@
 
 pub mod analysis;
 pub mod export;
+pub mod field;
 pub mod grid;
 pub mod ident_plot;
 pub mod identify;
 pub mod job;
 pub mod landscape_view;
+pub mod look;
 pub mod metrics_table;
 pub mod persist;
 pub mod presets;
