@@ -15,6 +15,8 @@
 
 use serde::{Deserialize, Serialize};
 
+pub mod step;
+
 /// A language the app and the CLI speak.
 #[derive(
     Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize, clap::ValueEnum,
@@ -160,6 +162,7 @@ pub fn every_message() -> Vec<Message> {
     let mut all = Vec::new();
     all.extend(crate::app::field::FieldPhrase::messages());
     all.extend(crate::app::field::examples());
+    all.extend(step::messages());
     all
 }
 
