@@ -15,6 +15,7 @@
 
 use serde::{Deserialize, Serialize};
 
+pub mod code;
 pub mod step;
 
 /// A language the app and the CLI speak.
