@@ -9,8 +9,9 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use degrau::ident::data::{
-    ColumnChoice, DataError, LoadOptions, MAX_FILE_BYTES, StepTest, load_file, load_str,
+    ColumnChoice, DataError, FileKind, LoadOptions, MAX_FILE_BYTES, StepTest, load_file, load_str,
 };
+use degrau::text::{Lang, Localize};
 
 /// A fresh path in the test's temporary directory (inside `target/`).
 fn temp_path(name: &str) -> PathBuf {
@@ -36,7 +37,7 @@ fn a_directory_is_refused() {
         matches!(
             &e,
             DataError::NotAFile {
-                kind: "a directory",
+                kind: FileKind::Directory,
                 ..
             }
         ),
@@ -54,7 +55,7 @@ fn devices_are_refused_before_reading() {
             e,
             DataError::NotAFile {
                 path: device.to_string(),
-                kind: "a device"
+                kind: FileKind::Device
             }
         );
     }
@@ -73,7 +74,7 @@ fn a_fifo_is_refused_without_waiting_for_a_writer() {
         matches!(
             &e,
             DataError::NotAFile {
-                kind: "a named pipe (FIFO)",
+                kind: FileKind::NamedPipe,
                 ..
             }
         ),
@@ -135,7 +136,7 @@ fn a_hundred_thousand_columns_load() {
     assert!(
         t.notes
             .iter()
-            .any(|n| n.contains("not guessed among the 99998")),
+            .any(|n| n.text(Lang::En).contains("not guessed among the 99998")),
         "{:?}",
         t.notes
     );

@@ -10,6 +10,7 @@ use degrau::ident::data::{
 };
 use degrau::ident::prepare::{detect_step, final_level, measured_step_info, operating_point};
 use degrau::lti::StepInfoOptions;
+use degrau::text::{Lang, Localize};
 use proptest::prelude::*;
 
 fn corpus(name: &str) -> String {
@@ -45,7 +46,7 @@ fn error_of(file: &str, options: &LoadOptions, words: &[&str]) -> DataError {
 fn has_note(test: &StepTest, words: &[&str]) -> bool {
     test.notes
         .iter()
-        .any(|n| words.iter().all(|w| n.contains(w)))
+        .any(|n| words.iter().all(|w| n.text(Lang::En).contains(w)))
 }
 
 // ----------------------------------------------------------------------------------------

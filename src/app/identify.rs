@@ -15,6 +15,7 @@ use crate::ident::diagnose::{self, DiagnoseOptions, DiagnoseReport, Step};
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::{FitData, FitError, FitOptions, FitReport, Method, Progress, fit};
 use crate::ident::models::{Model, Param, Structure, Values, pair_poles};
+use crate::text::{Lang, Localize};
 
 /// The LECI step test of the course notes (`t, y`), shipped with the app.
 const LECI_EXAMPLE: &str = include_str!("../../assets/leci_step.csv");
@@ -261,7 +262,7 @@ impl IdentView {
             }
         };
         let mut notes = vec![format!("Loaded {} samples from {source}.", test.time.len())];
-        notes.extend(test.notes.iter().cloned());
+        notes.extend(test.notes.iter().map(|n| n.text(Lang::En)));
         notes.extend(step_note);
         self.message = Some((false, notes.join(" ")));
         let structure = Structure::parse(&self.settings.code)
@@ -396,7 +397,7 @@ impl IdentView {
         self.diagnose_job = None;
         match result {
             DiagnoseOutcome::Loop(d) => {
-                self.diagnose_note = d.verdict.clone();
+                self.diagnose_note = d.verdict.map(|v| v.text(Lang::En)).unwrap_or_default();
                 self.selected_step = Some(d.steps.len());
                 self.adopt(&d.final_fit);
                 self.diagnosis = Some(*d);
@@ -408,14 +409,14 @@ impl IdentView {
                     steps: Vec::new(),
                     final_fit: step.fit.clone(),
                     adequate: false,
-                    verdict: String::new(),
+                    verdict: None,
                     static_gain: (0.0, None),
                 });
                 d.final_fit = step.fit.clone();
                 d.static_gain = (step.fit.model.get(Param::Kp), step.fit.interval(Param::Kp));
                 d.steps.push(*step.clone());
                 self.selected_step = Some(d.steps.len());
-                self.diagnose_note = format!("{}: {}", step.cause.id(), step.cause.explanation());
+                self.diagnose_note = format!("{}: {}", step.cause.id(), step.cause.text(Lang::En));
                 self.adopt(&step.fit);
             }
             DiagnoseOutcome::Step(None) => {
@@ -441,7 +442,7 @@ impl IdentView {
         }
         self.status = format!(
             "from the diagnosis: {} · {} iterations",
-            fit.termination.describe(),
+            fit.termination.text(Lang::En),
             fit.iterations
         );
         self.report = Some(fit.clone());
@@ -504,7 +505,7 @@ impl IdentView {
             Some(Ok(report)) => {
                 self.status = format!(
                     "{} · {} start(s), {} iterations",
-                    report.termination.describe(),
+                    report.termination.text(Lang::En),
                     report.starts,
                     report.iterations
                 );
@@ -745,7 +746,7 @@ impl IdentView {
         });
         if let (Some(fc), Ok(d)) = (l.experiment.filter_hz, &l.data) {
             let filter = crate::ident::prepare::Ewma::new(fc, d.sampling_period());
-            ui.weak(filter.describe());
+            ui.weak(filter.text(Lang::En));
         }
         if let Err(e) = &l.data {
             ui.colored_label(ui.visuals().error_fg_color, e);
@@ -793,7 +794,7 @@ impl IdentView {
             for p in l.structure.params() {
                 let label = ui
                     .label(format!("{} guess", p.name()))
-                    .on_hover_text(p.describe());
+                    .on_hover_text(crate::text::ident::param_meaning(p, Lang::En));
                 let mut v = l.guess.get(p);
                 let speed = 0.01 * v.abs().max(0.01);
                 if ui
@@ -869,7 +870,8 @@ impl IdentView {
                     } else {
                         format!(" {}", e.param.unit())
                     };
-                    ui.label(e.param.name()).on_hover_text(e.param.describe());
+                    ui.label(e.param.name())
+                        .on_hover_text(crate::text::ident::param_meaning(e.param, Lang::En));
                     ui.label(format!("{}{unit}", sig(e.value, 5)));
                     ui.label(match e.ci95 {
                         Some((lo, hi)) => format!("[{}, {}]", sig(lo, 4), sig(hi, 4)),
@@ -891,7 +893,7 @@ impl IdentView {
         ));
         for w in &report.warnings {
             ui.label(
-                RichText::new(format!("Warning: {}", w.message()))
+                RichText::new(format!("Warning: {}", w.text(Lang::En)))
                     .color(Color32::from_rgb(210, 120, 0)),
             );
         }
@@ -967,11 +969,15 @@ impl IdentView {
             .and_then(|k| k.checked_sub(1))
             .and_then(|k| d.steps.get(k))
         {
-            ui.strong(format!("{}: {}", step.cause.id(), step.cause.explanation()));
-            ui.label(&step.evidence);
+            ui.strong(format!(
+                "{}: {}",
+                step.cause.id(),
+                step.cause.text(Lang::En)
+            ));
+            ui.label(step.evidence.text(Lang::En));
             ui.label(format!(
                 "Remedy: {}. RMSE {} → {} ({}× lower); fit {} % → {} %.",
-                step.cause.remedy(),
+                crate::text::ident::remedy(step.cause, Lang::En),
                 sig(step.gain.rmse_before, 4),
                 sig(step.gain.rmse_after, 4),
                 sig(step.gain.rmse_ratio, 3),
@@ -979,8 +985,8 @@ impl IdentView {
                 sig(step.gain.fit_percent_after, 4)
             ));
         }
-        if !d.verdict.is_empty() {
-            ui.weak(&d.verdict);
+        if let Some(v) = &d.verdict {
+            ui.weak(v.text(Lang::En));
         }
     }
 }

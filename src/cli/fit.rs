@@ -13,6 +13,7 @@ use crate::ident::data::{self, LoadOptions, StepTest};
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
 use crate::ident::models::{Param, Structure};
+use crate::text::Lang;
 
 use super::{CliError, finite_f64};
 
@@ -148,32 +149,39 @@ impl DataArgs {
             self.ts,
             self.skip_rows,
         );
-        let test = data::load_file(&self.file, &options)
-            .map_err(|e| CliError::Options(format!("{}: {e}", self.file.display())))?;
-        let mut experiment = Experiment::new(&test, self.t0, self.du, self.initial_input)
-            .map_err(|e| CliError::Options(e.to_string()))?;
+        let test = data::load_file(&self.file, &options).map_err(|error| CliError::Data {
+            path: self.file.display().to_string(),
+            error,
+        })?;
+        let mut experiment = Experiment::new(&test, self.t0, self.du, self.initial_input)?;
         experiment.offset = parse_offset(&self.y0)?;
         experiment.window = self.window.as_deref().map(parse_window).transpose()?;
         experiment.filter_hz = self.filter;
-        let fit_data = experiment
-            .fit_data(&test)
-            .map_err(|e| CliError::Options(e.to_string()))?;
+        let fit_data = experiment.fit_data(&test)?;
         Ok((test, experiment, fit_data))
     }
 }
 
+/// A `--starts` value that is refused.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
+pub enum StartsError {
+    /// Not a whole number.
+    NotAWholeNumber(String),
+    /// Outside 1 to [`MAX_STARTS`].
+    OutOfRange(usize),
+}
+
 /// `--starts`: 1 to [`MAX_STARTS`].
-fn starts_count(text: &str) -> Result<usize, String> {
+fn starts_count(text: &str) -> Result<usize, StartsError> {
     let n: usize = text
         .trim()
         .parse()
-        .map_err(|_| format!("\"{text}\" is not a whole number of starts"))?;
+        .map_err(|_| StartsError::NotAWholeNumber(text.to_string()))?;
     if (1..=MAX_STARTS).contains(&n) {
         Ok(n)
     } else {
-        Err(format!(
-            "{n} starts: give 1 (the guess only) to {MAX_STARTS}; each start is a whole fit"
-        ))
+        Err(StartsError::OutOfRange(n))
     }
 }
 
@@ -187,20 +195,12 @@ fn parse_offset(text: &str) -> Result<Offset, CliError> {
             .ok()
             .filter(|v| v.is_finite())
             .map(Offset::Fixed)
-            .ok_or_else(|| {
-                CliError::Options(format!(
-                    "--y0 must be auto, free or a number, not \"{text}\""
-                ))
-            }),
+            .ok_or_else(|| CliError::BadY0(text.to_string())),
     }
 }
 
 fn parse_window(text: &str) -> Result<(f64, f64), CliError> {
-    let bad = || {
-        CliError::Options(format!(
-            "--window must be two times like 3.5,29.5, not \"{text}\""
-        ))
-    };
+    let bad = || CliError::BadWindow(text.to_string());
     let (a, b) = text.split_once(',').ok_or_else(bad)?;
     let (a, b) = (
         finite_f64(a).map_err(|_| bad())?,
@@ -216,28 +216,21 @@ fn parse_window(text: &str) -> Result<(f64, f64), CliError> {
 pub fn parse_guess(text: &str) -> Result<Vec<(Param, f64)>, CliError> {
     let mut guesses: Vec<(Param, f64)> = Vec::new();
     for item in text.split(',').filter(|s| !s.trim().is_empty()) {
-        let bad = || {
-            CliError::Options(format!(
-                "--guess item \"{item}\" must look like Kp=1.2 (names: Kp, Tp1, Tp2, Tp3, Tw, Zeta, Td, Tz, Y0, Drift; finite values)"
-            ))
-        };
+        let bad = || CliError::BadGuessItem(item.to_string());
         let (name, value) = item.split_once('=').ok_or_else(bad)?;
         let p = Param::parse(name).ok_or_else(bad)?;
         let v = finite_f64(value).map_err(|_| bad())?;
         if let Some(&(_, first)) = guesses.iter().find(|g| g.0 == p) {
-            return Err(CliError::Options(format!(
-                "--guess gives {} twice ({} and {}): give each parameter once",
-                p.name(),
-                fmt(first),
-                fmt(v)
-            )));
+            return Err(CliError::GuessTwice {
+                param: p.name(),
+                first,
+                second: v,
+            });
         }
         guesses.push((p, v));
     }
     if guesses.is_empty() {
-        return Err(CliError::Options(
-            "--guess is empty: give guesses like Kp=1.2,Td=2, or leave the flag out".into(),
-        ));
+        return Err(CliError::GuessEmpty);
     }
     Ok(guesses)
 }
@@ -254,43 +247,23 @@ fn check_guesses(
         if params.contains(&p) {
             continue;
         }
-        let message = match (p, held_y0) {
-            (Param::Y0, Some(y0)) if parse_offset(y0_flag).is_ok_and(|o| o != Offset::Auto) => {
-                format!(
-                    "--guess Y0={} conflicts with --y0 {}: Y0 is held at {}, not estimated; \
-                     give --y0 free to estimate it from {}, or leave Y0 out of --guess",
-                    fmt(v),
-                    y0_flag.trim(),
-                    fmt(y0),
-                    fmt(v)
-                )
+        return Err(match (p, held_y0) {
+            (Param::Y0, Some(held)) if parse_offset(y0_flag).is_ok_and(|o| o != Offset::Auto) => {
+                CliError::GuessY0Fixed {
+                    value: v,
+                    flag: y0_flag.trim().to_string(),
+                    held,
+                }
             }
-            (Param::Y0, Some(y0)) => format!(
-                "--guess Y0={}: Y0 is held at {} (the mean before the step, --y0 auto), not \
-                 estimated; give --y0 free to estimate it from {}, or --y0 {} to hold it there",
-                fmt(v),
-                fmt(y0),
-                fmt(v),
-                fmt(v)
-            ),
-            (Param::Drift, _) => format!(
-                "--guess Drift={}: the model has no drift term; add --drift",
-                fmt(v)
-            ),
-            _ => format!(
-                "--guess {}={}: the model {} has no {} (its parameters: {})",
-                p.name(),
-                fmt(v),
-                structure.code(),
-                p.name(),
-                params
-                    .iter()
-                    .map(|p| p.name())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-        };
-        return Err(CliError::Options(message));
+            (Param::Y0, Some(held)) => CliError::GuessY0Auto { value: v, held },
+            (Param::Drift, _) => CliError::GuessDrift(v),
+            _ => CliError::GuessNotInModel {
+                param: p.name(),
+                value: v,
+                code: structure.code(),
+                params: params.iter().map(|p| p.name()).collect(),
+            },
+        });
     }
     Ok(())
 }
@@ -342,7 +315,11 @@ impl FitJson {
                 .ok()
                 .and_then(|v| v.as_str().map(String::from))
                 .unwrap_or_default(),
-            warnings: report.warnings.iter().map(|w| w.message()).collect(),
+            warnings: report
+                .warnings
+                .iter()
+                .map(|w| crate::text::Localize::text(w, Lang::En))
+                .collect(),
         }
     }
 }
@@ -361,7 +338,7 @@ impl FitArgs {
 }
 
 /// `degrau fit`.
-pub fn run_fit(args: &FitArgs) -> Result<(), CliError> {
+pub fn run_fit(args: &FitArgs, lang: Lang) -> Result<(), CliError> {
     let overrides = args
         .guess
         .as_deref()
@@ -371,74 +348,36 @@ pub fn run_fit(args: &FitArgs) -> Result<(), CliError> {
     let (test, experiment, data) = args.data.prepare()?;
     // The fit needs only the prepared samples: the record itself goes now.
     drop(test);
-    let structure = experiment
-        .structure(&args.model, args.drift, &data)
-        .map_err(|e| CliError::Options(e.to_string()))?;
+    let structure = experiment.structure(&args.model, args.drift, &data)?;
     check_guesses(
         &overrides,
         &structure,
         experiment.operating_point(&data),
         &args.data.y0,
     )?;
-    let report = experiment
-        .fit_prepared(
-            &data,
-            &args.model,
-            args.drift,
-            &overrides,
-            &args.options(),
-            &mut (),
-        )
-        .map_err(|e| CliError::Options(e.to_string()))?;
+    let report = experiment.fit_prepared(
+        &data,
+        &args.model,
+        args.drift,
+        &overrides,
+        &args.options(),
+        &mut (),
+    )?;
     let mut out = io::stdout().lock();
     let written = if args.json {
         serde_json::to_writer(&mut out, &FitJson::new(&report))
             .map_err(io::Error::other)
             .and_then(|()| writeln!(out))
     } else {
-        writeln!(out, "{}", human_fit(&report))
+        writeln!(
+            out,
+            "{}",
+            crate::text::report::fit_lines(&report, lang).join("\n")
+        )
     };
     written
         .and_then(|()| out.flush())
         .map_err(CliError::WriteOutput)
-}
-
-/// The fit as text for people.
-pub fn human_fit(r: &FitReport) -> String {
-    let mut lines = vec![format!(
-        "Model {} fitted to {} samples ({}, {})",
-        r.model.structure.code(),
-        r.n,
-        r.method.name(),
-        r.termination.describe()
-    )];
-    for e in &r.params {
-        let ci = e.ci95.map_or("no interval".to_string(), |(a, b)| {
-            format!("95 % [{}, {}]", fmt(a), fmt(b))
-        });
-        lines.push(format!(
-            "  {:<6} {:>14}  {}  {}",
-            e.param.name(),
-            fmt(e.value),
-            ci,
-            e.param.unit()
-        ));
-    }
-    lines.push(format!(
-        "MSE {}  RMSE {}  fit {} %  AIC {}",
-        fmt(r.mse),
-        fmt(r.rmse),
-        fmt(r.fit_percent),
-        fmt(r.aic)
-    ));
-    for w in &r.warnings {
-        lines.push(format!("warning: {}", w.message()));
-    }
-    lines.join("\n")
-}
-
-fn fmt(x: f64) -> String {
-    crate::format::sig(x, 6)
 }
 
 #[cfg(test)]

@@ -19,6 +19,9 @@ use clap::{Args, Parser, Subcommand};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+use crate::ident::data::DataError;
+use crate::ident::experiment::ExperimentError;
+use crate::ident::fit::FitError;
 use crate::lti::expr::{OscillationForm, expression, format_number};
 use crate::lti::parse::{ParseError, parse_complex_list, parse_real_list};
 use crate::lti::poly::format_poly;
@@ -26,6 +29,9 @@ use crate::lti::tf::Stability;
 use crate::lti::{
     Behaviour, C64, LtiError, StepInfo, StepInfoOptions, StepResponse, TransferFunction, fmt_c,
 };
+use crate::text::cli::{Heading, StepPhrase};
+use crate::text::step::Metric;
+use crate::text::{Lang, Localize};
 
 /// The most samples one system may ask for (8 MB each for t and y).
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -41,6 +47,10 @@ const EXIT_NO_WINDOW: u8 = 1;
 #[derive(Debug, Parser)]
 #[command(name = "degrau", version)]
 pub struct Cli {
+    /// Language of the text output and of the messages: en (English) or pt (Português);
+    /// --json output is the same in every language.
+    #[arg(long, global = true, value_enum, default_value_t = Lang::En)]
+    pub lang: Lang,
     #[command(subcommand)]
     pub command: Option<Command>,
 }
@@ -126,53 +136,77 @@ pub struct StepArgs {
     pub batch: bool,
 }
 
-/// What can go wrong in `degrau step`, in words a student can act on.
+/// What can go wrong on the command line, as facts (`crate::text::cli` says them in the
+/// language of `--lang`; `Display` and the JSON `error` of `--batch` are English).
 #[derive(Debug, thiserror::Error)]
+#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
 pub enum CliError {
-    #[error("{option}: {source}")]
+    /// A list flag (`--poles`, …) that does not parse.
     Parse {
         option: &'static str,
         source: ParseError,
     },
-    #[error(transparent)]
     Lti(#[from] LtiError),
-    #[error("{0}")]
+    /// The step metrics' thresholds, refused in `crate::lti`'s words.
     Options(String),
-    #[error("the rise limits are two fractions like 0.1,0.9, not {0} numbers")]
     RiseLimitsCount(usize),
-    #[error("{0} is empty: give the coefficients in descending powers of s, e.g. 1,7,15,25")]
     EmptyCoefficients(&'static str),
-    #[error("no system given: give the poles (and zeros, gain) or the num and den coefficients")]
     NoSystem,
-    #[error("the system is given twice: give the poles and zeros, or num and den, not both")]
     TwoDescriptions,
-    #[error("zeros were given without poles: give the poles too")]
     ZerosWithoutPoles,
-    #[error("num was given without den: give both coefficient lists")]
     NumWithoutDen,
-    #[error("den was given without num: give both coefficient lists")]
     DenWithoutNum,
-    #[error(
-        "gain is the k of the zero-pole-gain form and goes with poles; with num and den the \
-         gain is in the coefficients (use dc_gain to set the static gain)"
-    )]
     GainWithCoefficients,
-    #[error("give gain (the k of the zero-pole-gain form) or dc_gain (the static gain), not both")]
     GainAndDcGain,
-    #[error("samples must be between 2 and {MAX_SAMPLES}, not {0}")]
     Samples(usize),
-    #[error("the line is not valid JSON: {0}")]
+    /// serde_json's own words.
     JsonSyntax(String),
-    #[error(r#"the line is not a JSON object like {{"num": [1], "den": [1, 1]}}"#)]
     NotAnObject,
-    #[error("the line does not describe a system: {0}")]
+    /// serde_json's own words.
     JsonFields(String),
-    #[error("the line is not valid UTF-8 text")]
     NotUtf8,
-    #[error("could not read the standard input: {0}")]
     ReadInput(io::Error),
-    #[error("could not write the output: {0}")]
     WriteOutput(io::Error),
+    /// The data file could not be loaded.
+    Data {
+        path: String,
+        error: DataError,
+    },
+    /// The step, window, filter, model code or fit choices.
+    Experiment(#[from] ExperimentError),
+    /// The diagnosis could not fit its start model.
+    Diagnose(FitError),
+    /// `--y0` is not auto, free or a number.
+    BadY0(String),
+    /// `--window` is not two increasing times.
+    BadWindow(String),
+    /// A `--guess` item is not like `Kp=1.2` with a known name and a finite value.
+    BadGuessItem(String),
+    GuessTwice {
+        param: &'static str,
+        first: f64,
+        second: f64,
+    },
+    GuessEmpty,
+    /// `--guess Y0=value` while `--y0 flag` holds Y0 at `held`.
+    GuessY0Fixed {
+        value: f64,
+        flag: String,
+        held: f64,
+    },
+    /// `--guess Y0=value` while `--y0 auto` holds Y0 at the mean before the step, `held`.
+    GuessY0Auto {
+        value: f64,
+        held: f64,
+    },
+    /// `--guess Drift=value` without `--drift`.
+    GuessDrift(f64),
+    GuessNotInModel {
+        param: &'static str,
+        value: f64,
+        code: String,
+        params: Vec<&'static str>,
+    },
 }
 
 /// One system and its step, from flags or from a JSON line: the JSON keys are the flags'
@@ -424,9 +458,10 @@ impl StepArgs {
 
 /// The value of every numeric flag: a finite number, read as the app reads its fields
 /// ([`crate::lti::parse::parse_real`]). clap names the flag in the error
-/// (`invalid value 'NaN' for '--t0 <T0>': "NaN" is not a finite number`).
-pub fn finite_f64(text: &str) -> Result<f64, String> {
-    crate::lti::parse::parse_real(text).map_err(|e| e.to_string())
+/// (`invalid value 'NaN' for '--t0 <T0>': "NaN" is not a finite number`); [`main`] says it
+/// in the language of `--lang`.
+pub fn finite_f64(text: &str) -> Result<f64, ParseError> {
+    crate::lti::parse::parse_real(text)
 }
 
 /// Parses an option's list, naming the option in the error.
@@ -438,50 +473,80 @@ fn parse_list<T>(
     parse(text).map_err(|source| CliError::Parse { option, source })
 }
 
+/// The language asked for by `--lang` in `args`, read before clap parses them so that a
+/// refused flag is said in that language too (English when absent or unknown).
+fn lang_in(args: &[std::ffi::OsString]) -> Lang {
+    let mut lang = Lang::En;
+    let mut words = args.iter().map(|a| a.to_string_lossy());
+    while let Some(word) = words.next() {
+        let value = match word.strip_prefix("--lang") {
+            Some("") => words.next().map(|v| v.into_owned()),
+            Some(rest) => rest.strip_prefix('=').map(str::to_string),
+            None => None,
+        };
+        if let Some(v) = value.and_then(|v| <Lang as clap::ValueEnum>::from_str(&v, true).ok()) {
+            lang = v;
+        }
+    }
+    lang
+}
+
 /// Runs the command line: the binary's `main`.
 pub fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    let cli = match Cli::try_parse_from(&args) {
         Ok(cli) => cli,
-        Err(e) => {
-            // Help and version go to stdout with code 0, usage errors to stderr with code 2.
-            let _ = e.print();
-            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(EXIT_BAD_INPUT));
-        }
+        Err(e) => return refuse_arguments(&e, lang_in(&args)),
     };
+    let lang = cli.lang;
     match cli.command {
-        None => open_app(),
-        Some(Command::Step(args)) => finish(run_step(&args)),
-        Some(Command::Fit(args)) => finish(fit::run_fit(&args)),
-        Some(Command::Diagnose(args)) => finish(diagnose::run_diagnose(&args)),
-        Some(Command::Open(args)) => open_app_with(Some(args.settings())),
+        None => open_app(lang),
+        Some(Command::Step(args)) => finish(run_step(&args, lang), lang),
+        Some(Command::Fit(args)) => finish(fit::run_fit(&args, lang), lang),
+        Some(Command::Diagnose(args)) => finish(diagnose::run_diagnose(&args, lang), lang),
+        Some(Command::Open(args)) => open_app_with(Some(args.settings()), lang),
     }
 }
 
+/// clap's refusal: help and version go to stdout with code 0, usage errors to stderr with
+/// code 2. A refused flag value is said in `lang` (clap's own usage text stays English).
+fn refuse_arguments(e: &clap::Error, lang: Lang) -> ExitCode {
+    let code = ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(EXIT_BAD_INPUT));
+    match crate::text::cli::refused_value(e, lang) {
+        Some(words) => eprintln!("{}: {words}", StepPhrase::Error.get(lang)),
+        None => {
+            let _ = e.print();
+        }
+    }
+    code
+}
+
 /// The exit code of a headless command, its error printed in words.
-fn finish(result: Result<(), CliError>) -> ExitCode {
+fn finish(result: Result<(), CliError>, lang: Lang) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(CliError::WriteOutput(e)) if e.kind() == io::ErrorKind::BrokenPipe => {
             ExitCode::SUCCESS // the reader stopped reading: nothing left to do
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            eprintln!("{}: {}", StepPhrase::Error.get(lang), e.text(lang));
             ExitCode::from(EXIT_BAD_INPUT)
         }
     }
 }
 
-fn open_app() -> ExitCode {
-    open_app_with(None)
+fn open_app(lang: Lang) -> ExitCode {
+    open_app_with(None, lang)
 }
 
-fn open_app_with(test: Option<crate::app::identify::IdentSettings>) -> ExitCode {
+fn open_app_with(test: Option<crate::app::identify::IdentSettings>, lang: Lang) -> ExitCode {
     match crate::app::run_with(test) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!(
-                "error: could not open the Degrau window: {e}\n\
-                 Without a display, use the command line: degrau step --help"
+                "{}: {}",
+                StepPhrase::Error.get(lang),
+                crate::text::cli::no_window(&e.to_string(), lang)
             );
             ExitCode::from(EXIT_NO_WINDOW)
         }
@@ -489,7 +554,7 @@ fn open_app_with(test: Option<crate::app::identify::IdentSettings>) -> ExitCode 
 }
 
 /// `degrau step`: one system from the flags, or `--batch` from stdin.
-pub fn run_step(args: &StepArgs) -> Result<(), CliError> {
+pub fn run_step(args: &StepArgs, lang: Lang) -> Result<(), CliError> {
     let options = args.options()?;
     if args.batch {
         return run_batch(io::stdin().lock(), io::stdout().lock(), &options);
@@ -499,7 +564,7 @@ pub fn run_step(args: &StepArgs) -> Result<(), CliError> {
     let written = if args.json {
         write_json_line(&mut out, &Report::new(&analysis))
     } else {
-        writeln!(out, "{}", human_report(&analysis))
+        writeln!(out, "{}", human_report(&analysis, lang))
     };
     written
         .and_then(|()| out.flush())
@@ -553,7 +618,7 @@ fn batch_reply(bytes: &[u8], line: usize, options: &StepInfoOptions) -> Option<B
     let outcome = match outcome {
         Ok(analysis) => Outcome::Report(Box::new(Report::new(&analysis))),
         Err(e) => Outcome::Error {
-            error: e.to_string(),
+            error: e.text(Lang::En),
         },
     };
     Some(BatchReply { id, line, outcome })
@@ -572,55 +637,70 @@ fn read_request(text: &str) -> (Value, Result<SystemSpec, CliError>) {
     (id, spec)
 }
 
-/// The text report: the system, its poles and zeros, the metrics and y(t).
-pub fn human_report(a: &Analysis) -> String {
-    let mut lines = system_lines(a);
+/// The text report: the system, its poles and zeros, the metrics and y(t). Numbers in the
+/// prose take the language's decimal separator; the closed forms and the samples keep points.
+pub fn human_report(a: &Analysis, lang: Lang) -> String {
+    let mut lines = system_lines(a, lang);
     lines.push(String::new());
-    lines.extend(metric_lines(a));
+    lines.extend(metric_lines(a, lang));
     lines.push(String::new());
-    lines.push("Step response (exact closed form):".into());
+    lines.push(Heading::ClosedForm.get(lang).to_string());
     for form in [OscillationForm::CosSin, OscillationForm::AmplitudePhase] {
         lines.push(format!("  {}", expression(&a.response, form)));
     }
     if let Some(Samples { t, y }) = &a.samples {
         lines.push(String::new());
-        lines.push("Samples:\n  t (s)\ty".into());
+        lines.push(format!("{}\n  t (s)\ty", Heading::Samples.get(lang)));
         lines.extend(t.iter().zip(y).map(|(t, y)| format!("  {t}\t{y}")));
     }
     lines.join("\n")
 }
 
-fn system_lines(a: &Analysis) -> Vec<String> {
+/// A number of the report's prose: [`format_number`] with the language's separator.
+fn prose_number(x: f64, lang: Lang) -> String {
+    lang.localize_number(&format_number(x))
+}
+
+fn system_lines(a: &Analysis, lang: Lang) -> Vec<String> {
     let tf = &a.tf;
     let roots = |r: &[C64]| {
         if r.is_empty() {
-            "none".to_string()
+            StepPhrase::NoRoots.get(lang).to_string()
         } else {
-            r.iter().map(|&c| fmt_c(c)).collect::<Vec<_>>().join(", ")
+            r.iter()
+                .map(|&c| lang.localize_number(&fmt_c(c)))
+                .collect::<Vec<_>>()
+                .join(lang.pick(", ", "; "))
         }
     };
     let dc_gain = tf.dc_gain();
     let dc_text = if dc_gain.is_finite() {
-        format_number(dc_gain)
+        prose_number(dc_gain, lang)
     } else {
-        format!("{dc_gain} (a pole at s = 0: the system integrates)")
+        format!("{dc_gain} ({})", StepPhrase::Integrates.get(lang))
     };
-    vec![
-        format!("System       G(s) = {}", tf.describe()),
-        format!("             G(s) = {}", polynomial_form(tf)),
-        format!("Poles        {}", roots(tf.poles())),
-        format!("Zeros        {}", roots(tf.zeros())),
-        format!("DC gain      G(0) = {dc_text}"),
-        format!(
-            "Stability    {}; the step response {}",
-            stability_words(tf.stability()),
-            a.response.behaviour().describe()
+    let stability = crate::text::cli::stability_line(tf.stability(), a.response.behaviour(), lang);
+    let step = crate::text::cli::step_line(&prose_number(a.response.amplitude(), lang), lang);
+    let rows = [
+        (
+            StepPhrase::System.get(lang),
+            format!("G(s) = {}", tf.describe()),
         ),
-        format!(
-            "Step         amplitude {} at t = 0",
-            format_number(a.response.amplitude())
-        ),
-    ]
+        ("", format!("G(s) = {}", polynomial_form(tf))),
+        (StepPhrase::Poles.get(lang), roots(tf.poles())),
+        (crate::text::cli::ZEROS, roots(tf.zeros())),
+        (StepPhrase::DcGain.get(lang), format!("G(0) = {dc_text}")),
+        (StepPhrase::Stability.get(lang), stability),
+        (StepPhrase::Step.get(lang), step),
+    ];
+    let width = rows
+        .iter()
+        .map(|(label, _)| label.chars().count())
+        .max()
+        .unwrap_or(0);
+    rows.iter()
+        .map(|(label, text)| format!("{label:<width$}  {text}"))
+        .collect()
 }
 
 /// `0.5 / (s^3 + 7 s^2 + 15 s + 25)`, with the delay factor when there is one.
@@ -639,111 +719,28 @@ fn polynomial_form(tf: &TransferFunction) -> String {
     format!("{num} / ({}){delay}", format_poly(&tf.den()))
 }
 
-fn stability_words(s: Stability) -> &'static str {
-    match s {
-        Stability::Stable => "stable (every pole in the left half plane)",
-        Stability::MarginallyStable => {
-            "marginally stable (poles on the imaginary axis, none to its right)"
-        }
-        Stability::Unstable => "unstable (a pole in the right half plane)",
-    }
-}
-
-/// A step metric: its label, unit and where it is in [`StepInfo`].
-struct Metric {
-    label: &'static str,
-    unit: &'static str,
-    value: fn(&StepInfo) -> Option<f64>,
-}
-
-const METRICS: [Metric; 9] = [
-    Metric {
-        label: "rise time",
-        unit: " s",
-        value: |i| i.rise_time,
-    },
-    Metric {
-        label: "settling time",
-        unit: " s",
-        value: |i| i.settling_time,
-    },
-    Metric {
-        label: "overshoot",
-        unit: " %",
-        value: |i| i.overshoot,
-    },
-    Metric {
-        label: "undershoot",
-        unit: " %",
-        value: |i| i.undershoot,
-    },
-    Metric {
-        label: "peak",
-        unit: "",
-        value: |i| i.peak,
-    },
-    Metric {
-        label: "peak time",
-        unit: " s",
-        value: |i| i.peak_time,
-    },
-    Metric {
-        label: "steady state",
-        unit: "",
-        value: |i| i.steady_state,
-    },
-    Metric {
-        label: "settling min",
-        unit: "",
-        value: |i| i.settling_min,
-    },
-    Metric {
-        label: "settling max",
-        unit: "",
-        value: |i| i.settling_max,
-    },
-];
-
-fn metric_lines(a: &Analysis) -> Vec<String> {
+/// The metrics' heading with the thresholds in force, then one line per metric: its name
+/// and its cell ([`Metric::cell`]: the value, or why it does not exist).
+fn metric_lines(a: &Analysis, lang: Lang) -> Vec<String> {
     let (low, high) = a.options.rise_limits;
-    let mut lines = vec![format!(
-        "Step metrics (rise {}–{} %, settling band {} %):",
-        format_number(100.0 * low),
-        format_number(100.0 * high),
-        format_number(100.0 * a.options.settling_threshold)
+    let pct = |f: f64| prose_number(100.0 * f, lang);
+    let mut lines = vec![crate::text::cli::metrics_heading(
+        &pct(low),
+        &pct(high),
+        &pct(a.options.settling_threshold),
+        lang,
     )];
-    lines.extend(METRICS.iter().map(|m| {
-        let text = match (m.value)(&a.info) {
-            Some(v) => format!("{}{}", format_number(v), m.unit),
-            None => absent_reason(m.label, &a.info),
-        };
-        format!("  {:<14} {text}", m.label)
-    }));
+    let width = Metric::ALL
+        .iter()
+        .map(|m| m.name(lang).chars().count())
+        .max()
+        .unwrap_or(0);
+    lines.extend(
+        Metric::ALL
+            .iter()
+            .map(|m| format!("  {:<width$}  {}", m.name(lang), m.cell(&a.info, lang))),
+    );
     lines
-}
-
-/// Why a metric is `None`, in plain words.
-fn absent_reason(label: &str, info: &StepInfo) -> String {
-    if info.behaviour != Behaviour::Settles {
-        return format!(
-            "does not exist because the response {}",
-            info.behaviour.describe()
-        );
-    }
-    if info.steady_state == Some(info.initial_value) {
-        return "does not exist because the final value equals the initial value: \
-                there is no change to measure"
-            .into();
-    }
-    if label == "peak time" && info.peak.is_some() {
-        return "none: monotone response, the peak is the final value approached as t → ∞".into();
-    }
-    if info.rise_end.is_none() {
-        return "does not exist because the response reaches the upper rise limit \
-                only as t → ∞"
-            .into();
-    }
-    "does not exist for this response".into()
 }
 
 #[cfg(test)]
@@ -889,19 +886,50 @@ mod tests {
 
     #[test]
     fn absent_metrics_say_why() {
-        let report = |json: &str| {
+        let report = |json: &str, lang| {
             let spec: SystemSpec = serde_json::from_str(json).unwrap();
-            human_report(&spec.analyse(&StepInfoOptions::default()).unwrap())
+            human_report(&spec.analyse(&StepInfoOptions::default()).unwrap(), lang)
         };
-        let integrator = report(r#"{"num": [1], "den": [1, 1, 0]}"#);
+        let integrator = report(r#"{"num": [1], "den": [1, 1, 0]}"#, Lang::En);
         assert!(
-            integrator.contains("does not exist because the response does not settle: it ramps")
+            integrator.contains("Rise time      none: does not settle: it ramps"),
+            "{integrator}"
         );
-        let first_order = report(r#"{"num": [5], "den": [1, 5]}"#);
-        assert!(first_order.contains("peak time      none: monotone response"));
-        let derivative = report(r#"{"num": [1, 0], "den": [1, 1]}"#);
+        let first_order = report(r#"{"num": [5], "den": [1, 5]}"#, Lang::En);
         assert!(
-            derivative.contains("rise time      does not exist because the final value equals")
+            first_order.contains("Peak time      none: monotone"),
+            "{first_order}"
         );
+        let derivative = report(r#"{"num": [1, 0], "den": [1, 1]}"#, Lang::En);
+        assert!(derivative.contains("Rise time      none"), "{derivative}");
+    }
+
+    #[test]
+    fn the_report_speaks_portuguese_with_decimal_commas() {
+        let spec: SystemSpec = serde_json::from_str(r#"{"num": [5], "den": [1, 5]}"#).unwrap();
+        let a = spec.analyse(&StepInfoOptions::default()).unwrap();
+        let pt = human_report(&a, Lang::Pt);
+        // 5/(s+5): rise time ln 9 / 5 = 0.43944 s, settling time ln 50 / 5 = 0.78240 s.
+        assert!(pt.contains("Tempo de subida"), "{pt}");
+        assert!(pt.contains("0,43944 s"), "{pt}");
+        assert!(pt.contains("0,7824 s"), "{pt}");
+        assert!(
+            pt.contains("estável (todos os polos no semiplano esquerdo)"),
+            "{pt}"
+        );
+        // The closed form keeps its points.
+        assert!(pt.contains("y(t) = 1 − e^{−5t}"), "{pt}");
+    }
+
+    #[test]
+    fn the_language_is_read_before_the_flags_are_parsed() {
+        let args = |a: &[&str]| a.iter().map(std::ffi::OsString::from).collect::<Vec<_>>();
+        assert_eq!(
+            lang_in(&args(&["degrau", "step", "--lang", "pt"])),
+            Lang::Pt
+        );
+        assert_eq!(lang_in(&args(&["degrau", "--lang=pt", "fit"])), Lang::Pt);
+        assert_eq!(lang_in(&args(&["degrau", "step", "--lang"])), Lang::En);
+        assert_eq!(lang_in(&args(&["degrau", "step"])), Lang::En);
     }
 }

@@ -65,7 +65,6 @@
 
 use std::borrow::Cow;
 use std::convert::Infallible;
-use std::fmt;
 use std::fs::{FileType, Metadata};
 use std::io::Read;
 use std::path::Path;
@@ -194,8 +193,8 @@ pub struct StepTest {
     pub input_name: Option<String>,
     /// The sampling period the time was generated from, when the file had no time column.
     pub sampling_period: Option<f64>,
-    /// What the loader decided or skipped, in plain words.
-    pub notes: Vec<String>,
+    /// What the loader decided or skipped, as facts (`crate::text` says them).
+    pub notes: Vec<DataNote>,
 }
 
 /// Which column a message is about.
@@ -206,120 +205,226 @@ pub enum Role {
     Input,
 }
 
-impl fmt::Display for Role {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Role::Time => "time",
-            Role::Output => "output",
-            Role::Input => "input",
-        })
-    }
+/// A column named in a note or an error: its 1-based position and, when the file names its
+/// columns, its name (at most 60 characters, then "…").
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Column {
+    pub position: usize,
+    pub name: Option<String>,
+}
+
+/// Some columns listed in a message: the first few, and how many more there are.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct ColumnList {
+    pub shown: Vec<Column>,
+    pub more: usize,
+}
+
+/// The columns of a file, as a message offers them.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Columns {
+    /// No names (no header row): a column is chosen by position, 1 to `count`.
+    Unnamed { count: usize },
+    /// The named columns.
+    Named(ColumnList),
+}
+
+/// How the cells of a line were found to be separated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Separator {
+    Semicolon,
+    Tab,
+    Comma,
+    /// Spaces or tabs, as MATLAB's `load` reads.
+    Whitespace,
+}
+
+/// Where the column names came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HeaderFound {
+    /// A header row on this line.
+    Row { line: usize },
+    /// A comment line before the data.
+    Comment { line: usize },
+    /// A header row whose names do not split into the `columns` columns: not used, the
+    /// columns numbered.
+    Ignored { line: usize, columns: usize },
+    /// No names: the columns are numbered.
+    None,
+}
+
+/// What a path that is not a regular file is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileKind {
+    Directory,
+    NamedPipe,
+    Device,
+    Socket,
+    Special,
+}
+
+/// What was too large.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Source {
+    File,
+    Data,
+    Text,
+    Paste,
+}
+
+/// What the loader decided or skipped; lines are 1-based.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DataNote {
+    /// The file is UTF-16 text.
+    Utf16,
+    /// The file is not UTF-8: it was read as Latin-1.
+    Latin1,
+    /// How the table was read.
+    ReadAs {
+        separator: Separator,
+        decimal_comma: bool,
+        header: HeaderFound,
+    },
+    /// A sampling period was given, but the time is read from a column.
+    SamplingPeriodUnused { sampling_period: f64, time: Column },
+    /// The only column left was taken as the output.
+    OutputOnlyLeft { output: Column },
+    /// Three pasted columns were read as t, u, y.
+    PastedTuy,
+    /// The input was not guessed among so many unnamed columns (more than `limit`).
+    InputNotGuessed { columns: usize, limit: usize },
+    /// The one piecewise-constant column was taken as the input.
+    InputGuessed { input: Column },
+    /// Several columns look like an input; none was taken.
+    SeveralInputs { columns: ColumnList },
+    /// No time column: t = k·Ts.
+    GeneratedTime { sampling_period: f64 },
+    /// Rows whose output or input is missing were skipped (the first `lines` of `total`).
+    MissingValues { lines: Vec<usize>, total: usize },
+    /// Two rows share a time and the input changes between them: the first is the state
+    /// just before the step.
+    StepBetweenEqualTimes {
+        first: usize,
+        second: usize,
+        time: f64,
+        before: f64,
+        after: f64,
+    },
+    /// Two rows share a time; both were kept.
+    EqualTimes {
+        first: usize,
+        second: usize,
+        time: f64,
+    },
+    /// A window kept samples `first` to `last` (1-based) of `count`, from `start` to `end` (s).
+    Window {
+        first: usize,
+        last: usize,
+        count: usize,
+        start: f64,
+        end: f64,
+    },
+    /// Columns without a name (a pandas row index) were not used.
+    IndexIgnored { columns: ColumnList },
+    /// More pairs of rows share a time than were listed.
+    MoreEqualTimes { pairs: usize },
 }
 
 /// Why a file could not be loaded; lines are 1-based, as an editor shows them.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
 pub enum DataError {
-    #[error("could not read {path}: {reason}")]
-    Io { path: String, reason: String },
-    #[error(
-        "line {line} contains a zero byte: this is a binary file (a .mat or a spreadsheet?), \
-         not text; export it as CSV or text"
-    )]
-    Binary { line: usize },
-    #[error("the file is empty")]
+    /// The system's reason (its own words) for not reading `path`.
+    Io {
+        path: String,
+        reason: String,
+    },
+    /// A zero byte: a binary file, not text.
+    Binary {
+        line: usize,
+    },
     Empty,
-    #[error("the file has no data: its {lines} line(s) are blank, comments or skipped rows")]
-    NoData { lines: usize },
-    #[error(
-        "line {line}: the file ends after {found} sample(s) (rows with a time and an output); \
-         at least {needed} samples are needed"
-    )]
+    /// Every one of the `lines` lines is blank, a comment or skipped.
+    NoData {
+        lines: usize,
+    },
     TooFewSamples {
         line: usize,
         found: usize,
         needed: usize,
     },
-    /// `column` is `"name"`, or the position in a file without names.
-    #[error("line {line}, column {column}: \"{text}\" is not a number")]
+    /// `text` (shortened) in a chosen column is not a number.
     NotANumber {
         line: usize,
-        column: String,
+        column: Column,
         text: String,
     },
-    #[error(
-        "line {line}, column {column}: the time is missing (empty or NaN); every row needs a time"
-    )]
-    TimeMissing { line: usize, column: String },
-    #[error("line {line}: time {time} comes after {previous}; the time must not decrease{hint}")]
+    TimeMissing {
+        line: usize,
+        column: Column,
+    },
     TimeNotIncreasing {
         line: usize,
         time: f64,
         previous: f64,
-        /// Empty, or why this column was taken as the time.
-        hint: String,
+        /// Column 1 was taken as the time because the file has no header.
+        first_column_assumed: bool,
     },
-    #[error("line {line} has {found} value(s), but line {reference} has {expected}")]
     Ragged {
         line: usize,
         found: usize,
         expected: usize,
         reference: usize,
     },
-    #[error(
-        "line {line}: there is no column named \"{name}\" for the {role}; the columns are {available}"
-    )]
     UnknownColumn {
         line: usize,
         role: Role,
         name: String,
-        available: String,
+        available: Columns,
     },
-    #[error(
-        "line {line}: column {position} was chosen for the {role}, but the columns are {available}"
-    )]
     NoSuchPosition {
         line: usize,
         role: Role,
         position: usize,
-        available: String,
+        available: Columns,
     },
-    #[error(
-        "line {line}: no column is named like a time (t, time, tempo, …) and no sampling period \
-         was given; choose the time column or give the sampling period (the columns are {available})"
-    )]
-    NoTime { line: usize, available: String },
-    #[error("line {line}: the {first} and the {second} are the same column, {column}")]
+    /// No column is named like a time and no sampling period was given.
+    NoTime {
+        line: usize,
+        available: Columns,
+    },
     SameColumn {
         line: usize,
         first: Role,
         second: Role,
-        column: String,
+        column: Column,
     },
-    #[error(
-        "line {line}: several columns could be the output ({candidates}); choose one by name or position"
-    )]
-    AmbiguousOutput { line: usize, candidates: String },
-    #[error("line {line}: no column is left for the output (the columns are {available})")]
-    NoOutput { line: usize, available: String },
-    #[error("the sampling period must be a positive number of seconds, not {0}")]
+    AmbiguousOutput {
+        line: usize,
+        candidates: ColumnList,
+    },
+    NoOutput {
+        line: usize,
+        available: Columns,
+    },
     BadSamplingPeriod(f64),
-    #[error("line {line} has {found} column(s); a paste needs 2 (t, y) or 3 (t, u, y)")]
-    PasteColumns { line: usize, found: usize },
-    #[error(
-        "this is {kind}, not a regular file: give the file that holds the data (a pipe or \
-         a device is not read, it could wait or run for ever)"
-    )]
-    NotAFile { path: String, kind: &'static str },
-    #[error(
-        "{what} has {size} bytes or more, over the limit of {MAX_FILE_BYTES} (1 GiB): a step \
-         test is far smaller; keep the rows you need (or every n-th) and load that"
-    )]
-    TooLarge { what: String, size: u64 },
-    #[error(
-        "a sampling period of {sampling_period} s over {rows} rows gives times beyond the \
-         largest number; give the period in seconds"
-    )]
-    TimeOverflow { sampling_period: f64, rows: usize },
+    PasteColumns {
+        line: usize,
+        found: usize,
+    },
+    NotAFile {
+        path: String,
+        kind: FileKind,
+    },
+    /// `what` has `size` bytes or more, over [`MAX_FILE_BYTES`].
+    TooLarge {
+        what: Source,
+        size: u64,
+    },
+    TimeOverflow {
+        sampling_period: f64,
+        rows: usize,
+    },
 }
 
 /// Loads a step test from a file (any of the formats of the module docs). Only a regular
@@ -348,7 +453,7 @@ fn read_capped(path: &Path) -> Result<Vec<u8>, DataError> {
     file.take(MAX_FILE_BYTES + 1)
         .read_to_end(&mut bytes)
         .map_err(io)?;
-    check_size("the file", bytes.len())?;
+    check_size(Source::File, bytes.len())?;
     Ok(bytes)
 }
 
@@ -362,7 +467,7 @@ fn check_regular(shown: &dyn Fn() -> String, metadata: &Metadata) -> Result<(), 
     }
     if metadata.len() > MAX_FILE_BYTES {
         return Err(DataError::TooLarge {
-            what: "the file".into(),
+            what: Source::File,
             size: metadata.len(),
         });
     }
@@ -370,55 +475,52 @@ fn check_regular(shown: &dyn Fn() -> String, metadata: &Metadata) -> Result<(), 
 }
 
 /// What a file that is not a regular file is, in words; `None` for a regular file.
-fn special_kind(file_type: &FileType) -> Option<&'static str> {
+fn special_kind(file_type: &FileType) -> Option<FileKind> {
     if file_type.is_file() {
         return None;
     }
     if file_type.is_dir() {
-        return Some("a directory");
+        return Some(FileKind::Directory);
     }
     #[cfg(unix)]
     {
         use std::os::unix::fs::FileTypeExt;
         if file_type.is_fifo() {
-            return Some("a named pipe (FIFO)");
+            return Some(FileKind::NamedPipe);
         }
         if file_type.is_char_device() || file_type.is_block_device() {
-            return Some("a device");
+            return Some(FileKind::Device);
         }
         if file_type.is_socket() {
-            return Some("a socket");
+            return Some(FileKind::Socket);
         }
     }
-    Some("a special file")
+    Some(FileKind::Special)
 }
 
 /// Text (or bytes) of at most [`MAX_FILE_BYTES`].
-fn check_size(what: &str, len: usize) -> Result<(), DataError> {
+fn check_size(what: Source, len: usize) -> Result<(), DataError> {
     let len = u64::try_from(len).unwrap_or(u64::MAX);
     if len > MAX_FILE_BYTES {
-        return Err(DataError::TooLarge {
-            what: what.to_string(),
-            size: len,
-        });
+        return Err(DataError::TooLarge { what, size: len });
     }
     Ok(())
 }
 
 /// Loads a step test from the raw bytes of a file: UTF-8, UTF-16 with BOM, else Latin-1.
 pub fn load_bytes(bytes: &[u8], options: &LoadOptions) -> Result<StepTest, DataError> {
-    check_size("the data", bytes.len())?;
+    check_size(Source::Data, bytes.len())?;
     let (text, note) = decode(bytes)?;
     let mut test = load_str(&text, options)?;
     if let Some(note) = note {
-        test.notes.insert(0, note.to_string());
+        test.notes.insert(0, note);
     }
     Ok(test)
 }
 
 /// Loads a step test from text.
 pub fn load_str(text: &str, options: &LoadOptions) -> Result<StepTest, DataError> {
-    check_size("the text", text.len())?;
+    check_size(Source::Text, text.len())?;
     if let Some(ts) = options.sampling_period
         && !(ts.is_finite() && ts > 0.0)
     {
@@ -433,7 +535,7 @@ pub fn load_str(text: &str, options: &LoadOptions) -> Result<StepTest, DataError
 /// recognised; otherwise column 1 is the time, and of three columns the step-like one is the
 /// input (t, u, y when that does not decide).
 pub fn from_columns(text: &str) -> Result<StepTest, DataError> {
-    check_size("the pasted text", text.len())?;
+    check_size(Source::Paste, text.len())?;
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let layout = Layout::detect(text, 0)?;
     if !(2..=3).contains(&layout.columns) {
@@ -446,13 +548,13 @@ pub fn from_columns(text: &str) -> Result<StepTest, DataError> {
 }
 
 /// Decodes a file's bytes; the note says when it was not UTF-8.
-fn decode(bytes: &[u8]) -> Result<(Cow<'_, str>, Option<&'static str>), DataError> {
+fn decode(bytes: &[u8]) -> Result<(Cow<'_, str>, Option<DataNote>), DataError> {
     let utf16 = |rest: &[u8], unit: fn([u8; 2]) -> u16| {
         let units = rest.chunks_exact(2).map(|c| unit([c[0], c[1]]));
         let text: String = char::decode_utf16(units)
             .map(|c| c.unwrap_or(char::REPLACEMENT_CHARACTER))
             .collect();
-        (Cow::Owned(text), Some("the file is UTF-16 text"))
+        (Cow::Owned(text), Some(DataNote::Utf16))
     };
     if let Some(rest) = bytes.strip_prefix(&[0xFF, 0xFE]) {
         return Ok(utf16(rest, u16::from_le_bytes));
@@ -468,7 +570,7 @@ fn decode(bytes: &[u8]) -> Result<(Cow<'_, str>, Option<&'static str>), DataErro
         Ok(text) => (Cow::Borrowed(text), None),
         Err(_) => (
             Cow::Owned(bytes.iter().map(|&b| char::from(b)).collect()),
-            Some("the file is not UTF-8: it was read as Latin-1 (Windows) text"),
+            Some(DataNote::Latin1),
         ),
     })
 }
@@ -566,12 +668,12 @@ const DELIMITERS: [Delimiter; 4] = [
 ];
 
 impl Delimiter {
-    fn describe(self) -> &'static str {
+    fn separator(self) -> Separator {
         match self {
-            Delimiter::Char(';') => "semicolon-separated",
-            Delimiter::Char('\t') => "tab-separated",
-            Delimiter::Char(_) => "comma-separated",
-            Delimiter::Whitespace => "whitespace-separated (as MATLAB's load)",
+            Delimiter::Char(';') => Separator::Semicolon,
+            Delimiter::Char('\t') => Separator::Tab,
+            Delimiter::Char(_) => Separator::Comma,
+            Delimiter::Whitespace => Separator::Whitespace,
         }
     }
 }
@@ -766,21 +868,26 @@ impl Layout {
         matches!(self.header, Some(Header::Row(_) | Header::Comment(_)))
     }
 
-    /// A column in a message: `"T1"`, or its position without names.
-    fn label(&self, column: usize) -> String {
-        if self.named() {
-            format!("\"{}\"", shorten(&self.name(column)))
-        } else {
-            (column + 1).to_string()
+    /// A column in a message: its position, and its (shortened) name when the file has names.
+    fn column(&self, column: usize) -> Column {
+        Column {
+            position: column + 1,
+            name: self
+                .named()
+                .then(|| shorten(&self.name(column)).into_owned()),
         }
     }
 
-    /// A column in a list: `4 "box temp"`, or `column 4` without names.
-    fn listing(&self, column: usize) -> String {
-        if self.named() {
-            format!("{} \"{}\"", column + 1, shorten(&self.name(column)))
-        } else {
-            format!("column {}", column + 1)
+    /// Some columns, for a message.
+    fn list(&self, columns: impl ExactSizeIterator<Item = usize>) -> ColumnList {
+        let total = columns.len();
+        let shown: Vec<Column> = columns
+            .take(LISTED_COLUMNS)
+            .map(|i| self.column(i))
+            .collect();
+        ColumnList {
+            more: total - shown.len(),
+            shown,
         }
     }
 
@@ -817,33 +924,30 @@ impl Layout {
     }
 
     /// The columns, for a message.
-    fn available(&self) -> String {
+    fn available(&self) -> Columns {
         if !self.named() {
-            return format!(
-                "{} unnamed column(s) (no header row): choose by position, 1 to {}",
-                self.columns, self.columns
-            );
+            return Columns::Unnamed {
+                count: self.columns,
+            };
         }
-        join_some((0..self.columns).map(|i| self.listing(i)))
+        Columns::Named(self.list(0..self.columns))
     }
 
-    fn describe(&self) -> String {
-        let decimal = if self.decimal_comma {
-            " with decimal commas"
-        } else {
-            ""
-        };
-        let header = match self.header {
-            Some(Header::Row(no)) => format!("header on line {no}"),
-            Some(Header::Comment(no)) => format!("column names from the comment on line {no}"),
-            Some(Header::Ignored(no)) => format!(
-                "the header on line {no} was not used (its names do not split into the {} \
-                 columns): the columns are numbered",
-                self.columns
-            ),
-            None => "no header row".to_string(),
-        };
-        format!("read as {}{decimal}, {header}", self.delimiter.describe())
+    /// How the table was read.
+    fn note(&self) -> DataNote {
+        DataNote::ReadAs {
+            separator: self.delimiter.separator(),
+            decimal_comma: self.decimal_comma,
+            header: match self.header {
+                Some(Header::Row(line)) => HeaderFound::Row { line },
+                Some(Header::Comment(line)) => HeaderFound::Comment { line },
+                Some(Header::Ignored(line)) => HeaderFound::Ignored {
+                    line,
+                    columns: self.columns,
+                },
+                None => HeaderFound::None,
+            },
+        }
     }
 }
 
@@ -933,18 +1037,6 @@ fn shorten(text: &str) -> Cow<'_, str> {
     }
 }
 
-/// Up to [`LISTED_COLUMNS`] items joined with commas, then how many more.
-fn join_some(items: impl ExactSizeIterator<Item = String>) -> String {
-    let total = items.len();
-    let shown: Vec<String> = items.take(LISTED_COLUMNS).collect();
-    let more = total - shown.len();
-    if more == 0 {
-        shown.join(", ")
-    } else {
-        format!("{}, … and {more} more", shown.join(", "))
-    }
-}
-
 // ---------------------------------------------------------------------------------------
 // Choosing the columns
 
@@ -958,7 +1050,7 @@ struct Plan {
     guess_input: bool,
     /// Columns an automatic output or input may come from.
     candidates: Vec<usize>,
-    notes: Vec<String>,
+    notes: Vec<DataNote>,
 }
 
 impl Plan {
@@ -993,10 +1085,10 @@ impl Plan {
                     available: layout.available(),
                 });
             }
-            (Some(i), Some(ts)) => notes.push(format!(
-                "the sampling period given ({ts} s) was not used: the time is read from column {}",
-                layout.label(i)
-            )),
+            (Some(i), Some(ts)) => notes.push(DataNote::SamplingPeriodUnused {
+                sampling_period: ts,
+                time: layout.column(i),
+            }),
             _ => {}
         }
         let output = match &options.output {
@@ -1027,16 +1119,9 @@ impl Plan {
             .collect();
         if excluded.iter().any(|&e| e) && (output.is_none() || guess_input || time.is_none()) {
             let ignored: Vec<usize> = (0..layout.columns).filter(|&i| excluded[i]).collect();
-            let which = match ignored[..] {
-                [one] => format!("column {} has", one + 1),
-                _ => format!(
-                    "columns {} have",
-                    join_some(ignored.iter().map(|i| (i + 1).to_string()))
-                ),
-            };
-            notes.push(format!(
-                "{which} no name (a row index, as pandas writes): not used"
-            ));
+            let mut columns = layout.list(ignored.into_iter());
+            columns.shown.iter_mut().for_each(|c| c.name = None);
+            notes.push(DataNote::IndexIgnored { columns });
         }
         Ok(Self {
             time,
@@ -1089,10 +1174,9 @@ impl Plan {
             [only] => {
                 self.output = Some(only);
                 if layout.named() {
-                    self.notes.push(format!(
-                        "column {} was taken as the output: it is the only column left",
-                        layout.label(only)
-                    ));
+                    self.notes.push(DataNote::OutputOnlyLeft {
+                        output: layout.column(only),
+                    });
                 }
                 Ok(())
             }
@@ -1104,25 +1188,22 @@ impl Plan {
                 // A pasted t, u, y.
                 self.output = Some(last);
                 self.input = left.first().copied();
-                self.notes
-                    .push("the pasted columns were read as t, u, y".to_string());
+                self.notes.push(DataNote::PastedTuy);
                 Ok(())
             }
             _ => Err(DataError::AmbiguousOutput {
                 line: layout.defined_at,
-                candidates: join_some(left.iter().map(|&i| layout.listing(i))),
+                candidates: layout.list(left.iter().copied()),
             }),
         }
     }
 
     fn guess_input_column(&mut self, layout: &Layout, rows: &Rows) {
         if self.candidates.len() > MAX_GUESS_COLUMNS {
-            self.notes.push(format!(
-                "the input was not guessed among the {} unnamed columns (more than {}): \
-                 choose it by name or position",
-                self.candidates.len(),
-                MAX_GUESS_COLUMNS
-            ));
+            self.notes.push(DataNote::InputNotGuessed {
+                columns: self.candidates.len(),
+                limit: MAX_GUESS_COLUMNS,
+            });
             return;
         }
         let step_like: Vec<usize> = rows
@@ -1135,15 +1216,13 @@ impl Plan {
         match step_like[..] {
             [only] if leaves_output => {
                 self.input = Some(only);
-                self.notes.push(format!(
-                    "column {} was taken as the input: it is piecewise constant with few levels",
-                    layout.label(only)
-                ));
+                self.notes.push(DataNote::InputGuessed {
+                    input: layout.column(only),
+                });
             }
-            [_, _, ..] => self.notes.push(format!(
-                "columns {} all look like an input (piecewise constant): none was taken; choose one",
-                join_some(step_like.iter().map(|&i| layout.label(i)))
-            )),
+            [_, _, ..] => self.notes.push(DataNote::SeveralInputs {
+                columns: layout.list(step_like.iter().copied()),
+            }),
             _ => {}
         }
     }
@@ -1188,7 +1267,7 @@ fn check_distinct(layout: &Layout, chosen: [(Role, Option<usize>); 3]) -> Result
                     line: layout.defined_at,
                     first,
                     second,
-                    column: layout.label(a),
+                    column: layout.column(a),
                 });
             }
         }
@@ -1414,7 +1493,7 @@ fn load_with_layout(
         .flatten()
         .filter_map(|&i| {
             rows.bad_at(i)
-                .map(|(l, t)| (*l, layout.label(i), t.clone()))
+                .map(|(l, t)| (*l, layout.column(i), t.clone()))
         })
         .min_by_key(|b| b.0)
     {
@@ -1424,20 +1503,15 @@ fn load_with_layout(
     let time = match plan.time {
         Some(i) => {
             let time = rows.take(i);
-            let hint = if layout.named() {
-                ""
-            } else {
-                " (column 1 was taken as the time because the file has no header; if it has no \
-                 time column, give the sampling period)"
-            };
-            check_time(&time, &rows.lines, &layout.label(i), hint)?;
+            let assumed = !layout.named();
+            check_time(&time, &rows.lines, layout.column(i), assumed)?;
             time
         }
         None => {
             let ts = options.sampling_period.unwrap_or(1.0);
-            plan.notes.push(format!(
-                "the file has no time column: t = k·Ts with Ts = {ts} s (k = 0, 1, …)"
-            ));
+            plan.notes.push(DataNote::GeneratedTime {
+                sampling_period: ts,
+            });
             let time: Vec<f64> = (0..rows.lines.len()).map(|k| k as f64 * ts).collect();
             if time.last().is_some_and(|t| !t.is_finite()) {
                 return Err(DataError::TimeOverflow {
@@ -1464,7 +1538,7 @@ fn load_with_layout(
             .is_none()
             .then_some(options.sampling_period)
             .flatten(),
-        notes: vec![layout.describe()],
+        notes: vec![layout.note()],
     };
     test.notes.append(&mut plan.notes);
     let lines = drop_missing(&mut test, std::mem::take(&mut rows.lines));
@@ -1490,11 +1564,16 @@ fn line_of(lines: &[u32], k: usize) -> usize {
 }
 
 /// Every row has a time, and it never decreases.
-fn check_time(time: &[f64], lines: &[u32], column: &str, hint: &str) -> Result<(), DataError> {
+fn check_time(
+    time: &[f64],
+    lines: &[u32],
+    column: Column,
+    first_column_assumed: bool,
+) -> Result<(), DataError> {
     if let Some(k) = time.iter().position(|t| t.is_nan()) {
         return Err(DataError::TimeMissing {
             line: line_of(lines, k),
-            column: column.to_string(),
+            column,
         });
     }
     match time.windows(2).position(|w| w[1] < w[0]) {
@@ -1502,7 +1581,7 @@ fn check_time(time: &[f64], lines: &[u32], column: &str, hint: &str) -> Result<(
             line: line_of(lines, k + 1),
             time: time[k + 1],
             previous: time[k],
-            hint: hint.to_string(),
+            first_column_assumed,
         }),
         None => Ok(()),
     }
@@ -1526,15 +1605,10 @@ fn drop_missing(test: &mut StepTest, mut lines: Vec<u32>) -> Vec<u32> {
         .take(LISTED_LINES)
         .map(|(_, &l)| l as usize)
         .collect();
-    test.notes.push(format!(
-        "{}: the output or input is missing (empty or NaN); {} skipped",
-        list_lines(&shown, total),
-        if total == 1 {
-            "that row was"
-        } else {
-            "those rows were"
-        }
-    ));
+    test.notes.push(DataNote::MissingValues {
+        lines: shown,
+        total,
+    });
     fn filter<T>(v: &mut Vec<T>, keep: &[bool]) {
         let mut flags = keep.iter();
         v.retain(|_| flags.next().copied().unwrap_or(false));
@@ -1549,21 +1623,6 @@ fn drop_missing(test: &mut StepTest, mut lines: Vec<u32>) -> Vec<u32> {
     lines
 }
 
-/// "line 4" / "lines 4, 9 and 12" / "lines 4, 9, … and 37 more": `shown` are the first of
-/// `total` lines.
-fn list_lines(shown: &[usize], total: usize) -> String {
-    let shown = &shown[..shown.len().min(LISTED_LINES)];
-    let text: Vec<String> = shown.iter().map(usize::to_string).collect();
-    match shown {
-        [] => "no line".to_string(),
-        [one] if total == 1 => format!("line {one}"),
-        _ if total > shown.len() => {
-            format!("lines {} and {} more", text.join(", "), total - shown.len())
-        }
-        [.., last] => format!("lines {} and {last}", text[..text.len() - 1].join(", ")),
-    }
-}
-
 /// Notes the consecutive samples that share a time, saying which is before a step.
 fn note_equal_times(test: &mut StepTest, lines: &[u32]) {
     let mut equal = (1..test.time.len()).filter(|&k| test.time[k] == test.time[k - 1]);
@@ -1575,17 +1634,23 @@ fn note_equal_times(test: &mut StepTest, lines: &[u32]) {
             (before != after).then_some((before, after))
         });
         notes.push(match change {
-            Some((before, after)) => format!(
-                "lines {a} and {b} have the same time {t} and the input changes between them \
-                 ({before} → {after}): line {a} is the state just before the step (TCLab logs \
-                 t = 0 twice this way)"
-            ),
-            None => format!("lines {a} and {b} have the same time {t}; both were kept"),
+            Some((before, after)) => DataNote::StepBetweenEqualTimes {
+                first: a,
+                second: b,
+                time: t,
+                before,
+                after,
+            },
+            None => DataNote::EqualTimes {
+                first: a,
+                second: b,
+                time: t,
+            },
         });
     }
     let more = equal.count();
     if more > 0 {
-        notes.push(format!("{more} more pairs of rows share a time"));
+        notes.push(DataNote::MoreEqualTimes { pairs: more });
     }
     test.notes.append(&mut notes);
 }
@@ -1679,20 +1744,6 @@ mod tests {
         assert_eq!(shorten("T1"), "T1");
         let long = "é".repeat(100);
         assert_eq!(shorten(&long), format!("{}…", "é".repeat(SHOWN_CHARS)));
-        let items = (0..25).map(|k| k.to_string());
-        assert!(join_some(items).ends_with("19, … and 5 more"));
-    }
-
-    #[test]
-    fn lines_are_listed_briefly() {
-        assert_eq!(list_lines(&[4], 1), "line 4");
-        assert_eq!(list_lines(&[4, 9, 12], 3), "lines 4, 9 and 12");
-        assert_eq!(list_lines(&[4], 2), "lines 4 and 1 more");
-        let many: Vec<usize> = (1..=20).collect();
-        assert_eq!(
-            list_lines(&many, many.len()),
-            "lines 1, 2, 3, 4, 5, 6, 7, 8 and 12 more"
-        );
     }
 
     #[test]
@@ -1700,7 +1751,7 @@ mod tests {
         let latin1 = b"tempo;sa\xedda\n0;1\n1;2\n2;3\n";
         let t = load_bytes(latin1, &LoadOptions::default()).unwrap();
         assert_eq!(t.output_name, "saída");
-        assert!(t.notes[0].contains("Latin-1"));
+        assert_eq!(t.notes[0], DataNote::Latin1);
         let utf16: Vec<u8> = [0xFF, 0xFE]
             .into_iter()
             .chain(

@@ -61,48 +61,6 @@ impl Cause {
             Cause::None => "none",
         }
     }
-
-    /// The cause in plain words for a student.
-    pub fn explanation(self) -> &'static str {
-        match self {
-            Cause::DeadTime => "The model moves before the data does: the process has a dead time.",
-            Cause::Offset => {
-                "The model's baseline is off everywhere: the operating point y0 is not what the model assumes."
-            }
-            Cause::Oscillation => {
-                "The residuals oscillate at a frequency the model lacks: the process has an underdamped pair of poles."
-            }
-            Cause::ExtraPole => {
-                "The data starts with zero slope (an S-shape) where the model rises at once: the process has one more pole."
-            }
-            Cause::Zero => {
-                "The data rises faster or overshoots more than the model's poles allow: the process has a zero."
-            }
-            Cause::InverseResponse => {
-                "The data first moves the wrong way: the process has a right-half-plane zero."
-            }
-            Cause::Integrator => "The data never levels off, it ramps: the process integrates.",
-            Cause::Drift => "A slow trend rides on top of the settled response: the output drifts.",
-            Cause::None => {
-                "The residuals look like noise and no extension pays for itself: the model is adequate."
-            }
-        }
-    }
-
-    /// The extension it implies, in procest terms.
-    pub fn remedy(self) -> &'static str {
-        match self {
-            Cause::DeadTime => "add a dead time Td",
-            Cause::Offset => "estimate Y0",
-            Cause::Oscillation => "use an underdamped pair (U: Tw, Zeta)",
-            Cause::ExtraPole => "add a pole (P1 → P2, P2 → P3)",
-            Cause::Zero => "add a zero Tz",
-            Cause::InverseResponse => "add a right-half-plane zero (Tz < 0)",
-            Cause::Integrator => "add an integrator (I)",
-            Cause::Drift => "add a drift term",
-            Cause::None => "keep the model",
-        }
-    }
 }
 
 /// A structural change to try.
@@ -195,11 +153,109 @@ pub struct Gain {
     pub criterion_delta: f64,
 }
 
+/// Residuals over an interval: how many, their mean (output units) and the fraction that
+/// share the mean's sign (0 to 1).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Bias {
+    pub start: f64,
+    pub end: f64,
+    pub n: usize,
+    pub mean: f64,
+    pub same_sign: f64,
+}
+
+/// The evidence for a cause, with its numbers (`crate::text` says it); times in seconds.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub enum Evidence {
+    /// The data stays near its operating point over `bias` while the model moves; a dead
+    /// time `td` makes the model wait.
+    DeadTime { bias: Bias, td: f64 },
+    /// The residuals are biased over the whole record; the model assumes `y0_held`, the
+    /// data say `y0_estimated`.
+    Offset {
+        bias: Bias,
+        y0_held: f64,
+        y0_estimated: f64,
+    },
+    /// The residuals oscillate (of `period` when one is found: their autocorrelation
+    /// alternates beyond the 99 % band); a pair with `omega_d` (rad/s) and `zeta` takes it up.
+    Oscillation {
+        period: Option<f64>,
+        omega_d: Option<f64>,
+        zeta: f64,
+    },
+    /// Right after the response starts (over `bias`) the data rises with zero slope while the
+    /// model rises at once; the pole added, with its time constant.
+    ExtraPole {
+        bias: Bias,
+        added: Option<(Param, f64)>,
+    },
+    /// The data overshoots its final level by `overshoot` (a fraction; peak at `peak_time`),
+    /// more than the model's pair alone (`underdamped`) or although its poles are real; a
+    /// zero `tz` lets it.
+    Zero {
+        overshoot: f64,
+        peak_time: Option<f64>,
+        underdamped: bool,
+        tz: f64,
+    },
+    /// The data first moves the wrong way by `undershoot` (a fraction of the step's effect,
+    /// deepest at `dip_time`); a right-half-plane zero `tz` does that.
+    InverseResponse {
+        undershoot: f64,
+        dip_time: Option<f64>,
+        tz: f64,
+    },
+    /// The data never levels off: over the last fifth it moves at `slope` (units/s),
+    /// `per_time_constant` (a fraction) of the step's effect per time constant; the tail's
+    /// residual trend z.
+    Integrator {
+        slope: f64,
+        per_time_constant: f64,
+        trend_z: Option<f64>,
+    },
+    /// After the response settles the residuals trend (the tail's slope in units/s and its
+    /// z); a drift term of `drift` units/s takes it.
+    Drift {
+        tail: Option<(f64, f64)>,
+        drift: f64,
+    },
+    /// Nothing to name.
+    None,
+}
+
+/// How the loop ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Ending {
+    /// The residuals look like noise and no extension lowers BIC by [`BIC_THRESHOLD`].
+    Adequate,
+    /// No extension lowers BIC by [`BIC_THRESHOLD`], although the residuals are not white.
+    NotWhite,
+    /// The step limit was reached.
+    StepLimit,
+}
+
+/// The residuals' whiteness: lags of the autocorrelation outside the 99 % band, of how
+/// many, and the runs test's z.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Whiteness {
+    pub outside: usize,
+    pub lags: usize,
+    pub runs_z: f64,
+}
+
+/// Why the final model is adequate (or why the loop stopped), with the whiteness statistics.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Verdict {
+    pub ending: Ending,
+    pub whiteness: Option<Whiteness>,
+}
+
 /// One step of the loop: the cause named, why, and the extended fit.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Step {
     pub cause: Cause,
-    pub evidence: String,
+    pub evidence: Evidence,
     /// The time interval the evidence points at (s), when there is one.
     pub interval: Option<(f64, f64)>,
     pub fit: FitReport,
@@ -214,10 +270,20 @@ pub struct DiagnoseReport {
     pub final_fit: FitReport,
     /// True when the loop ended because nothing paid (not at the step limit).
     pub adequate: bool,
-    /// Why the final model is considered adequate (or not), with the residual statistics.
-    pub verdict: String,
+    /// Why the final model is considered adequate (or not), with the residual statistics;
+    /// `None` for a chain still being built one step at a time.
+    pub verdict: Option<Verdict>,
     /// The process's static gain Kp = Δy/Δu of the final model, with its 95 % interval.
     pub static_gain: (f64, Option<(f64, f64)>),
+}
+
+impl DiagnoseReport {
+    /// The fits of the chain: the start, then each step's.
+    pub fn chain(&self) -> Vec<&FitReport> {
+        std::iter::once(&self.start)
+            .chain(self.steps.iter().map(|s| &s.fit))
+            .collect()
+    }
 }
 
 /// BIC of a fit: N·ln(MSE) + p·ln(N), from the fit's ln MSE (finite at any scale).
@@ -271,7 +337,7 @@ pub fn diagnose_from(
             }
         }
     }
-    let verdict = verdict(data, &current, adequate);
+    let verdict = Some(verdict(data, &current, adequate));
     let kp = current.model.get(Param::Kp);
     DiagnoseReport {
         start,
@@ -474,7 +540,7 @@ fn characteristic_time(report: &FitReport, data: &FitData) -> f64 {
 }
 
 /// Mean of the residuals over [a, b], their count and the fraction sharing the mean's sign.
-fn interval_stats(data: &FitData, r: &[f64], (a, b): (f64, f64)) -> (usize, f64, f64) {
+fn interval_stats(data: &FitData, r: &[f64], (a, b): (f64, f64)) -> Bias {
     let inside: Vec<f64> = data
         .times
         .iter()
@@ -483,8 +549,15 @@ fn interval_stats(data: &FitData, r: &[f64], (a, b): (f64, f64)) -> (usize, f64,
         .map(|(_, e)| *e)
         .collect();
     let n = inside.len();
+    let none = Bias {
+        start: a,
+        end: b,
+        n: 0,
+        mean: 0.0,
+        same_sign: 0.0,
+    };
     if n == 0 {
-        return (0, 0.0, 0.0);
+        return none;
     }
     let mean = inside.iter().sum::<f64>() / n as f64;
     let same = inside
@@ -492,20 +565,21 @@ fn interval_stats(data: &FitData, r: &[f64], (a, b): (f64, f64)) -> (usize, f64,
         .filter(|e| e.signum() == mean.signum())
         .count() as f64
         / n as f64;
-    (n, mean, same)
+    Bias {
+        n,
+        mean,
+        same_sign: same,
+        ..none
+    }
 }
 
-fn num(x: f64) -> String {
-    crate::format::sig(x, 4)
-}
-
-/// The evidence for a cause: which statistic over which interval, in words.
+/// The evidence for a cause: which statistic over which interval.
 fn explain(
     cause: Cause,
     data: &FitData,
     current: &FitReport,
     extended: &FitReport,
-) -> (String, Option<(f64, f64)>) {
+) -> (Evidence, Option<(f64, f64)>) {
     let r = current.residuals(data).unwrap_or_default();
     let analysis = analyse(current, data);
     let v = extended.model.values;
@@ -522,48 +596,29 @@ fn explain(
         Cause::DeadTime => {
             let td = v.get(Param::Td);
             let interval = (t0, t0 + td);
-            let (n, mean, same) = interval_stats(data, &r, interval);
-            (
-                format!(
-                    "From t = {} s to {} s the data stays near its operating point while the model already moves: the \
-                     {n} residuals there average {} ({} % of one sign). A dead time Td = {} s makes the model wait.",
-                    num(interval.0),
-                    num(interval.1),
-                    num(mean),
-                    num(100.0 * same),
-                    num(td)
-                ),
-                Some(interval),
-            )
+            let bias = interval_stats(data, &r, interval);
+            (Evidence::DeadTime { bias, td }, Some(interval))
         }
         Cause::Offset => {
-            let (n, mean, same) = interval_stats(data, &r, (t_first, t_last));
+            let bias = interval_stats(data, &r, (t_first, t_last));
             (
-                format!(
-                    "The residuals are biased everywhere: over the whole record ({n} samples) they average {} ({} % of \
-                     one sign). The model assumes y0 = {}; estimated, y0 = {}.",
-                    num(mean),
-                    num(100.0 * same),
-                    num(current.model.get(Param::Y0)),
-                    num(v.get(Param::Y0))
-                ),
+                Evidence::Offset {
+                    bias,
+                    y0_held: current.model.get(Param::Y0),
+                    y0_estimated: v.get(Param::Y0),
+                },
                 Some((t_first, t_last)),
             )
         }
         Cause::Oscillation => {
             let period = analysis.as_ref().and_then(|a| a.dominant_period);
             let transient = region(residuals::RegionKind::Transient).map(|g| (g.start, g.end));
-            let wd = extended.model.damped_frequency();
-            let period_text = period.map_or("an oscillation".to_string(), |p| {
-                format!("an oscillation of period {} s", num(p))
-            });
             (
-                format!(
-                    "The residuals show {period_text} (their autocorrelation alternates beyond the 99 % band), a frequency the \
-                     model lacks. An underdamped pair with ωd = {} rad/s and ζ = {} takes it up.",
-                    wd.map_or("—".into(), num),
-                    num(v.get(Param::Zeta))
-                ),
+                Evidence::Oscillation {
+                    period,
+                    omega_d: extended.model.damped_frequency(),
+                    zeta: v.get(Param::Zeta),
+                },
                 transient,
             )
         }
@@ -575,44 +630,23 @@ fn explain(
                     0.0
                 };
             let interval = (start, start + characteristic_time(current, data));
-            let (n, mean, same) = interval_stats(data, &r, interval);
+            let bias = interval_stats(data, &r, interval);
             let added = [Param::Tp3, Param::Tp2]
                 .into_iter()
                 .find(|p| extended.model.structure.params().contains(p))
                 .map(|p| (p, v.get(p)));
-            (
-                format!(
-                    "Right after the response starts (t = {} s to {} s) the data rises with zero slope, an S-shape, while the \
-                     model rises at once: the {n} residuals there average {} ({} % of one sign). One more pole{} gives the S-shape.",
-                    num(interval.0),
-                    num(interval.1),
-                    num(mean),
-                    num(100.0 * same),
-                    added.map_or(String::new(), |(p, x)| format!(
-                        " ({} = {} s)",
-                        p.name(),
-                        num(x)
-                    ))
-                ),
-                Some(interval),
-            )
+            (Evidence::ExtraPole { bias, added }, Some(interval))
         }
         Cause::Zero => {
             let f = features(data, Some(current.model.get(Param::Y0)));
             let tp = f.t_peak.map(|t| t + t0);
-            let why = if current.model.structure.underdamped {
-                "more, and sooner, than the model's underdamped pair alone can follow"
-            } else {
-                "although the model's poles are real and cannot overshoot"
-            };
             (
-                format!(
-                    "The data overshoots its final level by {} % (peak at t = {} s) {why}. A zero with Tz = {} s \
-                     speeds up the start of the response and lets it.",
-                    num(100.0 * f.overshoot),
-                    tp.map_or("—".into(), num),
-                    num(v.get(Param::Tz))
-                ),
+                Evidence::Zero {
+                    overshoot: f.overshoot,
+                    peak_time: tp,
+                    underdamped: current.model.structure.underdamped,
+                    tz: v.get(Param::Tz),
+                },
                 tp.map(|t| (t0, t + (t - t0))),
             )
         }
@@ -620,13 +654,11 @@ fn explain(
             let f = features(data, Some(current.model.get(Param::Y0)));
             let dip = f.t_dip.map(|t| t + t0);
             (
-                format!(
-                    "The data first moves the wrong way, by {} % of the step's effect (deepest at t = {} s), before going \
-                     towards its final level. A right-half-plane zero, Tz = {} s, does that.",
-                    num(100.0 * f.undershoot),
-                    dip.map_or("—".into(), num),
-                    num(v.get(Param::Tz))
-                ),
+                Evidence::InverseResponse {
+                    undershoot: f.undershoot,
+                    dip_time: dip,
+                    tz: v.get(Param::Tz),
+                },
                 dip.map(|t| (t0, t + (t - t0))),
             )
         }
@@ -634,59 +666,43 @@ fn explain(
             let tail = region(residuals::RegionKind::Tail);
             let slope = features(data, None).final_slope;
             (
-                format!(
-                    "The data never levels off: over the last fifth of the record it still moves at {} units/s ({} % of the \
-                     step's effect per time constant), and the residuals trend in the tail{}. An integrator makes the model ramp.",
-                    num(slope),
-                    num(100.0 * slope.abs() * current.model.get(Param::Tp1)
-                        / effect.max(f64::MIN_POSITIVE)),
-                    tail.map_or(String::new(), |g| format!(
-                        " (trend z = {})",
-                        num(g.slope_z)
-                    ))
-                ),
+                Evidence::Integrator {
+                    slope,
+                    per_time_constant: slope.abs() * current.model.get(Param::Tp1)
+                        / effect.max(f64::MIN_POSITIVE),
+                    trend_z: tail.map(|g| g.slope_z),
+                },
                 tail.map(|g| (g.start, g.end)),
             )
         }
         Cause::Drift => {
             let tail = region(residuals::RegionKind::Tail);
             (
-                format!(
-                    "After the response settles the residuals still trend{}: a slow drift of {} units/s rides on the output. \
-                     A drift term takes it.",
-                    tail.as_ref().map_or(String::new(), |g| format!(
-                        " (slope {} units/s, z = {})",
-                        num(g.slope),
-                        num(g.slope_z)
-                    )),
-                    num(v.get(Param::Drift))
-                ),
+                Evidence::Drift {
+                    tail: tail.map(|g| (g.slope, g.slope_z)),
+                    drift: v.get(Param::Drift),
+                },
                 tail.map(|g| (g.start, g.end)),
             )
         }
-        Cause::None => (Cause::None.explanation().to_string(), None),
+        Cause::None => (Evidence::None, None),
     }
 }
 
 /// Why the final model is adequate (or why the loop stopped), with the whiteness statistics.
-fn verdict(data: &FitData, report: &FitReport, adequate: bool) -> String {
-    let stats = analyse(report, data).map_or(String::new(), |a| {
-        format!(
-            " Residual autocorrelation: {} of {} lags outside the 99 % band; runs test z = {}.",
-            a.outside_band.len(),
-            a.autocorrelation.len().saturating_sub(1),
-            num(a.runs.z)
-        )
-    });
-    let head = match (adequate, analyse(report, data).is_some_and(|a| a.white)) {
-        (true, true) => {
-            "Adequate: the residuals look like noise and no extension lowers BIC by 10."
-        }
-        (true, false) => {
-            "No extension in the list lowers BIC by 10, although the residuals are not white: what is left is not one of \
-             the effects Degrau knows (nonlinearity, a disturbance, or noise that is not white)."
-        }
-        (false, _) => "Stopped at the step limit: the model may still miss something.",
-    };
-    format!("{head}{stats}")
+fn verdict(data: &FitData, report: &FitReport, adequate: bool) -> Verdict {
+    let analysis = analyse(report, data);
+    let white = analysis.as_ref().is_some_and(|a| a.white);
+    Verdict {
+        ending: match (adequate, white) {
+            (true, true) => Ending::Adequate,
+            (true, false) => Ending::NotWhite,
+            (false, _) => Ending::StepLimit,
+        },
+        whiteness: analysis.map(|a| Whiteness {
+            outside: a.outside_band.len(),
+            lags: a.autocorrelation.len().saturating_sub(1),
+            runs_z: a.runs.z,
+        }),
+    }
 }

@@ -23,24 +23,19 @@ pub enum Offset {
     Fixed(f64),
 }
 
-/// Problems with the experiment's choices, in plain words.
+/// Problems with the experiment's choices (`crate::text` says them; the CLI and the app
+/// add where to give what is missing, a flag or a field).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
 pub enum ExperimentError {
-    #[error(
-        "the step could not be found: the file has no input column, or the input never changes \
-         (when the step came at the first sample, give the input before the record: \
-         --initial-input, or the app's field of that name); else give the step time t0 and its \
-         size Δu"
-    )]
+    /// No step in the input: no input column, or it never changes. The input before the
+    /// record (a step at the first sample), or the step time t0 and size Δu, are missing.
     NoStep,
-    #[error("the step size Δu must be a finite number other than zero, not {0}")]
+    /// The step size Δu is zero or not a finite number.
     BadStep(f64),
     /// A window or filter that cannot be applied.
-    #[error(transparent)]
     Prepare(#[from] prepare::PrepareError),
-    #[error(transparent)]
     Model(#[from] ModelError),
-    #[error(transparent)]
     Fit(#[from] FitError),
 }
 

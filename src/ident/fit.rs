@@ -125,21 +125,6 @@ pub enum Termination {
     NoImprovement,
 }
 
-impl Termination {
-    pub fn describe(self) -> &'static str {
-        match self {
-            Termination::Gradient => "converged: the gradient vanished",
-            Termination::SmallStep => "converged: the steps became negligible",
-            Termination::SmallCostChange => "converged: the cost stopped decreasing",
-            Termination::IterationLimit => "stopped at the iteration limit (not converged)",
-            Termination::Cancelled => "cancelled",
-            Termination::NoImprovement => {
-                "stopped: no step lowered the cost from the start (not converged)"
-            }
-        }
-    }
-}
-
 /// Something a student should know about a fit.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -159,6 +144,8 @@ pub enum FitWarning {
     NotIdentifiable {
         param: String,
     },
+    /// A combination of the parameters is not identifiable (no one parameter alone).
+    CombinationNotIdentifiable,
     NotConverged,
     /// No step lowered the cost from the start.
     NoImprovement,
@@ -167,50 +154,6 @@ pub enum FitWarning {
         statistic: String,
         log10: f64,
     },
-}
-
-impl FitWarning {
-    pub fn message(&self) -> String {
-        match self {
-            FitWarning::AtBound { param, bound } => format!(
-                "{param} stopped at its bound {bound}: the optimum may lie beyond it, or the model \
-                 does not need this parameter"
-            ),
-            FitWarning::OverdampedUnderdamped { zeta } => format!(
-                "Zeta = {zeta:.4} ≥ 1 in an underdamped model: the pair is not oscillatory; an \
-                 overdamped structure (two real poles) says the same with a clearer meaning"
-            ),
-            FitWarning::Alias {
-                omega_d,
-                nyquist,
-                between_samples,
-            } => format!(
-                "alias: the model oscillates at ωd = {omega_d:.4} rad/s, but samples every Ts can only \
-                 show up to π/Ts = {nyquist:.4} rad/s; between the samples the model swings by \
-                 {:.0} % of the step's effect. Its samples may match the data while the model is \
-                 wrong: start from a better guess (the oscillation period of the data) or use \
-                 several starts",
-                100.0 * between_samples
-            ),
-            FitWarning::NotIdentifiable { param } => format!(
-                "{param} is not identifiable from this data (the fit does not depend on it): no \
-                 interval can be given"
-            ),
-            FitWarning::NotConverged => {
-                "the optimiser did not converge: the values are not an optimum".into()
-            }
-            FitWarning::NoImprovement => {
-                "the optimiser found no step that lowers the cost from the start: the values are \
-                 the start's, not an optimum; try another guess or more starts"
-                    .into()
-            }
-            FitWarning::Unrepresentable { statistic, log10 } => format!(
-                "the {statistic} is about 1e{log10:.1} in the data's units, beyond double \
-                 precision, so it shows as {}; the RMSE, fit % and AIC are exact",
-                if *log10 > 0.0 { "inf" } else { "0" }
-            ),
-        }
-    }
 }
 
 /// One line of progress, for a live display.
@@ -302,28 +245,23 @@ impl FitReport {
     }
 }
 
-/// Errors that stop a fit before it starts.
+/// Errors that stop a fit before it starts (`crate::text` says them).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
 pub enum FitError {
-    #[error("{n} samples after the step are too few to estimate {p} parameters")]
+    /// `n` samples after the step, too few for `p` parameters.
     TooFewSamples { n: usize, p: usize },
-    #[error("the step size Δu is {0}: it must be a finite number other than zero")]
+    /// The step size Δu is zero or not a finite number.
     BadStep(f64),
-    #[error("the initial guess is not a valid model: {0}")]
+    /// The initial guess is not a valid model.
     BadGuess(ModelError),
-    #[error("the data contain a value that is not a finite number")]
+    /// The data contain a value that is not a finite number.
     NonFiniteData,
-    #[error("the step time t0 is {0}: it must be a finite number")]
+    /// The step time t0 is not a finite number.
     BadStepTime(f64),
-    #[error(
-        "the model's error on the data is not a finite number at the initial guess: the guess is \
-         far from the data"
-    )]
+    /// The cost is not a finite number at the initial guess: the guess is far from the data.
     NonFiniteCost,
-    #[error(
-        "the fitted {param} is about 1e{log10:.1} in the data's units, beyond double precision: \
-         give the data (or the step Δu) in other units"
-    )]
+    /// The fitted `param` is about 10^`log10` in the data's units, beyond double precision.
     Unrepresentable { param: &'static str, log10: f64 },
 }
 
@@ -606,11 +544,7 @@ impl Problem {
         if sum.is_finite() {
             Ok(sum)
         } else {
-            Err(ModelError::BadValue {
-                name: "model",
-                value: sum,
-                why: "its response overflowed",
-            })
+            Err(ModelError::Overflow)
         }
     }
 
@@ -1076,9 +1010,7 @@ impl Problem {
                 }
             }
             if d.iter().all(|v| *v > 0.0) {
-                warnings.push(FitWarning::NotIdentifiable {
-                    param: "a combination of the parameters".into(),
-                });
+                warnings.push(FitWarning::CombinationNotIdentifiable);
             }
             return none;
         }

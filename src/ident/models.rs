@@ -76,43 +76,37 @@ impl Param {
             Param::Kp | Param::Zeta | Param::Y0 | Param::Drift => "",
         }
     }
-
-    /// What it is, in words.
-    pub fn describe(self) -> &'static str {
-        match self {
-            Param::Kp => "static gain Δy/Δu",
-            Param::Tp1 => "first time constant",
-            Param::Tp2 => "second time constant",
-            Param::Tp3 => "third time constant",
-            Param::Tw => "time constant of the underdamped pair, 1/ωn",
-            Param::Zeta => "damping ratio of the pair",
-            Param::Td => "dead time",
-            Param::Tz => "time constant of the zero (negative: inverse response)",
-            Param::Y0 => "output before the step (operating point)",
-            Param::Drift => "slope of a linear drift, output units per second",
-        }
-    }
 }
 
-/// Errors in model codes and parameter values, in plain words.
+/// What a parameter value must be.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Requirement {
+    Finite,
+    Positive,
+    NotNegative,
+    NotZero,
+    /// A dead time cannot be negative.
+    DelayNotNegative,
+}
+
+/// Errors in model codes and parameter values (`crate::text` says them).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
 pub enum ModelError {
-    #[error(
-        "\"{0}\" is not a model code: write P, the number of poles (1 to 3), then any of D (dead \
-         time), U (underdamped), Z (zero), I (integrator), e.g. P1D, P2DU, P2DUZ, P1DI"
-    )]
+    /// Not a procest code (P, the number of poles, then any of D, U, Z, I).
     BadCode(String),
-    #[error("an underdamped pair (U) needs at least 2 poles: {0}")]
+    /// An underdamped pair (U) in a code with fewer than 2 poles.
     UnderdampedNeedsTwoPoles(String),
-    #[error("{name} = {value} is not allowed: {why}")]
+    /// The parameter `name` = `value` breaks `requirement`.
     BadValue {
         name: &'static str,
         value: f64,
-        why: &'static str,
+        requirement: Requirement,
     },
-    #[error("the model has no parameter {0}")]
+    /// The model's response overflowed.
+    Overflow,
     NotInModel(&'static str),
-    #[error("the model is not a valid system: {0}")]
+    /// The model is not a valid system.
     System(#[from] LtiError),
 }
 
@@ -189,16 +183,10 @@ impl Structure {
         c
     }
 
-    /// The code plus what it does not say: `P2 + drift`, `P1D, Y0 held`.
+    /// The code plus what it does not say, in English (`P2 + drift`, `P1D, Y0 held`): kept
+    /// for the app; `crate::text::Localize` says it in either language.
     pub fn label(&self) -> String {
-        let mut l = self.code();
-        if self.drift {
-            l.push_str(" + drift");
-        }
-        if !self.free_offset {
-            l.push_str(", Y0 held");
-        }
-        l
+        crate::text::Localize::text(self, crate::text::Lang::En)
     }
 
     /// The parameters of the transfer function and of the output model, in order.
@@ -317,14 +305,14 @@ impl Model {
                 return Err(ModelError::BadValue {
                     name: p.name(),
                     value: x,
-                    why: "it must be a finite number",
+                    requirement: Requirement::Finite,
                 });
             }
             if positive && x <= 0.0 {
                 return Err(ModelError::BadValue {
                     name: p.name(),
                     value: x,
-                    why: "it must be positive",
+                    requirement: Requirement::Positive,
                 });
             }
             Ok(x)
@@ -339,7 +327,7 @@ impl Model {
                 return Err(ModelError::BadValue {
                     name: "Zeta",
                     value: zeta,
-                    why: "it must not be negative",
+                    requirement: Requirement::NotNegative,
                 });
             }
             poles.extend(pair_poles(tw, zeta));
@@ -374,7 +362,7 @@ impl Model {
             return Err(ModelError::BadValue {
                 name: "Kp",
                 value: kp,
-                why: "it must not be zero",
+                requirement: Requirement::NotZero,
             });
         }
         let tf = TransferFunction::from_zpk(&zeros, &poles, gain)?;
@@ -384,7 +372,7 @@ impl Model {
                 return Err(ModelError::BadValue {
                     name: "Td",
                     value: td,
-                    why: "a dead time cannot be negative",
+                    requirement: Requirement::DelayNotNegative,
                 });
             }
             return Ok(tf.with_delay(td)?);

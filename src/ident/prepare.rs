@@ -23,7 +23,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::data::{MIN_SAMPLES, StepTest};
+use super::data::{DataNote, MIN_SAMPLES, StepTest};
 use crate::lti::metrics::{MonotonePieces, StepInfo, StepInfoOptions};
 
 /// The step found in the input column.
@@ -39,24 +39,28 @@ pub struct StepEdge {
     pub index: usize,
 }
 
-/// Problems with the preparation choices, in plain words.
+/// Problems with the preparation choices (`crate::text` says them).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
 pub enum PrepareError {
-    #[error(
-        "samples {first} to {last} are not a range within 1 to {count} (counted from 1, both included)"
-    )]
+    /// Samples `first` to `last` (1-based, both included) are not within 1 to `count`.
     BadRange {
         first: usize,
         last: usize,
         count: usize,
     },
-    #[error("the window keeps {kept} sample(s); at least {needed} are needed")]
-    TooFewInWindow { kept: usize, needed: usize },
-    #[error("the window from {start} s to {end} s is not a time range")]
-    BadTimeRange { start: f64, end: f64 },
-    #[error("the filter cut-off must be a positive frequency in Hz, not {0}")]
+    TooFewInWindow {
+        kept: usize,
+        needed: usize,
+    },
+    /// The window's start (s) is after its end, or one is not a number.
+    BadTimeRange {
+        start: f64,
+        end: f64,
+    },
+    /// The filter cut-off (Hz) is not a positive number.
     BadCutoff(f64),
-    #[error("the sampling period must be a positive number of seconds, not {0}")]
+    /// The sampling period (s) is not a positive number.
     BadSamplingPeriod(f64),
 }
 
@@ -164,13 +168,13 @@ pub fn apply_window(test: &StepTest, window: Window) -> Result<StepTest, Prepare
         });
     }
     let mut notes = test.notes.clone();
-    notes.push(format!(
-        "kept samples {} to {} of {count} (t = {} s to {} s)",
-        range.start + 1,
-        range.end,
-        time[range.start],
-        time[range.end - 1]
-    ));
+    notes.push(DataNote::Window {
+        first: range.start + 1,
+        last: range.end,
+        count,
+        start: time[range.start],
+        end: time[range.end - 1],
+    });
     Ok(StepTest {
         time: time[range.clone()].to_vec(),
         output: test.output[range.clone()].to_vec(),
@@ -242,38 +246,15 @@ impl Ewma {
         self.rc / self.ts
     }
 
-    /// A plain-words warning when Ts > RC/5 (the notes' condition), else `None`.
-    pub fn warning(&self) -> Option<String> {
-        (self.ts > self.rc / 5.0).then(|| {
-            format!(
-                "the sampling period Ts = {} s is more than RC/5 = {:.4} s (RC/Ts = {:.4}, \
-                 expected ≥ 5): this digital filter behaves quite differently from the RC \
-                 filter it imitates; use a lower cut-off or faster sampling",
-                self.ts,
-                self.rc / 5.0,
-                self.ratio()
-            )
-        })
+    /// Whether Ts > RC/5: the notes warn that the digital filter then behaves quite
+    /// differently from the RC filter it imitates.
+    pub fn too_coarse(&self) -> bool {
+        self.ts > self.rc / 5.0
     }
 
     /// The delay the filter adds to slow signals (its group delay at DC), in seconds: RC.
     pub fn lag(&self) -> f64 {
         (1.0 - self.alpha) / self.alpha * self.ts
-    }
-
-    /// One line for the user: α, RC, RC/Ts and the lag, then the warning if any.
-    pub fn describe(&self) -> String {
-        let line = format!(
-            "α = {:.4}, RC = {:.4} s, RC/Ts = {:.4}; the filter delays the output by RC = {:.4} s",
-            self.alpha,
-            self.rc,
-            self.ratio(),
-            self.lag()
-        );
-        match self.warning() {
-            Some(w) => format!("{line}. Warning: {w}"),
-            None => line,
-        }
     }
 
     /// The filtered signal, started at the first sample.
@@ -370,13 +351,12 @@ mod tests {
         assert_eq!(round4(f.rc), 0.2653);
         assert_eq!(round4(f.alpha), 0.1505);
         assert_eq!(round4(f.ratio()), 5.6438);
-        assert_eq!(f.warning(), None);
+        assert!(!f.too_coarse());
         // Ts = 0.094 → alpha = 0.2617, RC/Ts = 2.8219 (esperado >= 5) and a warning.
         let f = Ewma::new(0.6, 0.094);
         assert_eq!(round4(f.alpha), 0.2617);
         assert_eq!(round4(f.ratio()), 2.8219);
-        let w = f.warning().expect("Ts > RC/5 warns");
-        assert!(w.contains("2.8219") && w.contains("expected ≥ 5"), "{w}");
+        assert!(f.too_coarse());
         // The notes' other example: fc = 5 Hz, Ts = 1 ms → alpha = 0.0305, RC/Ts = 31.8310.
         let f = Ewma::new(5.0, 1e-3);
         assert_eq!((round4(f.alpha), round4(f.ratio())), (0.0305, 31.831));
@@ -481,12 +461,15 @@ mod tests {
         assert_eq!(w.output.len(), 277);
         assert_eq!((w.output[0], w.output[276]), (37.0, 313.0));
         assert_eq!(w.time[0], test.time[36]);
-        assert!(
-            w.notes
-                .last()
-                .unwrap()
-                .contains("kept samples 37 to 313 of 384")
-        );
+        assert!(matches!(
+            w.notes.last(),
+            Some(DataNote::Window {
+                first: 37,
+                last: 313,
+                count: 384,
+                ..
+            })
+        ));
         assert!(apply_window(&test, Window::Samples { first: 0, last: 3 }).is_err());
         assert!(
             apply_window(

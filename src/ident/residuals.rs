@@ -43,17 +43,6 @@ pub enum RegionKind {
     Tail,
 }
 
-impl RegionKind {
-    /// The region's name, for people.
-    pub fn name(self) -> &'static str {
-        match self {
-            RegionKind::BeforeResponse => "before the response",
-            RegionKind::Transient => "transient",
-            RegionKind::Tail => "tail",
-        }
-    }
-}
-
 /// Statistics of the residuals in one region of the record.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Region {

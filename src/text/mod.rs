@@ -15,7 +15,10 @@
 
 use serde::{Deserialize, Serialize};
 
+pub mod cli;
 pub mod code;
+pub mod ident;
+pub mod report;
 pub mod step;
 
 /// A language the app and the CLI speak.
@@ -164,6 +167,9 @@ pub fn every_message() -> Vec<Message> {
     all.extend(crate::app::field::FieldPhrase::messages());
     all.extend(crate::app::field::examples());
     all.extend(step::messages());
+    all.extend(ident::messages());
+    all.extend(report::messages());
+    all.extend(cli::messages());
     all
 }
 
