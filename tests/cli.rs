@@ -204,15 +204,15 @@ fn human_output_names_every_metric() {
     assert!(output.status.success(), "{}", stderr(&output));
     let text = stdout(&output);
     for words in [
-        "rise time",
-        "settling time",
-        "overshoot",
-        "undershoot",
-        "peak",
-        "peak time",
-        "steady state",
-        "settling min",
-        "settling max",
+        "Rise time",
+        "Settling time",
+        "Overshoot",
+        "Undershoot",
+        "Peak",
+        "Peak time",
+        "Steady state",
+        "Settling min",
+        "Settling max",
         "s^3 + 7 s^2 + 15 s + 25",
         "y(t) = 1/25 − (3/100)e^{−t}[cos 2t + (4/3) sin 2t] − e^{−5t}/100",
         "y(t) = 1/25 − (1/20)e^{−t} sin(2t + 36.87°) − e^{−5t}/100",
@@ -226,11 +226,15 @@ fn human_output_says_why_a_metric_is_missing() {
     let output = degrau(&["step", "--num", "1", "--den", "1,1,0"]);
     let text = stdout(&output);
     assert!(
-        text.contains("settling time  does not exist because the response does not settle"),
+        text.contains("Settling time  none: does not settle: it ramps (integrator)"),
         "{text}"
     );
     let output = degrau(&["step", "--num", "5", "--den", "1,5"]);
-    assert!(stdout(&output).contains("peak time      none: monotone response"));
+    assert!(
+        stdout(&output).contains("Peak time      none: monotone, the peak is the final value"),
+        "{}",
+        stdout(&output)
+    );
 }
 
 #[test]

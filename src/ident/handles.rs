@@ -19,28 +19,16 @@ pub enum Handle {
 }
 
 impl Handle {
-    /// The accessible label of the handle.
+    /// The accessible label of the handle, in English (kept for the app's accessibility
+    /// tree; `crate::text::ident::handle_label` says it in either language).
     pub fn label(self) -> &'static str {
-        match self {
-            Handle::FinalValue => "final value handle",
-            Handle::DeadTime => "dead time handle",
-            Handle::TimeConstant => "time constant handle",
-            Handle::FirstPeak => "first peak handle",
-        }
+        crate::text::ident::handle_label(self, crate::text::Lang::En)
     }
 
-    /// What dragging it changes, for a tooltip.
+    /// What dragging it changes, for a tooltip, in English (`crate::text::ident::handle_help`
+    /// says it in either language).
     pub fn help(self) -> &'static str {
-        match self {
-            Handle::FinalValue => "Drag up or down: the final value sets the static gain Kp.",
-            Handle::DeadTime => {
-                "Drag left or right: where the response starts sets the dead time Td."
-            }
-            Handle::TimeConstant => "Drag left or right: the 63.2 % time sets the time constants.",
-            Handle::FirstPeak => {
-                "Drag: the peak's height sets ζ (overshoot), its time sets ωd (peak time)."
-            }
-        }
+        crate::text::ident::handle_help(self, crate::text::Lang::En)
     }
 }
 

@@ -455,15 +455,21 @@ fn cli_error_id(e: &CliError) -> &'static str {
 #[cfg(test)]
 const CLI_ERROR_VARIANTS: usize = 31;
 
-/// Every message of the command line, for the test of both languages. `Options` carries
-/// `crate::lti`'s words as they are, so its example is left out.
+/// Every message of the command line, for the test of both languages. `Options`, `Parse`
+/// and `Lti` carry `crate::lti`'s words (its own catalogue lists them), so their examples
+/// are left out.
 pub fn messages() -> Vec<Message> {
     let mut all = StepPhrase::messages();
     all.extend(Heading::messages());
     all.extend(
         cli_errors()
             .iter()
-            .filter(|e| !matches!(e, CliError::Options(_)))
+            .filter(|e| {
+                !matches!(
+                    e,
+                    CliError::Options(_) | CliError::Parse { .. } | CliError::Lti(_)
+                )
+            })
             .map(|e| Message::of(format!("cli::CliError::{}", cli_error_id(e)), e)),
     );
     for e in [

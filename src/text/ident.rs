@@ -14,6 +14,7 @@ use crate::ident::data::{
 use crate::ident::diagnose::{Bias, Cause, Ending, Evidence, Verdict, Whiteness};
 use crate::ident::experiment::ExperimentError;
 use crate::ident::fit::{FitError, FitWarning, Termination};
+use crate::ident::handles::Handle;
 use crate::ident::models::{ModelError, Param, Requirement, Structure};
 use crate::ident::prepare::{Ewma, PrepareError};
 use crate::lti::LtiError;
@@ -1111,6 +1112,46 @@ impl Localize for Ewma {
 }
 
 // ---------------------------------------------------------------------------------------
+// The guess handles
+
+/// The accessible label of a guess handle ("dead time handle").
+pub fn handle_label(h: Handle, lang: Lang) -> &'static str {
+    let (en, pt) = match h {
+        Handle::FinalValue => ("final value handle", "alça do valor final"),
+        Handle::DeadTime => ("dead time handle", "alça do tempo morto"),
+        Handle::TimeConstant => ("time constant handle", "alça da constante de tempo"),
+        Handle::FirstPeak => ("first peak handle", "alça do primeiro pico"),
+    };
+    lang.pick(en, pt)
+}
+
+/// What dragging a guess handle changes, for a tooltip.
+pub fn handle_help(h: Handle, lang: Lang) -> &'static str {
+    let (en, pt) = match h {
+        Handle::FinalValue => (
+            "Drag up or down: the final value sets the static gain Kp.",
+            "Arraste para cima ou para baixo: o valor final define o ganho estático Kp.",
+        ),
+        Handle::DeadTime => (
+            "Drag left or right: where the response starts sets the dead time Td.",
+            "Arraste para a esquerda ou a direita: onde a resposta começa define o tempo morto \
+             Td.",
+        ),
+        Handle::TimeConstant => (
+            "Drag left or right: the 63.2 % time sets the time constants.",
+            "Arraste para a esquerda ou a direita: o instante de 63,2 % define as constantes de \
+             tempo.",
+        ),
+        Handle::FirstPeak => (
+            "Drag: the peak's height sets ζ (overshoot), its time sets ωd (peak time).",
+            "Arraste: a altura do pico define ζ (sobressinal), seu instante define ωd (tempo de \
+             pico).",
+        ),
+    };
+    lang.pick(en, pt)
+}
+
+// ---------------------------------------------------------------------------------------
 // The diagnosis: causes, remedies, evidence, verdict
 
 impl Localize for Cause {
@@ -1901,6 +1942,26 @@ pub fn messages() -> Vec<Message> {
     for c in causes {
         all.push(Message::of(format!("ident::Cause::{c:?}"), &c));
         all.push(Message::of(format!("ident::Remedy::{c:?}"), &Remedy(c)));
+    }
+    for h in [
+        Handle::FinalValue,
+        Handle::DeadTime,
+        Handle::TimeConstant,
+        Handle::FirstPeak,
+    ] {
+        all.push(Message {
+            id: format!("ident::Handle::{h:?}"),
+            en: format!(
+                "{} / {}",
+                handle_label(h, Lang::En),
+                handle_help(h, Lang::En)
+            ),
+            pt: format!(
+                "{} / {}",
+                handle_label(h, Lang::Pt),
+                handle_help(h, Lang::Pt)
+            ),
+        });
     }
     for p in crate::ident::models::ALL_PARAMS {
         all.push(Message::of(format!("ident::Param::{p:?}"), &Meaning(p)));

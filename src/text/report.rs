@@ -16,13 +16,15 @@ use super::{Lang, Localize, Message};
 /// Columns of the chain table.
 pub const CHAIN_COLUMNS: usize = 5;
 
+/// The header of the chain table's Kp column: the same symbols in both languages.
+pub const KP_INTERVAL: &str = "Kp ± 95 %";
+
 crate::phrases! {
     /// The fixed words of the fit and chain texts.
     pub enum ReportPhrase {
         Model => ("Model", "Modelo"),
         FitPercent => ("Fit %", "Ajuste %"),
         BicChange => ("BIC change", "Variação do BIC"),
-        KpInterval => ("Kp ± 95 %", "Kp ± 95 %"),
         Parameter => ("Parameter", "Parâmetro"),
         Value => ("Value", "Valor"),
         Interval => ("95 % interval", "Intervalo de 95 %"),
@@ -52,7 +54,7 @@ pub fn chain_header(lang: Lang) -> [String; CHAIN_COLUMNS] {
         "RMSE".to_string(),
         ReportPhrase::FitPercent.get(lang).to_string(),
         ReportPhrase::BicChange.get(lang).to_string(),
-        ReportPhrase::KpInterval.get(lang).to_string(),
+        KP_INTERVAL.to_string(),
     ]
 }
 
