@@ -1798,19 +1798,8 @@ fn evidence() -> Vec<Evidence> {
     ]
 }
 
-/// Examples of every variant, one message each, with its id.
-fn examples<T: Localize>(kind: &str, all: Vec<T>, id: fn(&T) -> &'static str) -> Vec<Message> {
-    all.iter()
-        .map(|x| Message::of(format!("ident::{kind}::{}", id(x)), x))
-        .collect()
-}
-
-/// Every message of this module: an example of every variant of every fact.
-pub fn messages() -> Vec<Message> {
-    let mut all = examples("DataNote", data_notes(), data_note_id);
-    all.extend(examples("DataError", data_errors(), data_error_id));
-    all.extend(examples("Evidence", evidence(), evidence_id));
-    let prepare = [
+fn prepare_errors() -> Vec<PrepareError> {
+    vec![
         PrepareError::BadRange {
             first: 0,
             last: 3,
@@ -1823,13 +1812,11 @@ pub fn messages() -> Vec<Message> {
         },
         PrepareError::BadCutoff(0.0),
         PrepareError::BadSamplingPeriod(0.0),
-    ];
-    all.extend(
-        prepare
-            .iter()
-            .map(|e| Message::of(format!("ident::{e:?}"), e)),
-    );
-    let model = [
+    ]
+}
+
+fn model_errors() -> Vec<ModelError> {
+    vec![
         ModelError::BadCode("Q3".into()),
         ModelError::UnderdampedNeedsTwoPoles("P1U".into()),
         ModelError::BadValue {
@@ -1840,25 +1827,11 @@ pub fn messages() -> Vec<Message> {
         ModelError::Overflow,
         ModelError::NotInModel("Tz"),
         ModelError::System(LtiError::NoPoles),
-    ];
-    all.extend(
-        model
-            .iter()
-            .map(|e| Message::of(format!("ident::{e:?}"), e)),
-    );
-    let requirements = [
-        Requirement::Finite,
-        Requirement::Positive,
-        Requirement::NotNegative,
-        Requirement::NotZero,
-        Requirement::DelayNotNegative,
-    ];
-    all.extend(
-        requirements
-            .iter()
-            .map(|r| Message::of(format!("ident::Requirement::{r:?}"), r)),
-    );
-    let fit = [
+    ]
+}
+
+fn fit_errors() -> Vec<FitError> {
+    vec![
         FitError::TooFewSamples { n: 2, p: 4 },
         FitError::BadStep(0.0),
         FitError::BadGuess(ModelError::NotInModel("Tz")),
@@ -1869,28 +1842,21 @@ pub fn messages() -> Vec<Message> {
             param: "Kp",
             log10: 320.4,
         },
-    ];
-    all.extend(fit.iter().map(|e| Message::of(format!("ident::{e:?}"), e)));
-    let experiment = [
+    ]
+}
+
+fn experiment_errors() -> Vec<ExperimentError> {
+    vec![
         ExperimentError::NoStep,
         ExperimentError::BadStep(0.0),
         ExperimentError::Prepare(PrepareError::BadCutoff(-1.0)),
         ExperimentError::Model(ModelError::Overflow),
         ExperimentError::Fit(FitError::NonFiniteCost),
-    ];
-    all.extend(
-        experiment
-            .iter()
-            .map(|e| Message::of(format!("ident::{e:?}"), e)),
-    );
-    for place in [Where::Cli, Where::App] {
-        all.push(Message {
-            id: format!("ident::ExperimentError::NoStep::{place:?}"),
-            en: experiment_error(&ExperimentError::NoStep, Lang::En, place),
-            pt: experiment_error(&ExperimentError::NoStep, Lang::Pt, place),
-        });
-    }
-    let warnings = [
+    ]
+}
+
+fn fit_warnings() -> Vec<FitWarning> {
+    vec![
         FitWarning::AtBound {
             param: "Td".into(),
             bound: 0.0,
@@ -1909,12 +1875,105 @@ pub fn messages() -> Vec<Message> {
             statistic: "MSE".into(),
             log10: 600.3,
         },
+    ]
+}
+
+fn prepare_error_id(e: &PrepareError) -> &'static str {
+    match e {
+        PrepareError::BadRange { .. } => "BadRange",
+        PrepareError::TooFewInWindow { .. } => "TooFewInWindow",
+        PrepareError::BadTimeRange { .. } => "BadTimeRange",
+        PrepareError::BadCutoff(_) => "BadCutoff",
+        PrepareError::BadSamplingPeriod(_) => "BadSamplingPeriod",
+    }
+}
+
+fn model_error_id(e: &ModelError) -> &'static str {
+    match e {
+        ModelError::BadCode(_) => "BadCode",
+        ModelError::UnderdampedNeedsTwoPoles(_) => "UnderdampedNeedsTwoPoles",
+        ModelError::BadValue { .. } => "BadValue",
+        ModelError::Overflow => "Overflow",
+        ModelError::NotInModel(_) => "NotInModel",
+        ModelError::System(_) => "System",
+    }
+}
+
+fn fit_error_id(e: &FitError) -> &'static str {
+    match e {
+        FitError::TooFewSamples { .. } => "TooFewSamples",
+        FitError::BadStep(_) => "BadStep",
+        FitError::BadGuess(_) => "BadGuess",
+        FitError::NonFiniteData => "NonFiniteData",
+        FitError::BadStepTime(_) => "BadStepTime",
+        FitError::NonFiniteCost => "NonFiniteCost",
+        FitError::Unrepresentable { .. } => "Unrepresentable",
+    }
+}
+
+fn experiment_error_id(e: &ExperimentError) -> &'static str {
+    match e {
+        ExperimentError::NoStep => "NoStep",
+        ExperimentError::BadStep(_) => "BadStep",
+        ExperimentError::Prepare(_) => "Prepare",
+        ExperimentError::Model(_) => "Model",
+        ExperimentError::Fit(_) => "Fit",
+    }
+}
+
+fn fit_warning_id(w: &FitWarning) -> &'static str {
+    match w {
+        FitWarning::AtBound { .. } => "AtBound",
+        FitWarning::OverdampedUnderdamped { .. } => "OverdampedUnderdamped",
+        FitWarning::Alias { .. } => "Alias",
+        FitWarning::NotIdentifiable { .. } => "NotIdentifiable",
+        FitWarning::CombinationNotIdentifiable => "CombinationNotIdentifiable",
+        FitWarning::NotConverged => "NotConverged",
+        FitWarning::NoImprovement => "NoImprovement",
+        FitWarning::Unrepresentable { .. } => "Unrepresentable",
+    }
+}
+
+/// Examples of every variant, one message each, with its id.
+fn examples<T: Localize>(kind: &str, all: Vec<T>, id: fn(&T) -> &'static str) -> Vec<Message> {
+    all.iter()
+        .map(|x| Message::of(format!("ident::{kind}::{}", id(x)), x))
+        .collect()
+}
+
+/// Every message of this module: an example of every variant of every fact.
+pub fn messages() -> Vec<Message> {
+    let mut all = examples("DataNote", data_notes(), data_note_id);
+    all.extend(examples("DataError", data_errors(), data_error_id));
+    all.extend(examples("Evidence", evidence(), evidence_id));
+    all.extend(examples("PrepareError", prepare_errors(), prepare_error_id));
+    all.extend(examples("ModelError", model_errors(), model_error_id));
+    all.extend(examples("FitError", fit_errors(), fit_error_id));
+    all.extend(examples(
+        "ExperimentError",
+        experiment_errors(),
+        experiment_error_id,
+    ));
+    all.extend(examples("FitWarning", fit_warnings(), fit_warning_id));
+    let requirements = [
+        Requirement::Finite,
+        Requirement::Positive,
+        Requirement::NotNegative,
+        Requirement::NotZero,
+        Requirement::DelayNotNegative,
     ];
     all.extend(
-        warnings
+        requirements
             .iter()
-            .map(|w| Message::of(format!("ident::{w:?}"), w)),
+            .map(|r| Message::of(format!("ident::Requirement::{r:?}"), r)),
     );
+    for place in [Where::Cli, Where::App] {
+        all.push(Message {
+            id: format!("ident::ExperimentError::NoStep::{place:?}"),
+            en: experiment_error(&ExperimentError::NoStep, Lang::En, place),
+            pt: experiment_error(&ExperimentError::NoStep, Lang::Pt, place),
+        });
+    }
     let terminations = [
         Termination::Gradient,
         Termination::SmallStep,
@@ -2031,6 +2090,11 @@ mod tests {
         assert_eq!(distinct(&data_notes(), data_note_id), DATA_NOTE_VARIANTS);
         assert_eq!(distinct(&data_errors(), data_error_id), DATA_ERROR_VARIANTS);
         assert_eq!(distinct(&evidence(), evidence_id), EVIDENCE_VARIANTS);
+        assert_eq!(distinct(&prepare_errors(), prepare_error_id), 5);
+        assert_eq!(distinct(&model_errors(), model_error_id), 6);
+        assert_eq!(distinct(&fit_errors(), fit_error_id), 7);
+        assert_eq!(distinct(&experiment_errors(), experiment_error_id), 5);
+        assert_eq!(distinct(&fit_warnings(), fit_warning_id), 8);
     }
 
     #[test]

@@ -400,6 +400,72 @@ mod tests {
         assert_eq!(en.lines().count(), pt.lines().count());
     }
 
+    fn chain() -> DiagnoseReport {
+        use crate::ident::diagnose::{Bias, Cause, Ending, Evidence, Gain, Verdict};
+        let start = report();
+        let mut end = report();
+        end.rmse = 0.05;
+        let step = Step {
+            cause: Cause::DeadTime,
+            evidence: Evidence::DeadTime {
+                bias: Bias {
+                    start: 5.0,
+                    end: 6.759,
+                    n: 2,
+                    mean: -0.8786,
+                    same_sign: 1.0,
+                },
+                td: 1.759,
+            },
+            interval: Some((5.0, 6.759)),
+            gain: Gain {
+                rmse_before: start.rmse,
+                rmse_after: end.rmse,
+                rmse_ratio: start.rmse / end.rmse,
+                fit_percent_before: 51.65,
+                fit_percent_after: 87.51,
+                criterion_delta: -91.18,
+            },
+            fit: end.clone(),
+        };
+        DiagnoseReport {
+            start,
+            steps: vec![step],
+            final_fit: end,
+            adequate: true,
+            verdict: Some(Verdict {
+                ending: Ending::Adequate,
+                whiteness: None,
+            }),
+            static_gain: (1.0021, Some((0.98647, 1.0178))),
+        }
+    }
+
+    #[test]
+    fn the_chain_table_is_one_row_per_model_in_either_language() {
+        let d = chain();
+        let (head, rows) = chain_rows(&d, Lang::Pt);
+        assert_eq!(head[0], "Modelo");
+        assert_eq!(rows.len(), 2);
+        assert_eq!(rows[0][3], "", "the start has no BIC change");
+        assert_eq!(rows[1][3], "-91,18");
+        // Kp 1.0021 with its interval ±0.01: four digits, then two for the half-width.
+        assert_eq!(rows[1][4], "1,002 ± 0,01");
+        let en = chain_text(&d, Lang::En);
+        assert!(
+            en.starts_with("Model\tRMSE\tFit %\tBIC change\tKp ± 95 %\n"),
+            "{en}"
+        );
+        assert_eq!(en.lines().count(), 3);
+        let text = diagnose_text(&d, Lang::Pt);
+        assert!(
+            text.contains("1. dead_time: O modelo se move antes dos dados"),
+            "{text}"
+        );
+        assert!(text.contains("Adequado:"), "{text}");
+        assert!(text.contains("95 % [0,98647; 1,0178]"), "{text}");
+    }
+
     #[test]
     fn a_parameter_interval_keeps_its_two_numbers_apart() {
         let (_, rows) = param_rows(&report(), Lang::Pt);
