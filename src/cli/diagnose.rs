@@ -178,5 +178,5 @@ pub fn human(r: &DiagnoseReport) -> String {
 }
 
 fn fmt(x: f64) -> String {
-    crate::format::sig(x, 5)
+    crate::lti::number::sig(x, 5)
 }

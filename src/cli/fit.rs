@@ -438,7 +438,7 @@ pub fn human_fit(r: &FitReport) -> String {
 }
 
 fn fmt(x: f64) -> String {
-    crate::format::sig(x, 6)
+    crate::lti::number::sig(x, 6)
 }
 
 #[cfg(test)]

@@ -496,7 +496,7 @@ fn interval_stats(data: &FitData, r: &[f64], (a, b): (f64, f64)) -> (usize, f64,
 }
 
 fn num(x: f64) -> String {
-    crate::format::sig(x, 4)
+    crate::lti::number::sig(x, 4)
 }
 
 /// The evidence for a cause: which statistic over which interval, in words.

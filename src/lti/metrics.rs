@@ -134,7 +134,7 @@ impl StepInfo {
                 Self::from_pieces(&pieces, 0.0, y_final, options)
             }
             Behaviour::Oscillating => {
-                let pieces = LtiPieces::new(response, Some(response.rational_horizon()));
+                let pieces = LtiPieces::new(response, Some(response.rational_horizon(0.0)));
                 let mut info = Self::not_settling(0.0, Behaviour::Oscillating);
                 if let Some((tau, y)) = largest_deviation(pieces.breakpoints(), 0.0) {
                     info.peak = Some(y.abs());

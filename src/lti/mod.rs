@@ -1,17 +1,25 @@
 //! Continuous-time linear time-invariant systems, exactly: polynomials and their roots,
 //! transfer functions with an optional transport delay, the closed-form step response,
-//! the step metrics of MATLAB's `stepinfo`, and the text of y(t) as the course notes write it.
+//! the step metrics of MATLAB's `stepinfo` and the window that shows them ([`analyse`]), and
+//! the text of y(t) as the course notes write it.
+//!
+//! Its modules depend on each other in one direction: [`number`] (numbers as text) is a
+//! leaf; [`response`] knows nothing of the metrics; [`metrics`] reads the response;
+//! [`analysis`] puts the metrics and the window together.
 //!
 //! Pure math: nothing here knows about the GUI or the command line.
 
+pub mod analysis;
 pub mod divided;
 pub mod expr;
 pub mod metrics;
+pub mod number;
 pub mod parse;
 pub mod poly;
 pub mod response;
 pub mod tf;
 
+pub use analysis::{StepAnalysis, analyse};
 pub use metrics::{StepInfo, StepInfoOptions};
 pub use poly::C64;
 pub use response::{Behaviour, StepResponse};

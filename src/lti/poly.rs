@@ -442,7 +442,7 @@ pub fn format_poly(coeffs: &[f64]) -> String {
         }
         let show_number = magnitude != 1.0 || power == 0;
         if show_number {
-            out.push_str(&super::expr::format_number(magnitude));
+            out.push_str(&super::number::format_number(magnitude));
         }
         match power {
             0 => {}

@@ -59,7 +59,7 @@ impl Lang {
     /// `x` with `digits` significant digits and this language's decimal separator
     /// (`Lang::Pt.num(0.773201, 4) == "0,7732"`). Code, JSON and CSV never use this.
     pub fn num(self, x: f64, digits: i32) -> String {
-        self.localize_number(&crate::format::sig(x, digits))
+        self.localize_number(&crate::lti::number::sig(x, digits))
     }
 
     /// A number already written with a decimal point, with this language's separator.
