@@ -21,10 +21,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::LtiError;
 use super::divided;
 use super::poly::C64;
 use super::tf::TransferFunction;
+use super::{LtiError, Quantity};
 
 /// Poles this close (relative to the larger modulus) always form one cluster.
 pub const MERGE_RELATIVE: f64 = 1e-2;
@@ -245,7 +245,7 @@ impl StepResponse {
         let clusters = partial_fractions(&poles, tf.zeros(), amplitude * tf.gain());
         if amplitude.is_subnormal() {
             return Err(LtiError::Subnormal {
-                what: "the step amplitude".into(),
+                what: Quantity::StepAmplitude,
                 value: amplitude,
             });
         }
@@ -627,9 +627,9 @@ fn check_representable(
     if lost || !scale.is_normal() {
         return Err(LtiError::Underflow {
             what: if lost {
-                "the final value A·G(0)".into()
+                Quantity::FinalValue
             } else {
-                "the product A·k of the step amplitude and the gain".into()
+                Quantity::AmplitudeTimesGain
             },
             value: if lost { value } else { scale },
         });

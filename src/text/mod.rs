@@ -16,6 +16,8 @@
 use serde::{Deserialize, Serialize};
 
 pub mod code;
+pub mod lti;
+pub mod operating_point;
 pub mod step;
 
 /// A language the app and the CLI speak.
@@ -164,6 +166,8 @@ pub fn every_message() -> Vec<Message> {
     all.extend(crate::app::field::FieldPhrase::messages());
     all.extend(crate::app::field::examples());
     all.extend(step::messages());
+    all.extend(lti::messages());
+    all.extend(operating_point::messages());
     all
 }
 
