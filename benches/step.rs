@@ -4,17 +4,15 @@
 //! mixed with real poles, a zero at −2 from order 2 on, scaled to a static gain of 1.
 //! - `metrics`: `StepResponse::new` + `StepInfo::of_response` (targets: ≤ 50 µs up to
 //!   order 8);
-//! - `metrics+curve`: the same plus 2000 samples of y over the plotting horizon
-//!   (target: ≤ 200 µs) over [0, 1.5 × settling time] (1.2 × peak time if later), the
-//!   window `auto_horizon` shows, taken from the metrics just computed (`auto_horizon`
-//!   itself would compute them a second time).
+//! - `metrics+curve`: `StepResponse::new` + `analyse` (the metrics and their window, the
+//!   metrics computed once) plus 2000 samples of y over that window (target: ≤ 200 µs).
 //!
 //! Run: `cargo bench --bench step -- --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use degrau::lti::{C64, StepInfo, StepInfoOptions, StepResponse, TransferFunction};
+use degrau::lti::{C64, StepInfo, StepInfoOptions, StepResponse, TransferFunction, analyse};
 
 /// Lightly damped pairs first, then well damped ones.
 const PAIRS: [(f64, f64); 4] = [(-0.5, 3.0), (-1.0, 6.0), (-0.3, 9.0), (-2.0, 1.5)];
@@ -44,17 +42,8 @@ fn system(order: usize) -> TransferFunction {
         .expect("a valid benchmark system")
 }
 
-fn metrics(g: &TransferFunction, options: &StepInfoOptions) -> (StepResponse, StepInfo) {
-    let r = StepResponse::new(g, 1.0).expect("a valid response");
-    let info = StepInfo::of_response(&r, options);
-    (r, info)
-}
-
-/// The plotting window of a settling response, from metrics already computed.
-fn horizon(r: &StepResponse, info: &StepInfo) -> f64 {
-    let settle = info.settling_time.unwrap_or(0.0) - r.delay();
-    let peak = info.peak_time.map_or(0.0, |t| t - r.delay());
-    r.delay() + (1.5 * settle).max(1.2 * peak)
+fn response(g: &TransferFunction) -> StepResponse {
+    StepResponse::new(g, 1.0).expect("a valid response")
 }
 
 fn bench_step(c: &mut Criterion) {
@@ -64,7 +53,7 @@ fn bench_step(c: &mut Criterion) {
     let mut group = c.benchmark_group("metrics");
     for (order, g) in &systems {
         group.bench_with_input(BenchmarkId::from_parameter(order), g, |b, g| {
-            b.iter(|| metrics(black_box(g), &options).1)
+            b.iter(|| StepInfo::of_response(&response(black_box(g)), &options))
         });
     }
     group.finish();
@@ -73,9 +62,10 @@ fn bench_step(c: &mut Criterion) {
     for (order, g) in &systems {
         group.bench_with_input(BenchmarkId::from_parameter(order), g, |b, g| {
             b.iter(|| {
-                let (r, info) = metrics(black_box(g), &options);
-                let curve = r.sample_uniform(0.0, horizon(&r, &info), 2000);
-                (info, curve)
+                let r = response(black_box(g));
+                let analysis = analyse(&r, &options);
+                let curve = r.sample_uniform(0.0, analysis.horizon, 2000);
+                (analysis.info, curve)
             })
         });
     }

@@ -8,7 +8,6 @@
 
 pub mod app;
 pub mod cli;
-pub mod format;
 pub mod ident;
 pub mod lti;
 pub mod text;

@@ -12,7 +12,7 @@ use degrau::lti::expr::{OscillationForm, expression};
 use degrau::lti::response::Derivative;
 use degrau::lti::tf::Stability;
 use degrau::lti::{
-    Behaviour, C64, LtiError, StepInfo, StepInfoOptions, StepResponse, TransferFunction,
+    Behaviour, C64, LtiError, Polynomial, StepInfo, StepInfoOptions, StepResponse, TransferFunction,
 };
 
 // ---------------------------------------------------------------------------------------
@@ -983,7 +983,7 @@ fn degenerate_inputs_give_clear_errors() {
     assert!(matches!(
         TransferFunction::from_coeffs(&[1.0], &[1.0, f64::NAN]),
         Err(LtiError::NonFiniteCoefficient {
-            what: "denominator",
+            what: Polynomial::Denominator,
             ..
         })
     ));

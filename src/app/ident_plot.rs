@@ -8,10 +8,10 @@ use egui_plot::{HLine, Legend, Line, Plot, PlotPoint, Points, VLine};
 
 use crate::app::identify::IdentView;
 use crate::app::step_plot::{Markers, draw_step_markers};
-use crate::format::sig;
 use crate::ident::handles::{self, Handle};
 use crate::ident::models::Model;
 use crate::lti::StepInfoOptions;
+use crate::lti::number::sig;
 
 /// Pixels around a handle that grab it.
 const GRAB: f32 = 9.0;

@@ -9,12 +9,12 @@ use serde::{Deserialize, Serialize};
 
 use crate::app::job::Job;
 use crate::app::system_panel::finite_number;
-use crate::format::sig;
 use crate::ident::data::{self, LoadOptions, StepTest};
 use crate::ident::diagnose::{self, DiagnoseOptions, DiagnoseReport, Step};
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::{FitData, FitError, FitOptions, FitReport, Method, Progress, fit};
 use crate::ident::models::{Model, Param, Structure, Values, pair_poles};
+use crate::lti::number::sig;
 use crate::text::{Lang, Localize};
 
 /// The LECI step test of the course notes (`t, y`), shipped with the app.

@@ -6,10 +6,10 @@ use eframe::egui::{self, Color32, Ui};
 use egui_plot::{Heatmap, Line, MarkerShape, Plot, PlotPoint, Points};
 
 use crate::app::job::Job;
-use crate::format::sig;
 use crate::ident::fit::{FitData, FitReport};
 use crate::ident::landscape::{self, Axis, Landscape};
 use crate::ident::models::Param;
+use crate::lti::number::sig;
 
 /// Grid points per axis.
 const RESOLUTION: usize = 60;

@@ -5,8 +5,8 @@ use eframe::egui::{self, Ui};
 
 use crate::app::analysis::Analysis;
 use crate::app::step_plot::definitions;
-use crate::format::sig;
-use crate::lti::expr::format_number;
+use crate::lti::number::format_number;
+use crate::lti::number::sig;
 use crate::lti::{Behaviour, StepInfo};
 
 /// One row: name, definition (hover), and how to read the value from a `StepInfo`.

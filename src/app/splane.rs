@@ -9,8 +9,8 @@ use eframe::egui::{
 use serde::{Deserialize, Serialize};
 
 use crate::app::state::{ROOT_LIMIT, Root, RootId, RootKind, RootRole, System};
-use crate::format::sig;
-use crate::lti::expr::format_number;
+use crate::lti::number::format_number;
+use crate::lti::number::sig;
 
 /// Pixels around a handle that grab it.
 const HANDLE_RADIUS: f32 = 9.0;

@@ -125,10 +125,10 @@ impl Root {
 
     /// The `−1 ± 2j` text of the handle.
     pub fn label(&self) -> String {
-        let re = crate::lti::expr::format_number(self.re);
+        let re = crate::lti::number::format_number(self.re);
         match self.kind {
             RootKind::Real => re,
-            RootKind::Pair => format!("{re} ± {}j", crate::lti::expr::format_number(self.im)),
+            RootKind::Pair => format!("{re} ± {}j", crate::lti::number::format_number(self.im)),
         }
     }
 }

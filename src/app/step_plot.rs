@@ -12,9 +12,9 @@ use egui_plot::{
 use serde::{Deserialize, Serialize};
 
 use crate::app::analysis::Analysis;
-use crate::format::sig;
 use crate::lti::StepInfoOptions;
-use crate::lti::expr::format_number;
+use crate::lti::number::format_number;
+use crate::lti::number::sig;
 
 /// Which markers are drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

@@ -242,7 +242,7 @@ fn transfer_function(ui: &mut Ui, analysis: &Analysis) {
             ));
             let dc = tf.dc_gain();
             let dc_text = if dc.is_finite() {
-                crate::lti::expr::format_number(dc)
+                crate::lti::number::format_number(dc)
             } else {
                 "∞ (integrator)".into()
             };

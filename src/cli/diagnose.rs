@@ -63,7 +63,7 @@ struct DiagnoseJson {
 impl DiagnoseJson {
     fn new(r: &DiagnoseReport) -> Self {
         Self {
-            start: FitJson::new(&r.start),
+            start: FitJson::new(&r.start, None),
             steps: r
                 .steps
                 .iter()
@@ -71,11 +71,11 @@ impl DiagnoseJson {
                     cause: s.cause.id(),
                     evidence: s.evidence.text(Lang::En),
                     interval: s.interval.map(|(a, b)| [a, b]),
-                    fit: FitJson::new(&s.fit),
+                    fit: FitJson::new(&s.fit, None),
                     gain: s.gain,
                 })
                 .collect(),
-            final_fit: FitJson::new(&r.final_fit),
+            final_fit: FitJson::new(&r.final_fit, None),
             adequate: r.adequate,
             verdict: r.verdict.map_or(String::new(), |v| v.text(Lang::En)),
             static_gain: StaticGainJson {

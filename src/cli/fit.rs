@@ -10,10 +10,10 @@ use clap::{Args, ValueEnum};
 use serde::Serialize;
 
 use crate::ident::data::{self, LoadOptions, StepTest};
-use crate::ident::experiment::{Experiment, Offset};
+use crate::ident::experiment::{Experiment, Offset, OperatingPoint};
 use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
 use crate::ident::models::{Param, Structure};
-use crate::text::Lang;
+use crate::text::{Lang, Localize};
 
 use super::{CliError, finite_f64};
 
@@ -48,7 +48,10 @@ pub struct DataArgs {
     /// The input before the record started, when the step is at the first sample.
     #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub initial_input: Option<f64>,
-    /// Operating point y0: auto (mean before the step, else estimated), free, or a value.
+    /// Operating point Y0: auto (held at the output measured before the step: the mean of
+    /// the samples before t0, or the sample at t0 when the record starts with the step;
+    /// estimated only when no sample is at or before t0), free (estimated with the other
+    /// parameters), or a value to hold it at.
     #[arg(long, default_value = "auto", allow_hyphen_values = true)]
     pub y0: String,
     /// Keep only samples in this time range, e.g. 3.5,29.5.
@@ -285,10 +288,13 @@ pub struct FitJson {
     pub iterations: usize,
     pub termination: String,
     pub warnings: Vec<String>,
+    /// What was done with Y0 (`kind`: mean_before, at_step, given, estimated).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub operating_point: Option<OperatingPoint>,
 }
 
 impl FitJson {
-    pub fn new(report: &FitReport) -> Self {
+    pub fn new(report: &FitReport, operating_point: Option<OperatingPoint>) -> Self {
         let mut params = BTreeMap::new();
         let mut ci95 = BTreeMap::new();
         for e in &report.params {
@@ -320,6 +326,7 @@ impl FitJson {
                 .iter()
                 .map(|w| crate::text::Localize::text(w, Lang::En))
                 .collect(),
+            operating_point,
         }
     }
 }
@@ -363,17 +370,19 @@ pub fn run_fit(args: &FitArgs, lang: Lang) -> Result<(), CliError> {
         &args.options(),
         &mut (),
     )?;
+    let operating_point = experiment.operating_point_fact(&data);
     let mut out = io::stdout().lock();
     let written = if args.json {
-        serde_json::to_writer(&mut out, &FitJson::new(&report))
+        serde_json::to_writer(&mut out, &FitJson::new(&report, Some(operating_point)))
             .map_err(io::Error::other)
             .and_then(|()| writeln!(out))
     } else {
         writeln!(
             out,
             "{}",
-            crate::text::report::fit_lines(&report, lang).join("\n")
+            crate::text::report::fit_lines(&report, lang).join("\n"),
         )
+        .and_then(|()| writeln!(out, "{}", operating_point.text(lang)))
     };
     written
         .and_then(|()| out.flush())

@@ -22,12 +22,14 @@ use serde_json::Value;
 use crate::ident::data::DataError;
 use crate::ident::experiment::ExperimentError;
 use crate::ident::fit::FitError;
-use crate::lti::expr::{OscillationForm, expression, format_number};
+use crate::lti::expr::{OscillationForm, expression};
+use crate::lti::number::format_number;
 use crate::lti::parse::{ParseError, parse_complex_list, parse_real_list};
 use crate::lti::poly::format_poly;
 use crate::lti::tf::Stability;
 use crate::lti::{
-    Behaviour, C64, LtiError, StepInfo, StepInfoOptions, StepResponse, TransferFunction, fmt_c,
+    Behaviour, C64, LtiError, StepAnalysis, StepInfo, StepInfoOptions, StepResponse,
+    TransferFunction, analyse, fmt_c,
 };
 use crate::text::cli::{Heading, StepPhrase};
 use crate::text::step::Metric;
@@ -280,9 +282,9 @@ impl SystemSpec {
         let sample_count = self.samples.map(check_samples).transpose()?;
         let tf = self.transfer_function()?;
         let response = StepResponse::new(&tf, self.amplitude.unwrap_or(1.0))?;
-        let info = StepInfo::of_response(&response, options);
+        let StepAnalysis { info, horizon } = analyse(&response, options);
         let samples = sample_count.map(|n| {
-            let (t, y) = response.sample_uniform(0.0, response.auto_horizon(), n);
+            let (t, y) = response.sample_uniform(0.0, horizon, n);
             Samples { t, y }
         });
         Ok(Analysis {

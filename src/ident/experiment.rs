@@ -15,12 +15,50 @@ use super::prepare;
 /// What to do with the output before the step, y0 (procest's offset).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum Offset {
-    /// The mean of the samples before the step, held fixed; estimated when there are none.
+    /// Held at the measured level before the step (see [`super::guess::rest_level`]);
+    /// estimated only when no sample shows it.
     Auto,
     /// Estimated with the other parameters.
     Free,
     /// Held at this value.
     Fixed(f64),
+}
+
+/// What was done with Y0, and why: the fact the CLI and the app state next to a fit
+/// (words in [`crate::text::operating_point`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum OperatingPoint {
+    /// [`Offset::Auto`]: Y0 held at the mean of the `samples` samples before the step.
+    MeanBefore { y0: f64, samples: usize },
+    /// [`Offset::Auto`] on a record that starts with the step: Y0 held at the sample at
+    /// the step instant, where the output has not moved yet.
+    AtStep { y0: f64 },
+    /// [`Offset::Fixed`]: Y0 held at the value given.
+    Given { y0: f64 },
+    /// Y0 estimated with the other parameters.
+    Estimated { reason: EstimateReason },
+}
+
+/// Why Y0 is estimated rather than held.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EstimateReason {
+    /// [`Offset::Free`] asks for it.
+    Asked,
+    /// [`Offset::Auto`], but no sample is at or before the step instant (it comes before the
+    /// first sample kept).
+    NoSampleBeforeStep,
+}
+
+impl OperatingPoint {
+    /// The value Y0 is held at, `None` when it is estimated.
+    pub fn held(&self) -> Option<f64> {
+        match *self {
+            Self::MeanBefore { y0, .. } | Self::AtStep { y0 } | Self::Given { y0 } => Some(y0),
+            Self::Estimated { .. } => None,
+        }
+    }
 }
 
 /// Problems with the experiment's choices (`crate::text` says them; the CLI and the app
@@ -109,13 +147,30 @@ impl Experiment {
         })
     }
 
-    /// The operating point y0 when it is known (fixed or measured before the step).
-    pub fn operating_point(&self, data: &FitData) -> Option<f64> {
+    /// What the offset choice does with Y0 on `data`: held (at the level measured before
+    /// the step, or at the value given) or estimated, and why.
+    pub fn operating_point_fact(&self, data: &FitData) -> OperatingPoint {
         match self.offset {
-            Offset::Fixed(v) => Some(v),
-            Offset::Free => None,
-            Offset::Auto => super::guess::level_before(data),
+            Offset::Fixed(y0) => OperatingPoint::Given { y0 },
+            Offset::Free => OperatingPoint::Estimated {
+                reason: EstimateReason::Asked,
+            },
+            Offset::Auto => match super::guess::rest_level(data) {
+                Some(rest) if rest.at_step => OperatingPoint::AtStep { y0: rest.y0 },
+                Some(rest) => OperatingPoint::MeanBefore {
+                    y0: rest.y0,
+                    samples: rest.samples,
+                },
+                None => OperatingPoint::Estimated {
+                    reason: EstimateReason::NoSampleBeforeStep,
+                },
+            },
         }
+    }
+
+    /// The operating point y0 when it is held (given, or measured before the step).
+    pub fn operating_point(&self, data: &FitData) -> Option<f64> {
+        self.operating_point_fact(data).held()
     }
 
     /// The structure for `code`, Y0 free or held as the offset choice says.
@@ -133,8 +188,9 @@ impl Experiment {
 
     /// The automatic guess, with y0 held where it is known.
     pub fn guess(&self, structure: Structure, data: &FitData) -> Values {
-        let mut v = auto_guess(data, structure, self.operating_point(data));
-        if let Some(y0) = self.operating_point(data) {
+        let held = self.operating_point(data);
+        let mut v = auto_guess(data, structure, held);
+        if let Some(y0) = held {
             v.set(Param::Y0, y0);
         }
         v

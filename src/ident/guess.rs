@@ -36,16 +36,50 @@ pub struct CurveFeatures {
     pub period: Option<f64>,
 }
 
-/// Mean of y before the step, if there are samples before it.
+/// The output measured at rest, before the step changes it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RestLevel {
+    /// The mean of the samples at rest (output units).
+    pub y0: f64,
+    /// How many samples were averaged.
+    pub samples: usize,
+    /// True when the only sample is the one at the step instant t0 itself: the record
+    /// starts with the step, so none is before it.
+    pub at_step: bool,
+}
+
+/// The output at rest: the mean of the samples before t0, counted as
+/// [`super::prepare::samples_before`] counts them (a sample at t0 counts when the next one
+/// has the same time, the pre-step row of a log that writes the step instant twice), so the
+/// fit holds Y0 where the data panel says it is. When none is before t0 but the first sample
+/// is at t0 (a record that starts with the step, e.g. a heater switched on at the first
+/// row), that sample: t0 is the time of the first sample at the new input level, and at t0
+/// itself no process model's output has moved yet (y(t0) = Y0 for every structure, with or
+/// without dead time, all strictly proper). A sample at t0 is not used when samples before
+/// it exist: a step that came between two samples has already moved a fast output there.
+/// `None` when the data start after t0.
+pub fn rest_level(data: &FitData) -> Option<RestLevel> {
+    let (samples, at_step) = rest_samples(&data.times, data.setup.t0, data.y.len())?;
+    Some(RestLevel {
+        y0: mean(&data.y[..samples]),
+        samples,
+        at_step,
+    })
+}
+
+/// The level of [`rest_level`], if the data show one.
 pub fn level_before(data: &FitData) -> Option<f64> {
-    let before: Vec<f64> = data
-        .times
-        .iter()
-        .zip(&data.y)
-        .filter(|(t, _)| **t < data.setup.t0)
-        .map(|(_, y)| *y)
-        .collect();
-    (!before.is_empty()).then(|| mean(&before))
+    rest_level(data).map(|r| r.y0)
+}
+
+/// How many leading samples of `times` (of `n` outputs) are at rest before a step at `t0`,
+/// and whether the only one is the sample at t0 itself (the rule of [`rest_level`]).
+pub(crate) fn rest_samples(times: &[f64], t0: f64, n: usize) -> Option<(usize, bool)> {
+    match super::prepare::samples_before(times, t0).min(n) {
+        0 if times.first() == Some(&t0) && n > 0 => Some((1, true)),
+        0 => None,
+        k => Some((k, false)),
+    }
 }
 
 /// The mean, without overflow for values near the largest double.

@@ -107,10 +107,13 @@ pub fn samples_before(time: &[f64], t0: f64) -> usize {
         .count()
 }
 
-/// The operating point y0: the mean output before the step, `None` when there is no sample
-/// before it (the caller then estimates it or types it).
+/// The operating point y0: the output at rest before the step, by the rule of
+/// [`super::guess::rest_level`] (the mean of the samples before t0, or the sample at t0 when
+/// the record starts with the step); `None` when there is none (the caller then estimates it
+/// or types it).
 pub fn operating_point(test: &StepTest, t0: f64) -> Option<f64> {
-    mean(&test.output[..samples_before(&test.time, t0).min(test.output.len())])
+    let (samples, _) = super::guess::rest_samples(&test.time, t0, test.output.len())?;
+    mean(&test.output[..samples])
 }
 
 fn mean(v: &[f64]) -> Option<f64> {

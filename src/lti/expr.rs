@@ -9,6 +9,7 @@
 //! pole at its centre; when that form differs visibly from the exact y(t), the text says
 //! "≈", names the poles and states the largest difference.
 
+use super::number::format_number;
 use super::response::StepResponse;
 
 /// How oscillatory terms are written.
@@ -329,36 +330,6 @@ pub fn fraction(x: f64) -> Option<(i64, i64)> {
     None
 }
 
-/// A number for people: integers as integers, else 6 significant digits without trailing
-/// zeros, scientific notation for very large or small magnitudes.
-pub fn format_number(x: f64) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    if !x.is_finite() {
-        return format!("{x}");
-    }
-    if x == x.round() && x.abs() < 1e15 {
-        return format!("{}", x as i64);
-    }
-    let magnitude = x.abs().log10().floor() as i32;
-    if !(-4..9).contains(&magnitude) {
-        let text = format!("{x:.5e}");
-        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-        return format!("{}e{exponent}", trim_zeros(mantissa));
-    }
-    let decimals = (5 - magnitude).max(0) as usize;
-    trim_zeros(&format!("{x:.decimals$}"))
-}
-
-fn trim_zeros(s: &str) -> String {
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s.to_string()
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -427,9 +398,5 @@ mod tests {
         assert_eq!(fraction(0.04), Some((1, 25)));
         assert_eq!(fraction(4.0 / 3.0), Some((4, 3)));
         assert_eq!(fraction(std::f64::consts::PI), None);
-        assert_eq!(format_number(0.439444915467244), "0.439445");
-        assert_eq!(format_number(25.5), "25.5");
-        assert_eq!(format_number(1.5e-7), "1.5e-7");
-        assert_eq!(format_number(-3.0), "-3");
     }
 }

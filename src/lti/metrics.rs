@@ -34,6 +34,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::LtiError;
 use super::response::{Behaviour, Derivative, StepResponse};
 
 /// Excursions below this fraction of |Δ| are numerical noise, not overshoot.
@@ -63,24 +64,20 @@ impl Default for StepInfoOptions {
 
 impl StepInfoOptions {
     /// Checks that the thresholds make sense: 1e-9 ≤ band < 1 and 0 ≤ low < high ≤ 1.
-    pub fn validate(&self) -> Result<(), String> {
-        let (lo, hi) = self.rise_limits;
+    pub fn check(&self) -> Result<(), LtiError> {
+        let (low, high) = self.rise_limits;
         if !(self.settling_threshold >= MIN_SETTLING_THRESHOLD && self.settling_threshold < 1.0) {
-            return Err(format!(
-                "the settling band must be a fraction from {} up to 1 of the step's effect, \
-                 not {} (a narrower band is below what double precision resolves)",
-                super::exact(MIN_SETTLING_THRESHOLD),
-                super::exact(self.settling_threshold)
-            ));
+            return Err(LtiError::BadSettlingBand(self.settling_threshold));
         }
-        if !((0.0..1.0).contains(&lo) && lo < hi && hi <= 1.0) {
-            return Err(format!(
-                "the rise limits must be fractions with 0 ≤ low < high ≤ 1, not {} and {}",
-                super::exact(lo),
-                super::exact(hi)
-            ));
+        if !((0.0..1.0).contains(&low) && low < high && high <= 1.0) {
+            return Err(LtiError::BadRiseLimits { low, high });
         }
         Ok(())
+    }
+
+    /// [`StepInfoOptions::check`] with the refusal in English words.
+    pub fn validate(&self) -> Result<(), String> {
+        self.check().map_err(|e| e.to_string())
     }
 }
 
@@ -134,7 +131,7 @@ impl StepInfo {
                 Self::from_pieces(&pieces, 0.0, y_final, options)
             }
             Behaviour::Oscillating => {
-                let pieces = LtiPieces::new(response, Some(response.rational_horizon()));
+                let pieces = LtiPieces::new(response, Some(response.rational_horizon(0.0)));
                 let mut info = Self::not_settling(0.0, Behaviour::Oscillating);
                 if let Some((tau, y)) = largest_deviation(pieces.breakpoints(), 0.0) {
                     info.peak = Some(y.abs());

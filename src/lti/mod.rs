@@ -1,86 +1,120 @@
 //! Continuous-time linear time-invariant systems, exactly: polynomials and their roots,
 //! transfer functions with an optional transport delay, the closed-form step response,
-//! the step metrics of MATLAB's `stepinfo`, and the text of y(t) as the course notes write it.
+//! the step metrics of MATLAB's `stepinfo` and the window that shows them ([`analyse`]), and
+//! the text of y(t) as the course notes write it.
+//!
+//! Its modules depend on each other in one direction: [`number`] (numbers as text) is a
+//! leaf; [`response`] knows nothing of the metrics; [`metrics`] reads the response;
+//! [`analysis`] puts the metrics and the window together.
 //!
 //! Pure math: nothing here knows about the GUI or the command line.
 
+pub mod analysis;
 pub mod divided;
 pub mod expr;
 pub mod metrics;
+pub mod number;
 pub mod parse;
 pub mod poly;
 pub mod response;
 pub mod tf;
 
+pub use analysis::{StepAnalysis, analyse};
 pub use metrics::{StepInfo, StepInfoOptions};
 pub use poly::C64;
 pub use response::{Behaviour, StepResponse};
 pub use tf::TransferFunction;
 
-/// What can go wrong when a system is built or analysed, in words a student can act on.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+/// What can go wrong when a system is built or analysed: a typed fact, said in words (English
+/// and Portuguese) by [`crate::text::lti`]; its `Display` is the English text.
+#[derive(Debug, Clone, PartialEq)]
 pub enum LtiError {
-    #[error("the {what} has a coefficient that is not a finite number (position {index})")]
+    /// A coefficient is NaN or infinite.
     NonFiniteCoefficient {
-        what: &'static str,
+        what: Polynomial,
         /// Position of the coefficient, counted from 1 (the highest power first).
         index: usize,
     },
-    #[error("the {what} is zero: every coefficient is 0")]
-    ZeroPolynomial { what: &'static str },
-    #[error("{what} {index} is not a finite number")]
-    NonFiniteRoot { what: &'static str, index: usize },
-    #[error(
-        "the {what}s must come in conjugate pairs: {root} has no partner {conjugate}",
-        root = fmt_c(*.root),
-        conjugate = fmt_c(.root.conj())
-    )]
-    UnpairedComplexRoot { what: &'static str, root: C64 },
-    #[error(
-        "the system is improper: the numerator has degree {num_degree}, above the denominator's \
-         {den_degree}; it would respond to a step with an impulse"
-    )]
+    /// Every coefficient is 0.
+    ZeroPolynomial { what: Polynomial },
+    /// A pole or zero (counted from 1) is NaN or infinite.
+    NonFiniteRoot { what: RootRole, index: usize },
+    /// A complex root whose conjugate is missing.
+    UnpairedComplexRoot { what: RootRole, root: C64 },
+    /// More zeros than poles.
     Improper {
         num_degree: usize,
         den_degree: usize,
     },
-    #[error("the system has no poles: it is a pure gain, with no dynamics to analyse")]
+    /// No poles: a pure gain.
     NoPoles,
-    #[error("the gain is {0}: it must be a finite number other than zero")]
+    /// The gain (or the static gain asked for) is zero or not finite.
     BadGain(f64),
-    #[error("the transport delay is {0} s: it must be a finite number, zero or positive")]
+    /// The transport delay (s) is negative or not finite.
     BadDelay(f64),
-    #[error("the step amplitude is {0}: it must be a finite number other than zero")]
+    /// The step amplitude is zero or not finite.
     BadAmplitude(f64),
-    #[error("the static (DC) gain is {0}, so it cannot be set to another value by scaling")]
+    /// The static gain G(0) is 0 or not finite, so no scaling of k sets it.
     DcGainNotScalable(f64),
-    #[error(
-        "a closed loop around a transport delay is not a rational transfer function; \
-         remove the delay or approximate it first"
-    )]
+    /// A closed loop was asked around a transport delay.
     DelayInLoop,
-    #[error("the closed loop gain Kp = {0} must be a finite number")]
+    /// The closed-loop gain Kp is not finite.
     BadLoopGain(f64),
-    #[error(
-        "the poles and zeros span too many decades for double precision: the step response \
-         cannot be computed reliably (rescale time, or drop roots far faster than the rest)"
-    )]
+    /// The roots span too many decades for double precision.
     OutOfRange,
-    #[error(
-        "{what} is {value:e}, below the smallest normal double-precision number (2.2e-308): \
-         it carries too few significant digits to compute with; type 0 if you mean 0, or \
-         rescale the units"
-    )]
-    Subnormal { what: String, value: f64 },
-    #[error(
-        "{what} is {value:e} (too small for double precision: below 2.2e-308), so the \
-         response cannot be computed reliably; rescale the gain or the units"
-    )]
-    Underflow { what: String, value: f64 },
-    #[error("finding the roots of a degree-{degree} polynomial did not converge")]
+    /// A number typed is subnormal (0 < |x| < 2.2e-308).
+    Subnormal { what: Quantity, value: f64 },
+    /// A number computed from normal inputs fell below the normal range.
+    Underflow { what: Quantity, value: f64 },
+    /// The roots of a polynomial of this degree were not found.
     RootsDidNotConverge { degree: usize },
-    #[error("the system has order {0}; Degrau handles orders up to {max}", max = tf::MAX_ORDER)]
+    /// More poles than [`tf::MAX_ORDER`].
     OrderTooHigh(usize),
+    /// The settling band of [`StepInfoOptions`] is outside [1e-9, 1).
+    BadSettlingBand(f64),
+    /// The rise limits of [`StepInfoOptions`] are not 0 ≤ low < high ≤ 1.
+    BadRiseLimits { low: f64, high: f64 },
+}
+
+impl std::fmt::Display for LtiError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&crate::text::Localize::text(self, crate::text::Lang::En))
+    }
+}
+
+impl std::error::Error for LtiError {}
+
+/// Which polynomial an error is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Polynomial {
+    Numerator,
+    Denominator,
+    /// A polynomial on its own (e.g. given to [`poly::roots`]).
+    Alone,
+}
+
+/// Whether a root is a zero or a pole.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RootRole {
+    Zero,
+    Pole,
+}
+
+/// The number an error about double precision's range is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantity {
+    /// The step amplitude A.
+    StepAmplitude,
+    /// The gain k of k·Π(s − zᵢ)/Π(s − pⱼ).
+    Gain,
+    /// The final value A·G(0).
+    FinalValue,
+    /// The product A·k.
+    AmplitudeTimesGain,
+    /// Coefficient `index` (from 1, highest power first) of a polynomial.
+    Coefficient { of: Polynomial, index: usize },
+    /// A pole or zero, counted from 1 (its real or imaginary part).
+    Root { role: RootRole, index: usize },
 }
 
 /// `-1+2j` style text for a complex number.

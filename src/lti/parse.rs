@@ -15,30 +15,28 @@
 
 use super::C64;
 
-/// What is wrong with a piece of text that should hold numbers.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+/// What is wrong with a piece of text that should hold numbers: a typed fact, said in words
+/// by [`crate::text::lti`] (its `Display` is the English text), e.g. `item 2 ("-1+xj") is
+/// not a number like -1+2j`.
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum ParseError {
     /// Not readable as a complex number.
-    #[error("{} is not a number like -1+2j", item(*.index, .text))]
     NotComplex { index: Option<usize>, text: String },
     /// Not readable as a real number.
-    #[error("{} is not a real number like 7, -0.5 or 2.5e-3", item(*.index, .text))]
     NotReal { index: Option<usize>, text: String },
     /// Readable, but NaN or infinite.
-    #[error("{} is not a finite number", item(*.index, .text))]
     NotFinite { index: Option<usize>, text: String },
     /// Nothing between two separators (or before the first, or after the last).
-    #[error("item {index} is empty: remove the extra comma or semicolon")]
     EmptyItem { index: usize },
 }
 
-/// `item 2 ("-1+xj")` inside a list, `"-1+xj"` on its own.
-fn item(index: Option<usize>, text: &str) -> String {
-    match index {
-        Some(i) => format!("item {i} ({text:?})"),
-        None => format!("{text:?}"),
+impl std::fmt::Display for ParseError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&crate::text::Localize::text(self, crate::text::Lang::En))
     }
 }
+
+impl std::error::Error for ParseError {}
 
 impl ParseError {
     /// The same error, located at item `index` (1-based) of a list.

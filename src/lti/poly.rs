@@ -15,7 +15,7 @@ use std::cmp::Ordering;
 
 use nalgebra::{Complex, DMatrix};
 
-use super::LtiError;
+use super::{LtiError, Polynomial, Quantity};
 
 /// A complex number of `f64`s, as used for poles and zeros.
 pub type C64 = Complex<f64>;
@@ -25,7 +25,7 @@ pub type C64 = Complex<f64>;
 const REAL_AXIS_TOLERANCE: f64 = 1e-10;
 
 /// Checks that every coefficient is finite; `what` names the polynomial in the message.
-pub fn check_finite(coeffs: &[f64], what: &'static str) -> Result<(), LtiError> {
+pub fn check_finite(coeffs: &[f64], what: Polynomial) -> Result<(), LtiError> {
     match coeffs.iter().position(|c| !c.is_finite()) {
         Some(i) => Err(LtiError::NonFiniteCoefficient { what, index: i + 1 }),
         None => Ok(()),
@@ -34,10 +34,13 @@ pub fn check_finite(coeffs: &[f64], what: &'static str) -> Result<(), LtiError> 
 
 /// Refuses subnormal coefficients (0 < |c| < 2.2e-308): they carry only a few significant
 /// digits, and the roots and responses computed from them would not be right.
-pub fn check_normal(coeffs: &[f64], what: &'static str) -> Result<(), LtiError> {
+pub fn check_normal(coeffs: &[f64], what: Polynomial) -> Result<(), LtiError> {
     match coeffs.iter().position(|c| c.is_subnormal()) {
         Some(i) => Err(LtiError::Subnormal {
-            what: format!("coefficient {} of the {what}", i + 1),
+            what: Quantity::Coefficient {
+                of: what,
+                index: i + 1,
+            },
             value: coeffs[i],
         }),
         None => Ok(()),
@@ -45,7 +48,7 @@ pub fn check_normal(coeffs: &[f64], what: &'static str) -> Result<(), LtiError> 
 }
 
 /// Drops leading zero coefficients (as MATLAB's `tf` does); an all-zero polynomial is an error.
-pub fn strip_leading_zeros(coeffs: &[f64], what: &'static str) -> Result<Vec<f64>, LtiError> {
+pub fn strip_leading_zeros(coeffs: &[f64], what: Polynomial) -> Result<Vec<f64>, LtiError> {
     check_finite(coeffs, what)?;
     check_normal(coeffs, what)?;
     match coeffs.iter().position(|&c| c != 0.0) {
@@ -83,7 +86,7 @@ pub fn poly_from_roots(roots: &[C64]) -> Vec<f64> {
 /// Conjugate pairs come out exactly conjugate, the member with positive imaginary part
 /// first; real roots have an imaginary part of exactly zero.
 pub fn roots(coeffs: &[f64]) -> Result<Vec<C64>, LtiError> {
-    let coeffs = strip_leading_zeros(coeffs, "polynomial")?;
+    let coeffs = strip_leading_zeros(coeffs, Polynomial::Alone)?;
     let n = coeffs.len() - 1;
     // Roots at the origin are exact: count trailing zero coefficients.
     let at_origin = coeffs.iter().rev().take_while(|&&c| c == 0.0).count();
@@ -442,7 +445,7 @@ pub fn format_poly(coeffs: &[f64]) -> String {
         }
         let show_number = magnitude != 1.0 || power == 0;
         if show_number {
-            out.push_str(&super::expr::format_number(magnitude));
+            out.push_str(&super::number::format_number(magnitude));
         }
         match power {
             0 => {}

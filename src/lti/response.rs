@@ -21,10 +21,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::LtiError;
 use super::divided;
 use super::poly::C64;
 use super::tf::TransferFunction;
+use super::{LtiError, Quantity};
 
 /// Poles this close (relative to the larger modulus) always form one cluster.
 pub const MERGE_RELATIVE: f64 = 1e-2;
@@ -245,7 +245,7 @@ impl StepResponse {
         let clusters = partial_fractions(&poles, tf.zeros(), amplitude * tf.gain());
         if amplitude.is_subnormal() {
             return Err(LtiError::Subnormal {
-                what: "the step amplitude".into(),
+                what: Quantity::StepAmplitude,
                 value: amplitude,
             });
         }
@@ -467,26 +467,18 @@ impl StepResponse {
             .sum()
     }
 
-    /// A time window (seconds from the step, delay included) that shows the whole
-    /// transient: 1.5 × the 2 % settling time for a settling response; for one that does
-    /// not settle, the stable part's transient and a few periods of the sustained
-    /// oscillation or e-foldings of the growth.
-    pub fn auto_horizon(&self) -> f64 {
-        self.delay + self.rational_horizon()
-    }
-
-    /// [`StepResponse::auto_horizon`] counted from the end of the dead time (seconds).
-    pub(crate) fn rational_horizon(&self) -> f64 {
+    /// The plotting window counted from the end of the dead time (seconds): the transient of
+    /// the stable part (1.5 × the time its envelope needs to fall below 2 % of the response's
+    /// size), for a settling response at least `landmarks`, the latest instant its metrics
+    /// need shown (τ, from the end of the dead time; [`super::analysis`] takes it from the
+    /// metrics already computed), and for one that does not settle a few periods of the
+    /// sustained oscillation or e-foldings of the growth (`landmarks` is ignored).
+    pub(crate) fn rational_horizon(&self, landmarks: f64) -> f64 {
         let scale = self.magnitude_scale().max(f64::MIN_POSITIVE);
         let stable = |c: &Cluster| c.decay_rate() < 0.0;
         let transient = 1.5 * self.envelope_time(0.02 * scale, stable);
         let rational = match self.behaviour {
-            Behaviour::Settles => {
-                let info = super::metrics::StepInfo::of_rational(self, &Default::default());
-                let settle = info.settling_time.unwrap_or(0.0);
-                let peak = info.peak_time.unwrap_or(0.0);
-                (1.5 * settle).max(1.2 * peak).max(transient)
-            }
+            Behaviour::Settles => landmarks.max(transient),
             Behaviour::Unstable => {
                 let growth = self
                     .clusters
@@ -635,9 +627,9 @@ fn check_representable(
     if lost || !scale.is_normal() {
         return Err(LtiError::Underflow {
             what: if lost {
-                "the final value A·G(0)".into()
+                Quantity::FinalValue
             } else {
-                "the product A·k of the step amplitude and the gain".into()
+                Quantity::AmplitudeTimesGain
             },
             value: if lost { value } else { scale },
         });
@@ -1033,13 +1025,5 @@ mod tests {
             let fd = (r.value(t + h) - r.value(t - h)) / (2.0 * h);
             assert!((r.derivative(t) - fd).abs() < 1e-9);
         }
-    }
-
-    #[test]
-    fn horizon_covers_the_transient() {
-        let r = StepResponse::new(&zpk(&[], &[c(-5.0, 0.0)], 5.0), 1.0).unwrap();
-        let h = r.auto_horizon();
-        let settle = (50f64).ln() / 5.0;
-        assert!((h - 1.5 * settle).abs() < 1e-9, "{h}");
     }
 }

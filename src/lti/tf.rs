@@ -7,8 +7,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::LtiError;
 use super::poly::{self, C64};
+use super::{LtiError, Polynomial, Quantity, RootRole};
 
 /// The largest order accepted: far above anything taught, and it keeps every computation
 /// (roots, partial fractions, metrics) inside its accuracy and time budget.
@@ -62,13 +62,13 @@ impl TransferFunction {
         }
         if gain.is_subnormal() {
             return Err(LtiError::Subnormal {
-                what: "the gain k".into(),
+                what: Quantity::Gain,
                 value: gain,
             });
         }
         Ok(Self {
-            zeros: paired(zeros, "zero")?,
-            poles: paired(poles, "pole")?,
+            zeros: paired(zeros, RootRole::Zero)?,
+            poles: paired(poles, RootRole::Pole)?,
             gain,
             delay: 0.0,
         })
@@ -77,8 +77,8 @@ impl TransferFunction {
     /// Builds G(s) = num(s)/den(s) from coefficients in descending powers, as MATLAB's
     /// `tf(num, den)`. Leading zero coefficients are dropped, as MATLAB does.
     pub fn from_coeffs(num: &[f64], den: &[f64]) -> Result<Self, LtiError> {
-        let num = poly::strip_leading_zeros(num, "numerator")?;
-        let den = poly::strip_leading_zeros(den, "denominator")?;
+        let num = poly::strip_leading_zeros(num, Polynomial::Numerator)?;
+        let den = poly::strip_leading_zeros(den, Polynomial::Denominator)?;
         if num.len() > den.len() {
             return Err(LtiError::Improper {
                 num_degree: num.len() - 1,
@@ -291,7 +291,7 @@ fn product_neg_nonzero(roots: &[C64]) -> f64 {
 
 /// Validates user roots: finite, complex ones in conjugate pairs; returns them exactly
 /// conjugate-closed and sorted.
-fn paired(roots: &[C64], what: &'static str) -> Result<Vec<C64>, LtiError> {
+fn paired(roots: &[C64], what: RootRole) -> Result<Vec<C64>, LtiError> {
     if let Some(index) = roots
         .iter()
         .position(|r| !r.re.is_finite() || !r.im.is_finite())
@@ -308,7 +308,10 @@ fn paired(roots: &[C64], what: &'static str) -> Result<Vec<C64>, LtiError> {
             .map(|x| (i, x))
     }) {
         return Err(LtiError::Subnormal {
-            what: format!("{what} {}", index + 1),
+            what: Quantity::Root {
+                role: what,
+                index: index + 1,
+            },
             value,
         });
     }

@@ -45,8 +45,8 @@ crate::phrases! {
 /// The words of a [`ParseError`] (a list or a number typed in a flag): the one place that
 /// says them on the command line, until the text layer's `lti` catalogue renders them in
 /// either language (`Localize`), when this calls it.
-pub fn parse_words(e: &ParseError, _lang: Lang) -> String {
-    e.to_string()
+pub fn parse_words(e: &ParseError, lang: Lang) -> String {
+    e.text(lang)
 }
 
 /// "stable (every pole in the left half plane); the step response settles".
@@ -145,7 +145,7 @@ impl Localize for StartsError {
 
 /// A value echoed in a flag, as it would be typed (a decimal point).
 fn typed(x: f64) -> String {
-    crate::format::sig(x, 6)
+    crate::lti::number::sig(x, 6)
 }
 
 impl Localize for CliError {

@@ -38,8 +38,8 @@ fn d4(lang: Lang, x: f64) -> String {
 
 /// The words of an [`LtiError`]: the one place that says them here, until the text layer's
 /// `lti` catalogue renders them in either language (`Localize`), when this calls it.
-pub fn lti_words(e: &LtiError, _lang: Lang) -> String {
-    e.to_string()
+pub fn lti_words(e: &LtiError, lang: Lang) -> String {
+    e.text(lang)
 }
 
 /// `a, b and c` (`a, b e c`).

@@ -18,6 +18,8 @@ use serde::{Deserialize, Serialize};
 pub mod cli;
 pub mod code;
 pub mod ident;
+pub mod lti;
+pub mod operating_point;
 pub mod report;
 pub mod step;
 
@@ -62,7 +64,7 @@ impl Lang {
     /// `x` with `digits` significant digits and this language's decimal separator
     /// (`Lang::Pt.num(0.773201, 4) == "0,7732"`). Code, JSON and CSV never use this.
     pub fn num(self, x: f64, digits: i32) -> String {
-        self.localize_number(&crate::format::sig(x, digits))
+        self.localize_number(&crate::lti::number::sig(x, digits))
     }
 
     /// A number already written with a decimal point, with this language's separator.
@@ -170,6 +172,8 @@ pub fn every_message() -> Vec<Message> {
     all.extend(ident::messages());
     all.extend(report::messages());
     all.extend(cli::messages());
+    all.extend(lti::messages());
+    all.extend(operating_point::messages());
     all
 }
 

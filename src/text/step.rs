@@ -80,7 +80,7 @@ impl Metric {
     /// What the metric measures, with the thresholds in `options`.
     pub fn definition(self, options: &StepInfoOptions, lang: Lang) -> String {
         let (lo, hi) = options.rise_limits;
-        let pct = |f: f64| lang.localize_number(&crate::format::sig(100.0 * f, 6));
+        let pct = |f: f64| lang.localize_number(&crate::lti::number::sig(100.0 * f, 6));
         match self {
             Metric::RiseTime => match lang {
                 Lang::En => format!(
