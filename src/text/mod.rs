@@ -16,6 +16,7 @@
 use serde::{Deserialize, Serialize};
 
 pub mod code;
+pub mod identify;
 pub mod step;
 
 /// A language the app and the CLI speak.
@@ -164,6 +165,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(crate::app::field::FieldPhrase::messages());
     all.extend(crate::app::field::examples());
     all.extend(step::messages());
+    all.extend(identify::messages());
     all
 }
 
