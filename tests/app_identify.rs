@@ -6,6 +6,8 @@ mod kit;
 use std::time::{Duration, Instant};
 
 use degrau::app::DegrauApp;
+use degrau::app::identify::commands::{CodeKind, Command, OffsetChoice};
+use degrau::app::identify::session::{Shown, Status};
 use degrau::ident::models::Param;
 use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
@@ -57,15 +59,10 @@ fn load_drag_the_dead_time_fit_and_read_the_results() {
     load(&mut h, LECI);
     h.get_by_label_contains("Loaded 35 samples");
     // The LECI file has no input column: the step and y0 of the notes are typed.
-    h.state_mut().ident.loaded.as_mut().unwrap().experiment.du = 10.0;
+    h.state_mut().ident.apply(Command::SetStepSize(10.0));
     h.state_mut()
         .ident
-        .loaded
-        .as_mut()
-        .unwrap()
-        .experiment
-        .offset = degrau::ident::experiment::Offset::Fixed(50.0);
-    h.state_mut().ident.rebuild(true);
+        .apply(Command::SetOffset(OffsetChoice::Typed(Some(50.0))));
     h.run_steps(2);
     let td_before = h
         .state()
@@ -110,7 +107,7 @@ fn a_fit_can_be_cancelled() {
     h.get_by_label_contains("Loaded 801 samples");
     h.get_by_label("Fit").click();
     h.run_steps(1);
-    assert!(h.state().ident.is_fitting(), "{}", h.state().ident.status);
+    assert!(h.state().ident.is_fitting(), "{:?}", h.state().ident.status);
     h.run_steps(1);
     h.get_by_label("Cancel").click();
     h.run_steps(1);
@@ -139,7 +136,7 @@ fn the_whole_loop_fills_the_chain_table() {
     h.run_steps(1);
     wait_for(&mut h, |h| h.query_by_label("Fitted P1").is_some());
     h.get_by_label("What does the model get wrong?");
-    h.get_by_label("Run the whole loop").click();
+    h.get_by_label("Run the whole loop").click_accesskit();
     h.run_steps(1);
     wait_for(&mut h, |h| !h.state().ident.is_diagnosing());
     for head in ["Model", "RMSE", "Fit %", "BIC change", "Kp ± 95 %"] {
@@ -318,4 +315,339 @@ fn the_input_before_the_record_finds_a_step_at_the_first_sample() {
     h.state_mut().ident.settings.initial_input = "zero".into();
     load(&mut h, DROPOUTS);
     h.get_by_label_contains("\"zero\" is not a number");
+}
+
+/// Fits the loaded test and waits for the result.
+fn fit_and_wait(h: &mut Harness<'_, DegrauApp>) {
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    wait_for(h, |h| {
+        !h.state().ident.is_fitting() && h.state().ident.report.is_some()
+    });
+}
+
+/// The model curve the session should draw for the model `m` over the fit data's span, as
+/// an independent simulation on the same fine grid.
+fn expected_curve(app: &DegrauApp, m: &degrau::ident::models::Model) -> Vec<[f64; 2]> {
+    let plots = app.ident.plots();
+    let times: Vec<f64> = plots.model.iter().map(|p| p[0]).collect();
+    let setup = app.ident.setup().expect("fit data");
+    let y = m.simulate(&setup, &times).expect("the model simulates");
+    times.into_iter().zip(y).map(|(t, y)| [t, y]).collect()
+}
+
+fn assert_same_curve(a: &[[f64; 2]], b: &[[f64; 2]]) {
+    assert_eq!(a.len(), b.len());
+    for (p, q) in a.iter().zip(b) {
+        assert!(
+            p[0] == q[0] && (p[1] - q[1]).abs() <= 1e-9 * (1.0 + q[1].abs()),
+            "{p:?} vs {q:?}"
+        );
+    }
+}
+
+/// Loading the TCLab record after a fit of the LECI example: before Fit is pressed, the
+/// curve drawn is the new record's own guess (no LECI curve) and the status is cleared.
+#[test]
+fn a_new_record_drops_the_old_curve_and_status() {
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    fit_and_wait(&mut h);
+    h.get_by_label_contains("converged");
+    let leci = h.state().ident.report.clone().unwrap().model;
+
+    h.state_mut().ident.settings.y_col = "T1".into();
+    h.state_mut().ident.settings.u_col = "Q1".into();
+    load(&mut h, TCLAB);
+    h.get_by_label_contains("Loaded 801 samples");
+    let app = h.state();
+    assert!(app.ident.report.is_none() && app.ident.fitted.is_none());
+    assert_eq!(app.ident.status, Status::Idle);
+    assert!(
+        h.query_by_label_contains("converged").is_none(),
+        "stale status"
+    );
+    assert!(h.query_by_label("Fitted P2DU").is_none());
+    let l = app.ident.loaded.as_ref().unwrap();
+    let guess = degrau::ident::models::Model::new(l.structure, l.guess);
+    assert_ne!(guess, leci);
+    assert_eq!(app.ident.shown().map(|s| s.1), Some(Shown::Guess));
+    assert_same_curve(&app.ident.plots().model, &expected_curve(app, &guess));
+}
+
+/// Changing the structure (ticking drift) drops the fit: its curve is no longer drawn.
+#[test]
+fn a_new_structure_drops_the_old_fit_curve() {
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    fit_and_wait(&mut h);
+    let fitted = h.state().ident.report.clone().unwrap().model;
+    h.get_by_label("drift").click();
+    h.run_steps(2);
+    let app = h.state();
+    assert!(app.ident.settings.drift);
+    assert!(app.ident.report.is_none());
+    assert_eq!(app.ident.status, Status::Idle);
+    assert!(h.query_by_label("Fitted P2DU").is_none());
+    let shown = app.ident.shown_model().unwrap();
+    assert!(shown.structure.drift && shown != fitted);
+    assert_same_curve(&app.ident.plots().model, &expected_curve(app, &shown));
+}
+
+/// Clicking a row of the chain draws that row's fit: its model curve and its residuals.
+#[test]
+fn a_chain_row_shows_its_own_curves() {
+    let mut h = harness();
+    h.state_mut().ident.settings.y_col = "T1".into();
+    h.state_mut().ident.settings.u_col = "Q1".into();
+    h.state_mut().ident.settings.code = "P1".into();
+    load(&mut h, TCLAB);
+    fit_and_wait(&mut h);
+    h.get_by_label("Run the whole loop").click_accesskit();
+    h.run_steps(1);
+    wait_for(&mut h, |h| {
+        !h.state().ident.is_diagnosing() && h.state().ident.diagnosis.is_some()
+    });
+    let d = h.state().ident.diagnosis.clone().unwrap();
+    assert!(!d.steps.is_empty());
+    for (k, fit) in std::iter::once(&d.start)
+        .chain(d.steps.iter().map(|s| &s.fit))
+        .enumerate()
+    {
+        h.get_by_label(&fit.model.structure.label())
+            .click_accesskit();
+        h.run_steps(2);
+        let app = h.state();
+        assert_eq!(app.ident.selected_step, Some(k));
+        assert_same_curve(&app.ident.plots().model, &expected_curve(app, &fit.model));
+        let data = app.ident.fitted.as_ref().unwrap().1.clone();
+        let residuals = fit.residuals(&data).unwrap();
+        let drawn = &app.ident.plots().residuals;
+        assert_eq!(drawn.len(), residuals.len());
+        for (p, r) in drawn.iter().zip(&residuals) {
+            assert!((p[1] - r).abs() < 1e-6 * (1.0 + r.abs()), "{} vs {r}", p[1]);
+        }
+    }
+}
+
+/// Presses the widget labelled `label` and moves the pointer by `by` in `moves` moves,
+/// without letting go; returns where the pointer is.
+fn press_and_move(
+    h: &mut Harness<'_, DegrauApp>,
+    label: &str,
+    by: Vec2,
+    moves: usize,
+) -> egui::Pos2 {
+    let from = h.get_by_label(label).rect().center();
+    h.hover_at(from);
+    h.run_steps(1);
+    h.drag_at(from);
+    h.run_steps(1);
+    for k in 1..=moves {
+        h.hover_at(from + by * (k as f32 / moves as f32));
+        h.run_steps(1);
+    }
+    from + by
+}
+
+/// The final-value handle dragged by a measured distance moves Kp by what that distance
+/// means on the plot's axis, held still while the handle is held; at rest, Kp stays put.
+#[test]
+fn a_dragged_handle_moves_kp_by_the_distance_on_the_frozen_axis() {
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    let before = h.state().ident.shown_model().unwrap();
+    let setup = h.state().ident.setup().unwrap();
+    let t_end = h.state().ident.t_end().unwrap();
+    let y_end = before.simulate(&setup, &[t_end]).unwrap()[0];
+    let y0 = before.get(Param::Y0);
+    let kp0 = before.get(Param::Kp);
+    let memory = |h: &Harness<'_, DegrauApp>| {
+        egui_plot::PlotMemory::load(&h.ctx, degrau::app::identify::plot::main_plot_id())
+            .expect("the main plot drew")
+            .transform()
+    };
+    let at_grab = memory(&h);
+    let dy = -60.0_f32;
+    let to = press_and_move(&mut h, "final value handle", Vec2::new(0.0, dy), 6);
+    let held = memory(&h);
+    assert_eq!(
+        held.bounds(),
+        at_grab.bounds(),
+        "the axes moved under the handle"
+    );
+    // Pixels per unit of y on the held axis (negative: screen y grows downwards).
+    let per_unit = held.dpos_dvalue_y();
+    let grabbed_at = h.state().ident.plot_frame();
+    assert!(h.state().ident.frozen.is_some());
+    let expected = kp0 * (f64::from(dy) / per_unit) / (y_end - y0);
+    let kp = |h: &Harness<'_, DegrauApp>| h.state().ident.shown_model().unwrap().get(Param::Kp);
+    let moved = kp(&h) - kp0;
+    assert!(
+        (moved - expected).abs() <= 0.02 * expected.abs(),
+        "ΔKp {moved} vs {expected} for {dy} px at {per_unit} px per unit"
+    );
+    // The mouse at rest: nothing drifts.
+    let resting = kp(&h);
+    for _ in 0..4 {
+        h.hover_at(to);
+        h.run_steps(1);
+        assert_eq!(kp(&h), resting);
+        assert_eq!(h.state().ident.plot_frame(), grabbed_at);
+    }
+    h.drop_at(to);
+    h.run_steps(2);
+    assert!(
+        h.state().ident.frozen.is_none(),
+        "the axes follow the curves again"
+    );
+}
+
+/// A decimal comma is accepted in a numeric field; a letter is refused beside the field and
+/// never applied.
+#[test]
+fn numeric_fields_take_a_comma_and_refuse_letters() {
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    let du = |h: &Harness<'_, DegrauApp>| h.state().ident.loaded.as_ref().unwrap().experiment.du;
+    type_into(&mut h, "Step size Δu", "2,5");
+    assert_eq!(du(&h), 2.5);
+    type_into(&mut h, "Step size Δu", "abc");
+    h.get_by_label_contains("\"abc\" is not a number");
+    assert_eq!(du(&h), 2.5);
+}
+
+/// Types `text` into the text field labelled `label` and presses Enter.
+fn type_into(h: &mut Harness<'_, DegrauApp>, label: &str, text: &str) {
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, label)
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, label)
+        .type_text(text);
+    h.run_steps(1);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(2);
+}
+
+/// Enter in the path field loads the file.
+#[test]
+fn enter_in_the_path_field_loads() {
+    let mut h = harness();
+    type_into(&mut h, "Step test file", LECI);
+    h.get_by_label_contains("Loaded 35 samples");
+}
+
+/// Column choices typed for one file are used for it and said so; the next file starts from
+/// its own columns, with a note that the earlier choices were not carried over.
+#[test]
+fn a_new_file_starts_from_its_own_columns() {
+    let mut h = harness();
+    h.state_mut().ident.settings.y_col = "T1".into();
+    h.state_mut().ident.settings.u_col = "Q1".into();
+    h.state_mut().ident.settings.initial_input = "0".into();
+    load(&mut h, TCLAB);
+    h.get_by_label_contains("Read with the choices typed for it");
+    load(&mut h, LECI);
+    h.get_by_label_contains("were not carried over");
+    let s = &h.state().ident.settings;
+    assert!(s.y_col.is_empty() && s.u_col.is_empty() && s.initial_input.is_empty());
+    assert_eq!(h.state().ident.loaded.as_ref().unwrap().test.time.len(), 35);
+}
+
+/// "Mean before the step" holds Y0 at the level before the step and says so; "estimate"
+/// frees it.
+#[test]
+fn the_operating_point_is_held_at_the_level_before_the_step() {
+    let mut h = harness();
+    let columns: String = (0..40)
+        .map(|k| {
+            let t = 0.5 * k as f64;
+            let y = if t < 2.0 {
+                3.0
+            } else {
+                3.0 + 2.0 * (1.0 - (-(t - 2.0) / 3.0).exp())
+            };
+            let u = if t < 2.0 { 0.0 } else { 1.0 };
+            format!("{t}\t{y}\t{u}\n")
+        })
+        .collect();
+    h.state_mut().ident.load_text(&columns);
+    h.run_steps(2);
+    h.get_by_label("mean before the step").click();
+    h.run_steps(2);
+    let app = h.state();
+    assert_eq!(app.ident.held_operating_point(), Some(3.0));
+    let l = app.ident.loaded.as_ref().unwrap();
+    assert!(!l.structure.free_offset, "Y0 is held");
+    assert_eq!(l.guess.get(Param::Y0), 3.0);
+    h.get_by_label("Y0 held at 3.");
+    h.get_by_label("estimate").click();
+    h.run_steps(2);
+    assert!(
+        h.state()
+            .ident
+            .loaded
+            .as_ref()
+            .unwrap()
+            .structure
+            .free_offset
+    );
+    h.get_by_label("Y0 is estimated with the other parameters.");
+}
+
+/// The fitted model is offered as MATLAB and python-control code with its own coefficients.
+#[test]
+fn the_fitted_model_copies_as_code() {
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    fit_and_wait(&mut h);
+    h.get_by_label("Copy as MATLAB");
+    h.get_by_label("Copy as python-control");
+    let app = h.state();
+    let tf = app
+        .ident
+        .report
+        .as_ref()
+        .unwrap()
+        .model
+        .transfer_function()
+        .unwrap();
+    let matlab = app.ident.fitted_code(CodeKind::Matlab).unwrap();
+    assert_eq!(
+        matlab,
+        degrau::text::code::matlab(&tf.num(), &tf.den(), tf.delay())
+    );
+    assert!(matlab.contains("'InputDelay'"), "{matlab}");
+    let python = app.ident.fitted_code(CodeKind::PythonControl).unwrap();
+    assert!(python.contains("control.tf("), "{python}");
+}
+
+/// At 1000×650 the side panel scrolls and the main plot keeps at least 200 px.
+#[test]
+fn the_plots_fit_a_small_window() {
+    let mut h = Harness::builder()
+        .with_size([1000.0, 650.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
+    h.run_steps(2);
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    let memory = egui_plot::PlotMemory::load(&h.ctx, degrau::app::identify::plot::main_plot_id())
+        .expect("the main plot drew");
+    let frame = *memory.transform().frame();
+    assert!(
+        frame.height() >= 150.0 && frame.width() >= 200.0,
+        "{frame:?}"
+    );
+    let residual =
+        egui_plot::PlotMemory::load(&h.ctx, degrau::app::identify::plot::residual_plot_id())
+            .expect("the residual plot drew");
+    assert!(residual.transform().frame().width() >= 200.0);
 }
