@@ -160,7 +160,7 @@ pub fn status(status: &Status, lang: Lang) -> String {
             termination: t,
             iterations,
         } => Phrase::FromDiagnosis.with(lang, &[termination(*t, lang), iterations.to_string()]),
-        Status::FitFailed(e) => Phrase::FitFailed.with(lang, &[e.clone()]),
+        Status::FitFailed(e) => Phrase::FitFailed.with(lang, std::slice::from_ref(e)),
         Status::Structure(e) => e.clone(),
     }
 }
