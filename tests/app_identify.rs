@@ -651,3 +651,55 @@ fn the_plots_fit_a_small_window() {
             .expect("the residual plot drew");
     assert!(residual.transform().frame().width() >= 200.0);
 }
+
+/// The mode's views speak the look's language: in Portuguese, the panel, the plots' titles
+/// and the fit result are in Portuguese (the session driven alone, as the top level does).
+#[test]
+fn the_views_speak_portuguese() {
+    use degrau::app::identify::{self, Session};
+    use degrau::app::look::Look;
+    use degrau::text::Lang;
+    // The first frame only sets the fonts, as the app does (the bundled monospace font
+    // draws the arrows and Greek letters); the session is drawn from the next one.
+    let mut h = Harness::builder()
+        .with_size([1200.0, 800.0])
+        .build_ui_state(
+            |ui, (fonts_set, session): &mut (bool, Session)| {
+                if !*fonts_set {
+                    let mut fonts = egui::FontDefinitions::default();
+                    if let Some(family) = fonts.families.get_mut(&egui::FontFamily::Proportional) {
+                        family.push("Hack".to_owned());
+                    }
+                    ui.ctx().set_fonts(fonts);
+                    *fonts_set = true;
+                    return;
+                }
+                session.poll();
+                let look = Look::new(Lang::Pt, false, 1.0);
+                for command in identify::show(ui, session, &look) {
+                    session.apply(command);
+                }
+            },
+            (false, Session::default()),
+        );
+    h.run_steps(2);
+    h.get_by_label("Exemplo").click();
+    h.run_steps(3);
+    h.get_by_label_contains("Exemplo do LECI das notas de aula carregado");
+    h.get_by_label("Saída medida e modelo");
+    h.get_by_label("Resíduos y − ŷ");
+    h.get_by_label("Ponto de operação Y0");
+    h.get_by_label("Ajustar").click();
+    h.run_steps(1);
+    let start = Instant::now();
+    while h.state().1.report.is_none() {
+        assert!(start.elapsed() < Duration::from_secs(20), "timed out");
+        std::thread::sleep(Duration::from_millis(5));
+        h.run_steps(1);
+    }
+    h.run_steps(2);
+    h.get_by_label("P2DU ajustado");
+    h.get_by_label("Intervalo de 95 %");
+    h.get_by_label("Copiar como MATLAB");
+    assert!(h.query_by_label("Fit").is_none());
+}

@@ -365,7 +365,7 @@ fn readout(
         galley.size(),
     );
     painter.circle_stroke(at, 5.0, Stroke::new(2.0, look.palette.selected));
-    painter.rect_filled(rect.expand(4.0), 4.0, ui.visuals().extreme_bg_color);
+    painter.rect_filled(rect.expand(4.0), 4.0, look.palette.grid);
     painter.galley(rect.min, galley, look.palette.axis);
 }
 
