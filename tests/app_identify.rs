@@ -643,13 +643,21 @@ fn the_plots_fit_a_small_window() {
         .expect("the main plot drew");
     let frame = *memory.transform().frame();
     assert!(
-        frame.height() >= 150.0 && frame.width() >= 200.0,
+        frame.height() >= 200.0 && frame.width() >= 200.0,
         "{frame:?}"
     );
     let residual =
         egui_plot::PlotMemory::load(&h.ctx, degrau::app::identify::plot::residual_plot_id())
             .expect("the residual plot drew");
-    assert!(residual.transform().frame().width() >= 200.0);
+    let below = *residual.transform().frame();
+    assert!(
+        below.width() >= 200.0 && below.height() >= 80.0,
+        "{below:?}"
+    );
+    assert!(
+        below.bottom() <= 650.0,
+        "the residuals are clipped: {below:?}"
+    );
 }
 
 /// The mode's views speak the look's language: in Portuguese, the panel, the plots' titles

@@ -560,6 +560,7 @@ impl Session {
     pub fn set_step_time(&mut self, t0: f64) {
         if let Some(l) = self.loaded.as_mut()
             && t0.is_finite()
+            && t0 != l.experiment.t0
         {
             l.experiment.t0 = t0;
             self.experiment_changed(false);
