@@ -6,6 +6,7 @@ mod kit;
 use std::time::{Duration, Instant};
 
 use degrau::app::DegrauApp;
+use degrau::app::identify::IdentSettings;
 use degrau::app::identify::commands::{CodeKind, Command, OffsetChoice};
 use degrau::app::identify::session::{Shown, Status};
 use degrau::ident::models::Param;
@@ -19,14 +20,49 @@ const TCLAB: &str = concat!(
     "/tests/data/records/tclab_step_q1_50_synthetic.csv"
 );
 
-fn harness() -> Harness<'static, DegrauApp> {
+/// The app in a window of `size`, after its first frames.
+fn app_at(size: [f32; 2]) -> Harness<'static, DegrauApp> {
     let mut h = Harness::builder()
-        .with_size([1360.0, 860.0])
+        .with_size(size)
         .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
     h.run_steps(2);
+    h
+}
+
+/// The app in the identification mode, in a window of `size`.
+fn identify_at(size: [f32; 2]) -> Harness<'static, DegrauApp> {
+    let mut h = app_at(size);
     h.get_by_label("Identify a step test").click();
     h.run_steps(2);
     h
+}
+
+fn harness() -> Harness<'static, DegrauApp> {
+    identify_at([1360.0, 860.0])
+}
+
+/// The app in the identification mode with the shipped example loaded.
+fn with_example() -> Harness<'static, DegrauApp> {
+    let mut h = harness();
+    h.get_by_label("Example").click();
+    h.run_steps(3);
+    h
+}
+
+/// The app with the TCLab record loaded (output T1, input Q1), after `edit` on the settings.
+fn tclab_with(edit: impl FnOnce(&mut IdentSettings)) -> Harness<'static, DegrauApp> {
+    let mut h = harness();
+    let settings = &mut h.state_mut().ident.settings;
+    settings.y_col = "T1".into();
+    settings.u_col = "Q1".into();
+    edit(settings);
+    load(&mut h, TCLAB);
+    h
+}
+
+/// The TCLab record with P1 chosen.
+fn tclab_p1() -> Harness<'static, DegrauApp> {
+    tclab_with(|s| s.code = "P1".into())
 }
 
 /// Types `path` into the File field and presses Load.
@@ -98,12 +134,10 @@ fn load_drag_the_dead_time_fit_and_read_the_results() {
 
 #[test]
 fn a_fit_can_be_cancelled() {
-    let mut h = harness();
-    h.state_mut().ident.settings.y_col = "T1".into();
-    h.state_mut().ident.settings.u_col = "Q1".into();
-    h.state_mut().ident.settings.code = "P3D".into();
-    h.state_mut().ident.settings.starts = 256;
-    load(&mut h, TCLAB);
+    let mut h = tclab_with(|s| {
+        s.code = "P3D".into();
+        s.starts = 256;
+    });
     h.get_by_label_contains("Loaded 801 samples");
     h.get_by_label("Fit").click();
     h.run_steps(1);
@@ -127,11 +161,7 @@ fn a_bad_file_keeps_what_was_loaded() {
 
 #[test]
 fn the_whole_loop_fills_the_chain_table() {
-    let mut h = harness();
-    h.state_mut().ident.settings.y_col = "T1".into();
-    h.state_mut().ident.settings.u_col = "Q1".into();
-    h.state_mut().ident.settings.code = "P1".into();
-    load(&mut h, TCLAB);
+    let mut h = tclab_p1();
     h.get_by_label("Fit").click();
     h.run_steps(1);
     wait_for(&mut h, |h| h.query_by_label("Fitted P1").is_some());
@@ -160,9 +190,7 @@ fn the_whole_loop_fills_the_chain_table() {
 /// the notes' answer (Gdc 1.0021, θ 1.759 s, ζ 0.1948, ωn 0.9659 rad/s) within 2 %.
 #[test]
 fn the_leci_example_loads_and_fits_to_the_notes_answer() {
-    let mut h = harness();
-    h.get_by_label("Example").click();
-    h.run_steps(3);
+    let mut h = with_example();
     h.get_by_label_contains("Loaded the LECI example");
     h.get_by_label("Fit").click();
     h.run_steps(1);
@@ -190,9 +218,7 @@ fn the_leci_example_loads_and_fits_to_the_notes_answer() {
 /// pointer moved, in the plot's own time units, and the field shows the new value.
 #[test]
 fn the_step_time_line_drags_t0() {
-    let mut h = harness();
-    h.get_by_label("Example").click();
-    h.run_steps(3);
+    let mut h = with_example();
     let t0 = |h: &Harness<'_, DegrauApp>| h.state().ident.loaded.as_ref().unwrap().experiment.t0;
     assert_eq!(t0(&h), 5.0);
     kit::drag_by(&mut h, "step time line", Vec2::new(40.0, 0.0), 5);
@@ -209,6 +235,26 @@ fn the_step_time_line_drags_t0() {
         .clone()
         .unwrap();
     assert_eq!(d.setup.t0, moved, "the fit data follow the line");
+}
+
+/// 40 samples 0.5 s apart of a first-order step response (τ = 3 s) from `y0` by `gain`, the
+/// step at t = 2 s, as tab-separated columns t, y (and the input u, 0 then 1, with `input`).
+fn step_columns(y0: f64, gain: f64, input: bool) -> String {
+    (0..40)
+        .map(|k| {
+            let t = 0.5 * k as f64;
+            let stepped = t >= 2.0;
+            let y = if stepped {
+                y0 + gain * (1.0 - (-(t - 2.0) / 3.0).exp())
+            } else {
+                y0
+            };
+            match (input, stepped) {
+                (false, _) => format!("{t}\t{y}\n"),
+                (true, s) => format!("{t}\t{y}\t{}\n", u8::from(s)),
+            }
+        })
+        .collect()
 }
 
 /// A file dropped on the window, as eframe hands it over: a path.
@@ -229,10 +275,7 @@ impl egui::DroppedFile for DroppedPath {
 /// columns outside a text field loads them; a paste that is not a step test keeps the file.
 #[test]
 fn a_dropped_file_and_pasted_columns_load() {
-    let mut h = Harness::builder()
-        .with_size([1360.0, 860.0])
-        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
-    h.run_steps(2);
+    let mut h = app_at([1360.0, 860.0]);
     h.input_mut()
         .dropped_files
         .push(std::sync::Arc::new(DroppedPath(TCLAB.into())));
@@ -251,17 +294,7 @@ fn a_dropped_file_and_pasted_columns_load() {
         801
     );
 
-    let columns: String = (0..40)
-        .map(|k| {
-            let t = 0.5 * k as f64;
-            let y = if t < 2.0 {
-                0.0
-            } else {
-                1.0 - (-(t - 2.0) / 3.0).exp()
-            };
-            format!("{t}\t{y}\n")
-        })
-        .collect();
+    let columns = step_columns(0.0, 1.0, false);
     h.event(egui::Event::Paste(columns));
     h.run_steps(3);
     h.get_by_label_contains("Loaded 40 samples from pasted data");
@@ -277,9 +310,7 @@ fn a_restart_reloads_the_test_and_its_choices() {
         let text = serde_json::to_string(&saved).unwrap();
         DegrauApp::new(serde_json::from_str(&text).unwrap())
     };
-    let mut h = harness();
-    h.get_by_label("Example").click();
-    h.run_steps(3);
+    let mut h = with_example();
     h.state_mut().ident.set_step_time(5.5);
     let again = restart(&h);
     let l = again.ident.loaded.as_ref().expect("the example again");
@@ -350,9 +381,7 @@ fn assert_same_curve(a: &[[f64; 2]], b: &[[f64; 2]]) {
 /// curve drawn is the new record's own guess (no LECI curve) and the status is cleared.
 #[test]
 fn a_new_record_drops_the_old_curve_and_status() {
-    let mut h = harness();
-    h.get_by_label("Example").click();
-    h.run_steps(3);
+    let mut h = with_example();
     fit_and_wait(&mut h);
     h.get_by_label_contains("converged");
     let leci = h.state().ident.report.clone().unwrap().model;
@@ -379,9 +408,7 @@ fn a_new_record_drops_the_old_curve_and_status() {
 /// Changing the structure (ticking drift) drops the fit: its curve is no longer drawn.
 #[test]
 fn a_new_structure_drops_the_old_fit_curve() {
-    let mut h = harness();
-    h.get_by_label("Example").click();
-    h.run_steps(3);
+    let mut h = with_example();
     fit_and_wait(&mut h);
     let fitted = h.state().ident.report.clone().unwrap().model;
     h.get_by_label("drift").click();
@@ -399,11 +426,7 @@ fn a_new_structure_drops_the_old_fit_curve() {
 /// Clicking a row of the chain draws that row's fit: its model curve and its residuals.
 #[test]
 fn a_chain_row_shows_its_own_curves() {
-    let mut h = harness();
-    h.state_mut().ident.settings.y_col = "T1".into();
-    h.state_mut().ident.settings.u_col = "Q1".into();
-    h.state_mut().ident.settings.code = "P1".into();
-    load(&mut h, TCLAB);
+    let mut h = tclab_p1();
     fit_and_wait(&mut h);
     h.get_by_label("Run the whole loop").click_accesskit();
     h.run_steps(1);
@@ -443,10 +466,13 @@ fn press_and_move(
     let from = h.get_by_label(label).rect().center();
     h.hover_at(from);
     h.run_steps(1);
+    let path: Vec<egui::Pos2> = (1..=moves)
+        .map(|k| from + by * (k as f32 / moves as f32))
+        .collect();
     h.drag_at(from);
     h.run_steps(1);
-    for k in 1..=moves {
-        h.hover_at(from + by * (k as f32 / moves as f32));
+    for at in path {
+        h.hover_at(at);
         h.run_steps(1);
     }
     from + by
@@ -456,9 +482,7 @@ fn press_and_move(
 /// means on the plot's axis, held still while the handle is held; at rest, Kp stays put.
 #[test]
 fn a_dragged_handle_moves_kp_by_the_distance_on_the_frozen_axis() {
-    let mut h = harness();
-    h.get_by_label("Example").click();
-    h.run_steps(3);
+    let mut h = with_example();
     let before = h.state().ident.shown_model().unwrap();
     let setup = h.state().ident.setup().unwrap();
     let t_end = h.state().ident.t_end().unwrap();
@@ -510,9 +534,7 @@ fn a_dragged_handle_moves_kp_by_the_distance_on_the_frozen_axis() {
 /// never applied.
 #[test]
 fn numeric_fields_take_a_comma_and_refuse_letters() {
-    let mut h = harness();
-    h.get_by_label("Example").click();
-    h.run_steps(3);
+    let mut h = with_example();
     let du = |h: &Harness<'_, DegrauApp>| h.state().ident.loaded.as_ref().unwrap().experiment.du;
     type_into(&mut h, "Step size Δu", "2,5");
     assert_eq!(du(&h), 2.5);
@@ -546,11 +568,7 @@ fn enter_in_the_path_field_loads() {
 /// its own columns, with a note that the earlier choices were not carried over.
 #[test]
 fn a_new_file_starts_from_its_own_columns() {
-    let mut h = harness();
-    h.state_mut().ident.settings.y_col = "T1".into();
-    h.state_mut().ident.settings.u_col = "Q1".into();
-    h.state_mut().ident.settings.initial_input = "0".into();
-    load(&mut h, TCLAB);
+    let mut h = tclab_with(|s| s.initial_input = "0".into());
     h.get_by_label_contains("Read with the choices typed for it");
     load(&mut h, LECI);
     h.get_by_label_contains("were not carried over");
@@ -564,18 +582,7 @@ fn a_new_file_starts_from_its_own_columns() {
 #[test]
 fn the_operating_point_is_held_at_the_level_before_the_step() {
     let mut h = harness();
-    let columns: String = (0..40)
-        .map(|k| {
-            let t = 0.5 * k as f64;
-            let y = if t < 2.0 {
-                3.0
-            } else {
-                3.0 + 2.0 * (1.0 - (-(t - 2.0) / 3.0).exp())
-            };
-            let u = if t < 2.0 { 0.0 } else { 1.0 };
-            format!("{t}\t{y}\t{u}\n")
-        })
-        .collect();
+    let columns = step_columns(3.0, 2.0, true);
     h.state_mut().ident.load_text(&columns);
     h.run_steps(2);
     h.get_by_label("mean before the step").click();
@@ -603,9 +610,7 @@ fn the_operating_point_is_held_at_the_level_before_the_step() {
 /// The fitted model is offered as MATLAB and python-control code with its own coefficients.
 #[test]
 fn the_fitted_model_copies_as_code() {
-    let mut h = harness();
-    h.get_by_label("Example").click();
-    h.run_steps(3);
+    let mut h = with_example();
     fit_and_wait(&mut h);
     h.get_by_label("Copy as MATLAB");
     h.get_by_label("Copy as python-control");
@@ -631,12 +636,7 @@ fn the_fitted_model_copies_as_code() {
 /// At 1000×650 the side panel scrolls and the main plot keeps at least 200 px.
 #[test]
 fn the_plots_fit_a_small_window() {
-    let mut h = Harness::builder()
-        .with_size([1000.0, 650.0])
-        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
-    h.run_steps(2);
-    h.get_by_label("Identify a step test").click();
-    h.run_steps(2);
+    let mut h = identify_at([1000.0, 650.0]);
     h.get_by_label("Example").click();
     h.run_steps(3);
     let memory = egui_plot::PlotMemory::load(&h.ctx, degrau::app::identify::plot::main_plot_id())

@@ -11,22 +11,22 @@ use crate::ident::fit::{MAX_STARTS, Method, bounds};
 use crate::text::identify::Phrase;
 
 use super::commands::{Choice, CodeKind, Command, LandscapeCommand, OffsetChoice};
-use super::session::{CODES, Loaded, Session};
+use super::session::{CODES, Session};
 use super::words;
 
 /// Draws the panel's sections into `ui`, adding what the student asks to `out`.
 pub fn show(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     ui.heading(Phrase::StepTest.get(look.lang));
     data_section(ui, session, look, out);
-    let Some(loaded) = session.loaded.as_ref() else {
+    if session.loaded.is_none() {
         return;
-    };
+    }
     ui.separator();
-    step_section(ui, session, loaded, look, out);
+    step_section(ui, session, look, out);
     ui.separator();
-    model_section(ui, session, loaded, look, out);
+    model_section(ui, session, look, out);
     ui.separator();
-    fit_section(ui, session, loaded, look, out);
+    fit_section(ui, session, look, out);
     if session.report.is_some() {
         results(ui, session, look, out);
         ui.separator();
@@ -177,15 +177,12 @@ fn optional_choice(
     }
 }
 
-fn step_section(
-    ui: &mut Ui,
-    session: &Session,
-    loaded: &Loaded,
-    look: &Look,
-    out: &mut Vec<Command>,
-) {
-    let lang = look.lang;
+fn step_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
+    let Some(loaded) = session.loaded.as_ref() else {
+        return;
+    };
     let e = &loaded.experiment;
+    let lang = look.lang;
     let (first, last) = (
         loaded.test.time.first().copied().unwrap_or(0.0),
         loaded.test.time.last().copied().unwrap_or(0.0),
@@ -204,7 +201,7 @@ fn step_section(
     if let Some(du) = NumberField::new(Phrase::StepSize.get(lang), e.du).show(ui, lang) {
         out.push(Command::SetStepSize(du));
     }
-    operating_point(ui, session, loaded, look, out);
+    operating_point(ui, session, look, out);
     ui.horizontal_wrapped(|ui| {
         ui.label(Phrase::Window.get(lang));
         let mut on = e.window.is_some();
@@ -257,15 +254,12 @@ fn step_section(
 
 /// The operating point: held at the level before the step, estimated, or typed; the value
 /// held is said beside the choice.
-fn operating_point(
-    ui: &mut Ui,
-    session: &Session,
-    loaded: &Loaded,
-    look: &Look,
-    out: &mut Vec<Command>,
-) {
-    let lang = look.lang;
+fn operating_point(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
+    let Some(loaded) = session.loaded.as_ref() else {
+        return;
+    };
     let offset = loaded.experiment.offset;
+    let lang = look.lang;
     ui.horizontal_wrapped(|ui| {
         ui.label(Phrase::OperatingPoint.get(lang));
         let choices = [
@@ -321,13 +315,10 @@ fn operating_point(
     }
 }
 
-fn model_section(
-    ui: &mut Ui,
-    session: &Session,
-    loaded: &Loaded,
-    look: &Look,
-    out: &mut Vec<Command>,
-) {
+fn model_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
+    let Some(loaded) = session.loaded.as_ref() else {
+        return;
+    };
     let lang = look.lang;
     ui.horizontal_wrapped(|ui| {
         ui.strong(Phrase::ModelStructure.get(lang));
@@ -376,15 +367,12 @@ fn model_section(
     }
 }
 
-fn fit_section(
-    ui: &mut Ui,
-    session: &Session,
-    loaded: &Loaded,
-    look: &Look,
-    out: &mut Vec<Command>,
-) {
-    let lang = look.lang;
+fn fit_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
+    let Some(loaded) = session.loaded.as_ref() else {
+        return;
+    };
     let s = &session.settings;
+    let lang = look.lang;
     ui.horizontal_wrapped(|ui| {
         for m in [Method::LevenbergMarquardt, Method::NelderMead] {
             if ui.radio(s.method == m, words::method_name(m)).clicked() {

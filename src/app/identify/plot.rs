@@ -147,8 +147,13 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     let transform = response.transform;
     if !session.is_fitting() {
         // The line first, so that a model handle on top of it wins the pointer.
-        let mut grabbed = step_line(ui, session, &transform, look, out);
-        grabbed |= guess_handles(ui, session, &transform, look, out);
+        let over = Over {
+            session,
+            transform: &transform,
+            look,
+        };
+        let mut grabbed = step_line(ui, &over, out);
+        grabbed |= guess_handles(ui, &over, out);
         if session.frozen.is_some() && !grabbed {
             out.push(Command::Handle(Gesture::Release));
         }
@@ -378,15 +383,34 @@ fn frozen(transform: &PlotTransform) -> Frozen {
     }
 }
 
+/// What the handles over the main plot read.
+struct Over<'a> {
+    session: &'a Session,
+    transform: &'a PlotTransform,
+    look: &'a Look,
+}
+
+/// A draggable area `rect` over the plot, named `label` for screen readers (and kittest),
+/// explained by `help`; grabbing it holds the plot's axes as they are drawn.
+fn grab_area(
+    ui: &mut Ui,
+    (id, rect): (Id, Rect),
+    (label, help): (&str, &str),
+    transform: &PlotTransform,
+    out: &mut Vec<Command>,
+) -> egui::Response {
+    let response = ui.interact(rect, id, Sense::drag());
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, label));
+    if response.drag_started() {
+        out.push(Command::Handle(Gesture::Grab(frozen(transform))));
+    }
+    response.on_hover_text(help)
+}
+
 /// The guess handles over the plot: accessible widgets a student (or a test) drags. True
 /// while one is held.
-fn guess_handles(
-    ui: &mut Ui,
-    session: &Session,
-    transform: &PlotTransform,
-    look: &Look,
-    out: &mut Vec<Command>,
-) -> bool {
+fn guess_handles(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> bool {
+    let (session, transform, look) = (over.session, over.transform, over.look);
     let (Some(model), Some(setup), Some(t_end)) =
         (session.shown_model(), session.setup(), session.t_end())
     else {
@@ -405,13 +429,9 @@ fn guess_handles(
             continue;
         }
         let rect = Rect::from_center_size(at, Vec2::splat(2.0 * GRAB));
-        let response = ui.interact(rect, id, Sense::drag());
         let label = words::handle_label(handle, look.lang);
-        response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, label));
-        let response = response.on_hover_text(words::handle_help(handle, look.lang));
-        if response.drag_started() {
-            out.push(Command::Handle(Gesture::Grab(frozen(transform))));
-        }
+        let help = words::handle_help(handle, look.lang);
+        let response = grab_area(ui, (id, rect), (label, help), transform, out);
         if response.dragged()
             && let Some(p) = ui.ctx().pointer_interact_pos()
         {
@@ -440,13 +460,8 @@ fn guess_handles(
 
 /// The step time t0 as a vertical line dragged left or right, within the record. True while
 /// it is held.
-fn step_line(
-    ui: &mut Ui,
-    session: &Session,
-    transform: &PlotTransform,
-    look: &Look,
-    out: &mut Vec<Command>,
-) -> bool {
+fn step_line(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> bool {
+    let (session, transform, look) = (over.session, over.transform, over.look);
     let Some(l) = session.loaded.as_ref() else {
         return false;
     };
@@ -462,15 +477,12 @@ fn step_line(
         return false;
     }
     let rect = Rect::from_x_y_ranges(x - 4.0..=x + 4.0, frame.y_range());
-    let response = ui.interact(rect, id, Sense::drag());
-    let label = Phrase::StepLine.get(look.lang);
-    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, label));
-    let response = response
-        .on_hover_text(Phrase::StepLineHelp.get(look.lang))
+    let words = (
+        Phrase::StepLine.get(look.lang),
+        Phrase::StepLineHelp.get(look.lang),
+    );
+    let response = grab_area(ui, (id, rect), words, transform, out)
         .on_hover_cursor(egui::CursorIcon::ResizeHorizontal);
-    if response.drag_started() {
-        out.push(Command::Handle(Gesture::Grab(frozen(transform))));
-    }
     if response.dragged()
         && let Some(p) = ui.ctx().pointer_interact_pos()
     {

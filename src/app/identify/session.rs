@@ -299,14 +299,21 @@ pub struct MeasuredMarkers {
     pub steady_state: bool,
 }
 
+impl MeasuredMarkers {
+    /// Every marker on (`true`) or off.
+    pub const fn all(on: bool) -> Self {
+        Self {
+            rise: on,
+            peak: on,
+            settling: on,
+            steady_state: on,
+        }
+    }
+}
+
 impl Default for MeasuredMarkers {
     fn default() -> Self {
-        Self {
-            rise: true,
-            peak: true,
-            settling: true,
-            steady_state: true,
-        }
+        Self::all(true)
     }
 }
 
