@@ -248,7 +248,7 @@ fn step_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Comma
         }
     }
     if let Err(e) = &loaded.data {
-        ui.colored_label(look.palette.error, e.to_string());
+        ui.colored_label(look.palette.error, words::experiment_error(e, lang));
     }
 }
 

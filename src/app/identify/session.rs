@@ -18,14 +18,14 @@ use super::cost::LandscapeState;
 use super::words::chain;
 use crate::app::field::{FieldError, parse_number};
 use crate::app::job::{self, Job, Waker};
-use crate::ident::data::{self, LoadOptions, StepTest};
+use crate::ident::data::{self, DataError, LoadOptions, StepTest};
 use crate::ident::diagnose::{self, Cause, DiagnoseOptions, DiagnoseReport, Step};
 use crate::ident::experiment::{Experiment, ExperimentError, Offset};
 use crate::ident::fit::{
     FitData, FitError, FitObserver, FitOptions, FitReport, Method, Progress, Termination, fit,
 };
 use crate::ident::handles::{self, Handle};
-use crate::ident::models::{Model, Param, StepSetup, Structure, Values};
+use crate::ident::models::{Model, ModelError, Param, StepSetup, Structure, Values};
 use crate::lti::{StepInfo, StepInfoOptions};
 
 /// The LECI step test of the course notes (`t, y`), shipped with the app.
@@ -126,8 +126,10 @@ pub enum Source {
 pub enum LoadError {
     /// A reading choice that is not a number.
     Choice { choice: Choice, error: FieldError },
-    /// The loader's refusal (the library's words).
-    Data(String),
+    /// The loader's refusal.
+    Data(DataError),
+    /// The model code cannot be read.
+    Model(ModelError),
 }
 
 /// What the last load said.
@@ -194,9 +196,9 @@ pub enum Status {
         termination: Termination,
         iterations: usize,
     },
-    FitFailed(String),
+    FitFailed(FitError),
     /// The structure cannot be built on these data.
-    Structure(String),
+    Structure(ExperimentError),
 }
 
 /// What the diagnosis said last.
@@ -370,10 +372,9 @@ impl Session {
         self.settings.path = path.to_string();
         let source = Source::File(path.to_string());
         let cleared = self.start_reading(&source);
-        let loaded = self.load_options().and_then(|o| {
-            data::load_file(std::path::Path::new(path), &o)
-                .map_err(|e| LoadError::Data(e.to_string()))
-        });
+        let loaded = self
+            .load_options()
+            .and_then(|o| data::load_file(std::path::Path::new(path), &o).map_err(LoadError::Data));
         match loaded {
             Ok(test) => {
                 self.settings.example = false;
@@ -405,7 +406,7 @@ impl Session {
                 });
                 self.rebuild(true);
             }
-            Err(e) => self.refuse(Source::Example, LoadError::Data(e.to_string())),
+            Err(e) => self.refuse(Source::Example, LoadError::Data(e)),
         }
     }
 
@@ -417,7 +418,7 @@ impl Session {
                 self.settings.path.clear();
                 self.accept(test, Source::Pasted, Vec::new());
             }
-            Err(e) => self.refuse(Source::Pasted, LoadError::Data(e.to_string())),
+            Err(e) => self.refuse(Source::Pasted, LoadError::Data(e)),
         }
     }
 
@@ -493,7 +494,7 @@ impl Session {
             match Structure::parse(&self.settings.code).or_else(|_| Structure::parse("P1D")) {
                 Ok(s) => s,
                 Err(e) => {
-                    self.refuse(source_of(&self.message), LoadError::Data(e.to_string()));
+                    self.refuse(source_of(&self.message), LoadError::Model(e));
                     return;
                 }
             };
@@ -553,7 +554,7 @@ impl Session {
                     self.status = Status::Idle;
                 }
             }
-            Err(e) => self.status = Status::Structure(e.to_string()),
+            Err(e) => self.status = Status::Structure(e),
         }
     }
 
@@ -989,7 +990,7 @@ impl Session {
                 self.clear_diagnosis();
             }
             Some(Err(e)) => {
-                self.status = Status::FitFailed(e.to_string());
+                self.status = Status::FitFailed(e);
                 self.fitted = None;
                 self.job = None;
             }

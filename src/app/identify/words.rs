@@ -6,6 +6,7 @@
 
 use crate::format::sig;
 use crate::ident::diagnose::{DiagnoseReport, Step};
+use crate::ident::experiment::ExperimentError;
 use crate::ident::fit::{FitReport, FitWarning, Method, Termination};
 use crate::ident::handles::Handle;
 use crate::ident::models::{Model, Param, pair_poles};
@@ -63,7 +64,10 @@ pub fn load_message(message: &LoadMessage, lang: Lang) -> (bool, String) {
             ];
             out.extend(notes.iter().cloned());
             if let Some((error, t0)) = step_missing {
-                out.push(Phrase::StepMissing.with(lang, &[error.to_string(), num(lang, *t0, 6)]));
+                out.push(
+                    Phrase::StepMissing
+                        .with(lang, &[experiment_error(error, lang), num(lang, *t0, 6)]),
+                );
             }
             if !cleared.is_empty() {
                 out.push(Phrase::ClearedChoices.with(lang, &[choices(cleared, lang)]));
@@ -88,7 +92,8 @@ pub fn load_message(message: &LoadMessage, lang: Lang) -> (bool, String) {
                 LoadError::Choice { choice, error } => {
                     format!("{}: {}", choice_name(*choice, lang), error.text(lang))
                 }
-                LoadError::Data(text) => text.clone(),
+                LoadError::Data(e) => e.to_string(),
+                LoadError::Model(e) => e.to_string(),
             };
             let mut text = match source {
                 Source::File(path) => Phrase::NotLoaded.with(lang, &[path.clone(), reason]),
@@ -160,8 +165,8 @@ pub fn status(status: &Status, lang: Lang) -> String {
             termination: t,
             iterations,
         } => Phrase::FromDiagnosis.with(lang, &[termination(*t, lang), iterations.to_string()]),
-        Status::FitFailed(e) => Phrase::FitFailed.with(lang, std::slice::from_ref(e)),
-        Status::Structure(e) => e.clone(),
+        Status::FitFailed(e) => Phrase::FitFailed.with(lang, &[e.to_string()]),
+        Status::Structure(e) => experiment_error(e, lang),
     }
 }
 
@@ -202,6 +207,11 @@ pub fn method_name(m: Method) -> &'static str {
         Method::LevenbergMarquardt => "Levenberg–Marquardt",
         Method::NelderMead => "Nelder–Mead",
     }
+}
+
+/// Why the choices on a test cannot be used (the library's words).
+pub fn experiment_error(e: &ExperimentError, _lang: Lang) -> String {
+    e.to_string()
 }
 
 /// A fit warning.
