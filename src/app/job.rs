@@ -1,10 +1,14 @@
 //! Long work off the UI thread: a job runs on its own thread, sends progress messages, can
-//! be cancelled, and hands back its result. The UI polls it each frame and repaints while it
-//! runs.
+//! be cancelled, and hands back its result. The session that owns it polls it once per frame;
+//! the job wakes the UI through a [`Waker`] (no egui type here), so a frame follows each
+//! message.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, Sender, TryRecvError, channel};
+
+/// What wakes the UI when a job has news (the top level hands one in; tests need none).
+pub type Waker = Arc<dyn Fn() + Send + Sync>;
 
 /// What a running job reports.
 pub enum Message<P, R> {
@@ -25,27 +29,31 @@ pub struct Job<P, R> {
 pub struct Context<P, R> {
     cancel: Arc<AtomicBool>,
     sender: Sender<Message<P, R>>,
-    repaint: Option<eframe::egui::Context>,
+    waker: Option<Waker>,
 }
 
 impl<P, R> Context<P, R> {
     /// Sends progress (ignored if the UI is gone) and asks for a repaint.
     pub fn report(&self, progress: P) {
         let _ = self.sender.send(Message::Progress(progress));
-        if let Some(ctx) = &self.repaint {
-            ctx.request_repaint();
-        }
+        self.wake();
     }
 
     pub fn cancelled(&self) -> bool {
         self.cancel.load(Ordering::Relaxed)
     }
+
+    fn wake(&self) {
+        if let Some(wake) = &self.waker {
+            wake();
+        }
+    }
 }
 
 impl<P: Send + 'static, R: Send + 'static> Job<P, R> {
-    /// Starts `work` on a new thread; `repaint` wakes the UI when messages arrive.
+    /// Starts `work` on a new thread; `waker` wakes the UI when messages arrive.
     pub fn spawn(
-        repaint: Option<eframe::egui::Context>,
+        waker: Option<Waker>,
         work: impl FnOnce(&Context<P, R>) -> R + Send + 'static,
     ) -> Self {
         let cancel = Arc::new(AtomicBool::new(false));
@@ -53,14 +61,12 @@ impl<P: Send + 'static, R: Send + 'static> Job<P, R> {
         let context = Context {
             cancel: cancel.clone(),
             sender,
-            repaint,
+            waker,
         };
         std::thread::spawn(move || {
             let result = work(&context);
             let _ = context.sender.send(Message::Done(result));
-            if let Some(ctx) = &context.repaint {
-                ctx.request_repaint();
-            }
+            context.wake();
         });
         Self {
             cancel,
@@ -111,6 +117,24 @@ mod tests {
             "done"
         });
         assert_eq!(job.wait(), Some("done"));
+    }
+
+    #[test]
+    fn the_waker_is_called_for_progress_and_result() {
+        let calls = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+        let counted = calls.clone();
+        let waker: Waker = Arc::new(move || {
+            counted.fetch_add(1, Ordering::SeqCst);
+        });
+        let job: Job<u32, u32> = Job::spawn(Some(waker), |ctx| {
+            ctx.report(1);
+            ctx.report(2);
+            3
+        });
+        assert_eq!(job.wait(), Some(3));
+        // Both progress messages woke the UI before the result was sent (the result's own
+        // call may still be on its way).
+        assert!(calls.load(Ordering::SeqCst) >= 2);
     }
 
     #[test]

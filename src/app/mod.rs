@@ -15,10 +15,8 @@ pub mod analysis;
 pub mod export;
 pub mod field;
 pub mod grid;
-pub mod ident_plot;
 pub mod identify;
 pub mod job;
-pub mod landscape_view;
 pub mod look;
 pub mod metrics_table;
 pub mod persist;
@@ -113,7 +111,7 @@ pub struct DegrauApp {
     export: ExportState,
     plot_rect: Option<egui::Rect>,
     /// The identification view (its settings live in `saved.ident`).
-    pub ident: identify::IdentView,
+    pub ident: identify::Session,
     fonts_ready: bool,
     /// Writes the session to the state file after each change (none: not kept).
     saver: Option<persist::Saver>,
@@ -212,7 +210,7 @@ impl DegrauApp {
             presets: presets(),
             export: ExportState::default(),
             plot_rect: None,
-            ident: identify::IdentView::with_settings(saved_ident),
+            ident: identify::Session::with_settings(saved_ident),
             fonts_ready: false,
             saver: None,
             notices: Vec::new(),
@@ -580,38 +578,28 @@ impl DegrauApp {
         }
     }
 
-    /// The identification mode: settings panel on the right, plots in the middle.
+    /// The identification mode: its session polled, its views drawn, their commands applied.
     fn identify(&mut self, ui: &mut Ui) {
-        let action = egui::Panel::right("identification")
-            .resizable(true)
-            .default_size(380.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical()
-                    .show(ui, |ui| self.ident.panel(ui))
-                    .inner
-            })
-            .inner;
-        egui::CentralPanel::default().show(ui, |ui| {
-            ident_plot::marker_controls(ui, &mut self.ident.markers);
-            ident_plot::show(ui, &mut self.ident);
-        });
-        let data = self.ident.fitted.as_ref().map(|f| f.1.clone());
-        let report = self.ident.report.clone();
-        self.ident
-            .landscape
-            .show(ui.ctx(), report.as_ref(), data.as_ref());
-        if let identify::IdentAction::ShowOnSPlane(model) = action {
-            self.show_model(&model);
+        if !self.ident.has_waker() {
+            let ctx = ui.ctx().clone();
+            self.ident
+                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
+        }
+        if self.ident.poll() {
+            ui.ctx().request_repaint();
+        }
+        let look = look::Look::new(crate::text::Lang::En, self.saved.dark, 1.0);
+        for command in identify::show(ui, &self.ident, &look) {
+            if let Some(identify::Outcome::ShowOnSPlane { tf, du }) = self.ident.apply(command) {
+                self.show_model(&tf, du);
+            }
         }
     }
 
     /// Opens a fitted model in the pole-zero view, stepped by the test's Δu.
-    fn show_model(&mut self, model: &crate::ident::models::Model) {
-        let du = self.ident.fitted.as_ref().map_or(1.0, |f| f.1.setup.du);
-        if let Ok(tf) = model.transfer_function() {
-            self.set_system(System::from_transfer_function(&tf, du));
-            self.saved.mode = Mode::Design;
-        }
+    fn show_model(&mut self, tf: &crate::lti::TransferFunction, du: f64) {
+        self.set_system(System::from_transfer_function(tf, du));
+        self.saved.mode = Mode::Design;
     }
 
     /// Files dropped on the window load as step tests; text pasted in the identification

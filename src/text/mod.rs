@@ -18,6 +18,7 @@ use serde::{Deserialize, Serialize};
 pub mod cli;
 pub mod code;
 pub mod ident;
+pub mod identify;
 pub mod lti;
 pub mod operating_point;
 pub mod report;
@@ -174,6 +175,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(cli::messages());
     all.extend(lti::messages());
     all.extend(operating_point::messages());
+    all.extend(identify::messages());
     all
 }
 

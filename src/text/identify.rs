@@ -1,0 +1,266 @@
+//! The Identify mode's own words: every label, button, hint and status of the app's
+//! identification views, in English and Brazilian Portuguese (the glossary's terms: ensaio ao
+//! degrau, ponto de operação, período de amostragem, estimativa inicial, ajuste, resíduos,
+//! filtro passa-baixa, frequência de corte, estrutura do modelo, função de custo, …).
+//!
+//! A phrase with numbers or names in it is a template: each `{}` is filled in order by
+//! [`fill`], so each language keeps its own word order.
+
+use super::{Lang, Message};
+
+crate::phrases! {
+    /// The identification views' phrases.
+    pub enum Phrase {
+        StepTest => ("Step test", "Ensaio ao degrau"),
+        FileField => ("Step test file", "Arquivo do ensaio ao degrau"),
+        Load => ("Load", "Carregar"),
+        Example => ("Example", "Exemplo"),
+        ExampleHelp => (
+            "The LECI step test of the course notes",
+            "O ensaio ao degrau do LECI, das notas de aula"
+        ),
+        Open => ("Open…", "Abrir…"),
+        HowToRead => ("How to read the file", "Como ler o arquivo"),
+        TimeColumn => ("Time column", "Coluna de tempo"),
+        OutputColumn => ("Output column", "Coluna de saída"),
+        InputColumn => ("Input column", "Coluna de entrada"),
+        SamplingPeriod => ("Sampling period (s)", "Período de amostragem (s)"),
+        InitialInput => ("Input before the record", "Entrada antes do registro"),
+        ColumnHint => ("automatic; or a name or a number", "automática; ou um nome ou um número"),
+        DetectedColumn => ("read: {}", "lida: {}"),
+        GiveSamplingPeriod => (
+            "give it (files without a time column)",
+            "informar (arquivos sem coluna de tempo)"
+        ),
+        GiveInitialInput => (
+            "give it (the step came at the first sample)",
+            "informar (o degrau veio na primeira amostra)"
+        ),
+        DropOrPaste => (
+            "Drop a file on the window, or paste two or three columns (Ctrl+V).",
+            "Solte um arquivo na janela, ou cole duas ou três colunas (Ctrl+V)."
+        ),
+        LoadedFrom => ("Loaded {} samples from {}.", "{} amostras carregadas de {}."),
+        PastedData => ("pasted data", "dados colados"),
+        TheExample => ("the LECI example of the course notes", "o exemplo do LECI das notas de aula"),
+        LoadedExample => (
+            "Loaded the LECI example of the course notes: {} samples, a step of Δu = {} at t0 = {} s from y0 = {}.",
+            "Exemplo do LECI das notas de aula carregado: {} amostras, um degrau de Δu = {} em t0 = {} s a partir de y0 = {}."
+        ),
+        StepMissing => (
+            "{}. Set t0 and Δu below (now t0 = {}, Δu = 1).",
+            "{}. Defina t0 e Δu abaixo (agora t0 = {}, Δu = 1)."
+        ),
+        KeptChoices => (
+            "Read with the choices typed for it: {}.",
+            "Lido com as escolhas digitadas para ele: {}."
+        ),
+        ClearedChoices => (
+            "The choices made on the previous file were not carried over ({}): this file is read with its own columns.",
+            "As escolhas feitas no arquivo anterior não foram mantidas ({}): este arquivo é lido com as suas próprias colunas."
+        ),
+        NotLoaded => ("Not loaded ({}): {}.", "Não carregado ({}): {}."),
+        PasteRefused => (
+            "The pasted text is not a step test: {}.",
+            "O texto colado não é um ensaio ao degrau: {}."
+        ),
+        ExampleRefused => ("The example did not load: {}.", "O exemplo não carregou: {}."),
+        KeptBefore => ("What was loaded before is kept.", "O que estava carregado antes foi mantido."),
+        StepTime => ("Step time t0 (s)", "Instante do degrau t0 (s)"),
+        StepSize => ("Step size Δu", "Amplitude do degrau Δu"),
+        OperatingPoint => ("Operating point Y0", "Ponto de operação Y0"),
+        MeanBefore => ("mean before the step", "média antes do degrau"),
+        Estimate => ("estimate", "estimar"),
+        Typed => ("typed", "digitado"),
+        TypedY0 => ("Y0 held at", "Y0 mantido em"),
+        HeldAt => ("Y0 held at {}.", "Y0 mantido em {}."),
+        NoSampleBefore => (
+            "No sample before the step: Y0 is estimated with the other parameters instead.",
+            "Nenhuma amostra antes do degrau: Y0 é estimado com os demais parâmetros."
+        ),
+        EstimatedY0 => (
+            "Y0 is estimated with the other parameters.",
+            "Y0 é estimado com os demais parâmetros."
+        ),
+        Window => ("Window (s)", "Janela (s)"),
+        KeepOnly => ("keep only", "manter só"),
+        WindowFrom => ("from", "de"),
+        WindowTo => ("to", "até"),
+        Filter => ("Low-pass filter", "Filtro passa-baixa"),
+        FilterOn => ("first order (EWMA)", "primeira ordem (EWMA)"),
+        CutOff => ("cut-off (Hz)", "frequência de corte (Hz)"),
+        ModelStructure => ("Model structure", "Estrutura do modelo"),
+        Drift => ("drift", "deriva"),
+        DriftHelp => (
+            "Add a linear drift term Drift·(t − t0)",
+            "Acrescenta um termo de deriva linear Drift·(t − t0)"
+        ),
+        AutoGuess => ("Automatic guess", "Estimativa inicial automática"),
+        AutoGuessHelp => ("Read the guesses off the curve again", "Lê de novo as estimativas na curva"),
+        GuessOf => ("{} guess", "{} (estimativa inicial)"),
+        Multistart => ("multi-start", "vários inícios"),
+        MultistartHelp => (
+            "Run from the guess and from spread-out starts, keep the best result that is not an alias",
+            "Parte da estimativa inicial e de inícios espalhados, e fica com o melhor resultado que não é um alias"
+        ),
+        Starts => ("starts", "inícios"),
+        Fit => ("Fit", "Ajustar"),
+        Cancel => ("Cancel", "Cancelar"),
+        Fitting => ("Fitting…", "Ajustando…"),
+        Cancelling => ("Cancelling…", "Cancelando…"),
+        FitProgress => (
+            "start {}/{} · iteration {} · MSE {} (best {})",
+            "início {}/{} · iteração {} · MSE {} (melhor {})"
+        ),
+        FitDone => ("{} · {} start(s), {} iterations", "{} · {} início(s), {} iterações"),
+        FromDiagnosis => ("from the diagnosis: {} · {} iterations", "do diagnóstico: {} · {} iterações"),
+        FitFailed => ("The fit did not run: {}", "O ajuste não rodou: {}"),
+        Fitted => ("Fitted {}", "{} ajustado"),
+        Parameter => ("Parameter", "Parâmetro"),
+        Value => ("Value", "Valor"),
+        Interval95 => ("95 % interval", "Intervalo de 95 %"),
+        NoInterval => ("none", "nenhum"),
+        Warning => ("Warning: {}", "Aviso: {}"),
+        ShowOnSPlane => ("Show on the s-plane", "Mostrar no plano s"),
+        CostLandscape => ("Cost landscape…", "Mapa da função de custo…"),
+        CopyMatlab => ("Copy as MATLAB", "Copiar como MATLAB"),
+        CopyPython => ("Copy as python-control", "Copiar como python-control"),
+        CopyHelp => (
+            "The fitted transfer function as code, to the clipboard",
+            "A função de transferência ajustada como código, para a área de transferência"
+        ),
+        WhatIsWrong => ("What does the model get wrong?", "O que o modelo erra?"),
+        ExtendOnce => ("Extend with the leading cause", "Estender pela causa principal"),
+        ExtendOnceHelp => (
+            "Name what the model gets wrong and extend it once",
+            "Diz o que o modelo erra e o estende uma vez"
+        ),
+        WholeLoop => ("Run the whole loop", "Rodar o ciclo inteiro"),
+        WholeLoopHelp => (
+            "Extend until no extension pays for itself",
+            "Estende até que nenhuma extensão compense"
+        ),
+        RunningLoop => ("Running the loop…", "Rodando o ciclo…"),
+        LookingForCause => ("Looking for the leading cause…", "Procurando a causa principal…"),
+        RowHelp => ("Show this model's curve and residuals", "Mostra a curva e os resíduos deste modelo"),
+        CopyTable => ("Copy the table", "Copiar a tabela"),
+        NothingLoaded => (
+            "Load a step test: File → Open a step test…, type its path on the right, drop it here, paste columns, or press Example for the LECI test of the course notes.",
+            "Carregue um ensaio ao degrau: Arquivo → Abrir um ensaio ao degrau…, digite o caminho à direita, solte-o aqui, cole colunas, ou aperte Exemplo para o ensaio do LECI das notas de aula."
+        ),
+        NothingToShow => (
+            "The chosen window and filter leave nothing to show.",
+            "A janela e o filtro escolhidos não deixam nada para mostrar."
+        ),
+        MeasuredAndModel => ("Measured output and model", "Saída medida e modelo"),
+        Measured => ("measured", "medido"),
+        StepAt => ("step at t0 = {} s", "degrau em t0 = {} s"),
+        Evidence => ("evidence", "evidência"),
+        ModelFitting => ("model (fitting…)", "modelo (ajustando…)"),
+        ModelFitted => ("fitted model", "modelo ajustado"),
+        ModelGuess => ("model (guess)", "modelo (estimativa inicial)"),
+        ModelOfRow => ("model {} of the chain", "modelo {} da cadeia"),
+        Residuals => ("Residuals y − ŷ", "Resíduos y − ŷ"),
+        Residual => ("residual", "resíduo"),
+        ZeroLine => ("no error", "erro nulo"),
+        MeasuredMarkers => ("Measured characteristics:", "Características medidas:"),
+        Rise => ("Rise", "Subida"),
+        Peak => ("Peak", "Pico"),
+        Settling => ("Settling", "Acomodação"),
+        FinalLevel => ("Final level", "Valor final"),
+        SettlingBand => ("±{} % band", "faixa de ±{} %"),
+        FinalValueHandle => ("final value handle", "alça do valor final"),
+        DeadTimeHandle => ("dead time handle", "alça do tempo morto"),
+        TimeConstantHandle => ("time constant handle", "alça da constante de tempo"),
+        FirstPeakHandle => ("first peak handle", "alça do primeiro pico"),
+        FinalValueHelp => (
+            "Drag up or down: the final value sets the static gain Kp.",
+            "Arraste para cima ou para baixo: o valor final define o ganho estático Kp."
+        ),
+        DeadTimeHelp => (
+            "Drag left or right: where the response starts sets the dead time Td.",
+            "Arraste para os lados: onde a resposta começa define o tempo morto Td."
+        ),
+        TimeConstantHelp => (
+            "Drag left or right: the 63.2 % time sets the time constants.",
+            "Arraste para os lados: o instante de 63,2 % define as constantes de tempo."
+        ),
+        FirstPeakHelp => (
+            "Drag: the peak's height sets ζ (overshoot), its time sets ωd (peak time).",
+            "Arraste: a altura do pico define ζ (sobressinal), o instante define ωd (tempo de pico)."
+        ),
+        StepLine => ("step time line", "linha do instante do degrau"),
+        StepLineHelp => ("Drag left or right: the step time t0.", "Arraste para os lados: o instante do degrau t0."),
+        LandscapeTitle => ("Cost landscape", "Mapa da função de custo"),
+        FitFirst => (
+            "Fit a model first: the landscape is drawn around the fit.",
+            "Ajuste um modelo antes: o mapa é desenhado em torno do ajuste."
+        ),
+        Spread => ("spread ×", "abrangência ×"),
+        RowOf => ("row {} of {}", "linha {} de {}"),
+        Compute => ("Compute", "Calcular"),
+        LandscapeSummary => (
+            "log10 MSE over {} × {}; {} local minima on the grid; lowest MSE on the grid {}",
+            "log10 do MSE sobre {} × {}; {} mínimos locais na grade; menor MSE na grade {}"
+        ),
+        OptimiserPath => ("optimiser path", "caminho do otimizador"),
+        LocalMinima => ("local minima", "mínimos locais"),
+        TheFit => ("fit", "ajuste"),
+    }
+}
+
+/// `template` with each `{}` replaced by the next of `args` (in order; missing ones empty).
+pub fn fill(template: &str, args: &[String]) -> String {
+    let mut out = String::with_capacity(template.len() + 16);
+    let mut args = args.iter();
+    let mut pieces = template.split("{}");
+    if let Some(first) = pieces.next() {
+        out.push_str(first);
+    }
+    for piece in pieces {
+        if let Some(a) = args.next() {
+            out.push_str(a);
+        }
+        out.push_str(piece);
+    }
+    out
+}
+
+impl Phrase {
+    /// The template in `lang`, filled with `args`.
+    pub fn with(self, lang: Lang, args: &[String]) -> String {
+        fill(self.get(lang), args)
+    }
+}
+
+/// Every phrase, for [`super::every_message`].
+pub fn messages() -> Vec<Message> {
+    Phrase::messages()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn templates_fill_in_order() {
+        let args = ["35".to_string(), "x.csv".to_string()];
+        assert_eq!(
+            Phrase::LoadedFrom.with(Lang::En, &args),
+            "Loaded 35 samples from x.csv."
+        );
+        assert_eq!(
+            Phrase::LoadedFrom.with(Lang::Pt, &args),
+            "35 amostras carregadas de x.csv."
+        );
+        assert_eq!(fill("{} and {}", &["a".into()]), "a and ");
+    }
+
+    #[test]
+    fn both_languages_have_the_same_placeholders() {
+        for p in Phrase::ALL {
+            let count = |l: Lang| p.get(l).matches("{}").count();
+            assert_eq!(count(Lang::En), count(Lang::Pt), "{p:?}");
+        }
+    }
+}
