@@ -434,7 +434,10 @@ mod tests {
     fn operating_point_uses_samples_before_t0_and_a_repeated_edge_row() {
         let test = test_of(vec![0.0, 1.0, 2.0, 3.0], vec![1.0, 3.0, 10.0, 11.0], None);
         assert_eq!(operating_point(&test, 2.0), Some(2.0));
-        assert_eq!(operating_point(&test, 0.0), None);
+        // A record that starts with the step: the sample at t0 is still at rest.
+        assert_eq!(operating_point(&test, 0.0), Some(1.0));
+        // A step before the first sample: nothing is known of the rest level.
+        assert_eq!(operating_point(&test, -1.0), None);
         // TCLab: t = 0 twice, the first row before the step.
         let tclab = test_of(
             vec![0.0, 0.0, 1.0],
