@@ -15,7 +15,9 @@
 
 use serde::{Deserialize, Serialize};
 
+pub mod app;
 pub mod code;
+pub mod design;
 pub mod step;
 
 /// A language the app and the CLI speak.
@@ -164,6 +166,8 @@ pub fn every_message() -> Vec<Message> {
     all.extend(crate::app::field::FieldPhrase::messages());
     all.extend(crate::app::field::examples());
     all.extend(step::messages());
+    all.extend(design::messages());
+    all.extend(app::messages());
     all
 }
 
