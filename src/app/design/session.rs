@@ -262,7 +262,7 @@ mod tests {
     fn a_drag_is_one_undoable_edit_and_the_analysis_follows_at_once() {
         let mut kept = Kept::default();
         let mut s = Session::new(&kept);
-        let rise = s.analysis.info.and_then(|i| i.rise_time);
+        let rise = s.analysis.info.as_ref().and_then(|i| i.rise_time);
         for k in 1..=5 {
             let re = -5.0 + 0.5 * k as f64;
             s.apply(
@@ -277,7 +277,7 @@ mod tests {
         s.apply(&mut kept, Command::EndDrag);
         assert_eq!(kept.system.poles[1], Root::real(-2.5));
         assert!(s.analysis.is_for(&kept.system, &kept.options));
-        assert_ne!(s.analysis.info.and_then(|i| i.rise_time), rise);
+        assert_ne!(s.analysis.info.as_ref().and_then(|i| i.rise_time), rise);
         s.apply(&mut kept, Command::Undo);
         assert_eq!(
             kept.system,

@@ -192,7 +192,8 @@ fn root_row(
 ) -> Vec<Command> {
     let mut out = Vec::new();
     ui.horizontal_wrapped(|ui| {
-        let name = ui.selectable_label(is_selected, id.label(lang));
+        // "pole 1:" (the s-plane's handle is "pole 1").
+        let name = ui.selectable_label(is_selected, format!("{}:", id.label(lang)));
         if name.clicked() {
             out.push(Command::Select(Some(id)));
         }
