@@ -275,6 +275,11 @@ impl DegrauApp {
         self.dirty = true;
     }
 
+    /// Where the step plot was drawn in the last Design frame (the PNG export's region).
+    pub fn plot_rect(&self) -> Option<egui::Rect> {
+        self.plot_rect
+    }
+
     /// The root currently selected on the s-plane.
     pub fn selected(&self) -> Option<design::state::RootId> {
         self.saved.design.splane.selected

@@ -66,6 +66,8 @@ crate::phrases! {
             "plano s: σ (1/s) na horizontal, jω (rad/s) na vertical"
         ),
         Mirror => ("mirror", "espelho"),
+        PlaneName => ("s-plane", "plano s"),
+        PlotName => ("step response", "resposta ao degrau"),
         AddRealPoleHere => ("Add real pole here", "Acrescentar polo real aqui"),
         AddPolePairHere => ("Add complex pole pair here", "Acrescentar par de polos complexos aqui"),
         AddRealZeroHere => ("Add real zero here", "Acrescentar zero real aqui"),

@@ -159,6 +159,8 @@ pub fn show(ui: &mut Ui, system: &System, state: &SPlaneState, look: &Look) -> V
     let mut out = Vec::new();
     let size = ui.available_size().max(Vec2::splat(120.0));
     let (rect, background) = ui.allocate_exact_size(size, Sense::click_and_drag());
+    let name = P::PlaneName.get(look.lang);
+    background.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
     let view = state
         .view
         .and_then(View::sane)

@@ -200,6 +200,10 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
         .and_then(|((_, b), name)| b.response.as_ref().map(|r| (name, r)));
     let hover =
         move |pos: &HoverPosition<'_>| Some(hover_text(pos, main_response, compare_response, lang));
+    // Until the student zooms or pans the plot (a double-click returns), its range is the
+    // current curves' own, frame after frame; kept with the plot as egui_plot keeps its own.
+    let navigated_id = ui.id().with("step plot navigated");
+    let navigated: bool = ui.data(|d| d.get_temp(navigated_id)).unwrap_or(false);
     ui.scope(|ui| {
         let font = FontId::proportional(PLOT_TEXT);
         ui.style_mut()
@@ -226,6 +230,9 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
             .default_y_bounds(y_lo, y_hi)
             .min_size(egui::vec2(200.0, 200.0))
             .show(ui, |plot| {
+                if !navigated {
+                    plot.set_auto_bounds(true);
+                }
                 if kept.markers.ghost
                     && let Some(g) = &session.ghost
                 {
@@ -249,6 +256,23 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
                 );
                 draw_markers(plot, analysis, &kept.markers, look);
             });
+        let r = &response.response;
+        let moved = r.dragged()
+            || (r.hovered()
+                && ui
+                    .input(|i| i.smooth_scroll_delta != egui::Vec2::ZERO || i.zoom_delta() != 1.0));
+        let now = if r.double_clicked() {
+            false
+        } else {
+            navigated || moved
+        };
+        if now != navigated {
+            ui.data_mut(|d| d.insert_temp(navigated_id, now));
+        }
+        let name = P::PlotName.get(lang);
+        response
+            .response
+            .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
         response.response.rect
     })
     .inner
