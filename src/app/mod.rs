@@ -1,8 +1,10 @@
 //! The egui desktop app. The top level is thin: one [`Saved`] (what is kept between runs),
 //! the sessions of the modes (Design: [`design`]; Identify: [`identify`]), the notices and
-//! the saver. Each frame the views draw from the sessions and return commands, the commands
-//! are applied once (egui's own `wrap_app.rs` pattern) and the derived data is brought up to
-//! date at once, so the next frame draws a consistent state; nothing changes while drawing.
+//! the saver. Each frame the views draw from the sessions and return commands (egui's own
+//! `wrap_app.rs` pattern): the menu's and the keys' commands are applied before the mode
+//! draws, the mode views' commands once after they have all drawn, and the derived data is
+//! brought up to date at once, so every view of a frame shows one state and nothing
+//! changes while drawing.
 //!
 //! Every change to the design system is one undoable edit (a drag is one edit; a typed
 //! number is one edit when committed). The session ([`Saved`]) is kept in the app's own
@@ -306,6 +308,11 @@ impl DegrauApp {
                     .inner,
             );
         }
+        // The menu, the keys and the notices are the frame's input: applied before the mode
+        // draws, so a mode chosen in the menu is the one drawn this frame.
+        self.apply(ui.ctx(), commands);
+        let look = self.look();
+        let mut commands = Vec::new();
         self.dropped_and_pasted(ui);
         match self.saved.mode {
             Mode::Identify => self.identify_frame(ui),
