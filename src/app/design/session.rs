@@ -92,9 +92,13 @@ impl Session {
             Command::SetGainMode(mode) => self.edit(kept, |s| s.gain_mode = mode),
             Command::SetDelay(delay) => self.edit(kept, |s| s.delay = delay),
             Command::SetAmplitude(a) => self.edit(kept, |s| s.amplitude = a),
+            // A typed value is taken as it is: beyond the limits it is refused, not clamped.
             Command::SetRoot { id, re, im } => self.edit(kept, |s| {
                 if let Some(r) = s.root_mut(id) {
-                    r.move_to(re, im);
+                    r.re = re;
+                    if r.kind == super::state::RootKind::Pair {
+                        r.im = im;
+                    }
                 }
             }),
             Command::DragRoot { id, re, im } => {
@@ -291,7 +295,14 @@ mod tests {
     fn a_root_beyond_the_limits_is_never_applied() {
         let mut kept = Kept::default();
         let mut s = Session::new(&kept);
-        for (re, im) in [(-1e300, 0.0), (-2e6, 0.0), (-9e5, 9e5)] {
+        let typed = [
+            (-1e300, 0.0),
+            (-2e6, 0.0),
+            (-9e5, 9e5),
+            (-1.0, -2.0),
+            (f64::NAN, 1.0),
+        ];
+        for (re, im) in typed {
             s.apply(
                 &mut kept,
                 Command::SetRoot {
@@ -300,28 +311,41 @@ mod tests {
                     im,
                 },
             );
-            s.apply(
-                &mut kept,
-                Command::DragRoot {
-                    id: pole(0),
-                    re,
-                    im,
-                },
-            );
-            s.apply(&mut kept, Command::EndDrag);
         }
+        let tiny = Root::real(-1e-12);
         s.apply(
             &mut kept,
             Command::AddRoot {
                 role: RootRole::Zero,
-                root: Root::real(-1e-12),
+                root: tiny,
             },
         );
         assert_eq!(kept.system, System::default());
+        assert!(!s.history.can_undo());
         assert_eq!(
             placement_of(&kept.system, pole(0), -1e300, 2.0),
             Err(crate::app::field::LimitReason::RootMagnitude)
         );
+        // A drag stops at the limit, and a corner beyond |s| = 1e6 is not taken.
+        let limit = crate::app::design::state::ROOT_LIMIT;
+        s.apply(
+            &mut kept,
+            Command::DragRoot {
+                id: pole(1),
+                re: -1e300,
+                im: 0.0,
+            },
+        );
+        assert_eq!(kept.system.poles[1], Root::real(-limit));
+        s.apply(
+            &mut kept,
+            Command::DragRoot {
+                id: pole(0),
+                re: -9e5,
+                im: 9e5,
+            },
+        );
+        assert_eq!(kept.system.poles[0], Root::pair(-1.0, 2.0));
     }
 
     #[test]
