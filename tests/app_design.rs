@@ -156,3 +156,89 @@ fn hovering_the_plot_reads_the_curve_at_the_cursor_t() {
         );
     }
 }
+
+fn open_menu_item(h: &mut Harness<'_, DegrauApp>, menu: &str, item: &str) {
+    h.get_by_label(menu).click();
+    h.run_steps(2);
+    h.get_by_label(item).click();
+    h.run_steps(3);
+}
+
+#[test]
+fn copy_as_code_puts_the_system_on_the_clipboard_and_says_so() {
+    let mut h = harness(DegrauApp::default());
+    h.get_by_label("File").click();
+    h.run_steps(2);
+    h.get_by_label("Copy as MATLAB code").click();
+    h.step();
+    let copied: Vec<String> = h
+        .output()
+        .platform_output
+        .commands
+        .iter()
+        .filter_map(|c| match c {
+            egui::OutputCommand::CopyText(t) => Some(t.clone()),
+            _ => None,
+        })
+        .collect();
+    // 0.5/((s² + 2s + 5)(s + 5)) = 0.5/(s³ + 7s² + 15s + 25)
+    assert_eq!(
+        copied,
+        ["G = tf([0.5], [1 7 15 25]);\nstep(G)\nstepinfo(G)"]
+    );
+    h.run_steps(2);
+    h.get_by_label("Copied the system as MATLAB code");
+}
+
+#[test]
+fn saving_over_a_file_asks_first_and_a_png_waits_for_the_dialog_to_close() {
+    let dir = std::env::temp_dir().join(format!("degrau-overwrite-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("curve.csv");
+    std::fs::write(&path, "kept\n").unwrap();
+    let mut h = harness(DegrauApp::default());
+    open_menu_item(&mut h, "File", "Export…");
+    h.get_all_by_role(egui::accesskit::Role::TextInput)
+        .find(|n| n.value().is_some_and(|v| v.ends_with("degrau_step.png")))
+        .expect("the export path field")
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.event(egui::Event::Text(path.to_str().unwrap().into()));
+    h.run_steps(2);
+    h.get_by_label("Save curve as CSV").click();
+    h.run_steps(2);
+    h.get_by_label_contains("already exists. Overwrite it?");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "kept\n", "not yet");
+    h.get_by_label("Cancel").click();
+    h.run_steps(2);
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "kept\n");
+    h.get_by_label("Save curve as CSV").click();
+    h.run_steps(2);
+    h.get_by_label("Overwrite").click();
+    h.run_steps(2);
+    assert!(
+        std::fs::read_to_string(&path)
+            .unwrap()
+            .starts_with("t_s,y\n")
+    );
+    // A PNG to a new file: the dialog closes first, so the screenshot cannot show it.
+    let png = dir.join("plot.png");
+    h.get_all_by_role(egui::accesskit::Role::TextInput)
+        .find(|n| n.value().is_some_and(|v| v.ends_with("curve.csv")))
+        .expect("the export path field")
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.event(egui::Event::Text(png.to_str().unwrap().into()));
+    h.run_steps(2);
+    h.get_by_label("Save step plot as PNG").click();
+    h.run_steps(2);
+    assert!(
+        h.query_by_label("Save step plot as PNG").is_none(),
+        "the export window is closed while the screenshot is taken"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

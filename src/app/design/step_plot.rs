@@ -202,7 +202,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
         move |pos: &HoverPosition<'_>| Some(hover_text(pos, main_response, compare_response, lang));
     // Until the student zooms or pans the plot (a double-click returns), its range is the
     // current curves' own, frame after frame; kept with the plot as egui_plot keeps its own.
-    let navigated_id = ui.id().with("step plot navigated");
+    let navigated_id = ui.scope_id().with("step plot navigated");
     let navigated: bool = ui.data(|d| d.get_temp(navigated_id)).unwrap_or(false);
     ui.scope(|ui| {
         let font = FontId::proportional(PLOT_TEXT);
