@@ -127,7 +127,20 @@ fn splane_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec
         .readout
         .clone()
         .unwrap_or_else(|| P::SPlaneHelp.get(lang).to_string());
-    ui.add(egui::Label::new(RichText::new(readout).weak()).truncate());
+    // Two lines always, so the canvas below never moves while the readout changes, and
+    // the text wraps rather than being cut.
+    let line = ui.text_style_height(&egui::TextStyle::Body);
+    let size = egui::vec2(
+        ui.available_width(),
+        2.0 * line + ui.spacing().item_spacing.y,
+    );
+    let (rect, _) = ui.allocate_exact_size(size, egui::Sense::hover());
+    ui.put(
+        rect,
+        egui::Label::new(RichText::new(readout).weak())
+            .wrap()
+            .halign(egui::Align::LEFT),
+    );
     out.extend(splane::show(ui, &kept.system, state, look));
     out
 }
