@@ -1,6 +1,6 @@
 //! The system a student edits, as the app holds it: roots (a real root or a conjugate pair
 //! σ ± jω), the gain, the dead time and the step amplitude, with undo/redo history.
-//! Nothing here draws; the panels read and change these structs.
+//! Nothing here draws; the views read these structs and the session changes them.
 
 use serde::{Deserialize, Serialize};
 
