@@ -1,12 +1,16 @@
 //! Saving figures and data: the step plot or the whole window as PNG (from a screenshot of
-//! the real window) and the sampled curve as CSV. The path is typed or chosen with a file
-//! dialog; the outcome is reported in words.
+//! the real window, taken once the dialog has closed) and the sampled curve as CSV. The
+//! path is typed or chosen with a file dialog; a file that exists is overwritten only when
+//! the student confirms; the outcome is reported in words, in the app's language.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, Sender, channel};
 
 use eframe::egui::{self, ColorImage, Rect, Ui};
+
+use crate::text::app::App as T;
+use crate::text::{Lang, Localize};
 
 /// What went wrong while saving, in plain words.
 #[derive(Debug, thiserror::Error)]
@@ -81,6 +85,21 @@ pub fn save_png(path: &Path, image: &ColorImage) -> Result<(), ExportError> {
         .map_err(|source| ExportError::Png { path: name, source })
 }
 
+impl Localize for ExportError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            ExportError::Io { path, source } => {
+                format!("{} {path}: {source}", T::CouldNotWrite.get(lang))
+            }
+            ExportError::Png { path, source } => {
+                format!("{} {path}: {source}", T::CouldNotEncode.get(lang))
+            }
+            ExportError::NoCurve => T::NoCurve.get(lang).to_string(),
+            ExportError::NoPath => T::NoPath.get(lang).to_string(),
+        }
+    }
+}
+
 /// Which figure a PNG export takes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Figure {
@@ -88,12 +107,53 @@ pub enum Figure {
     Window,
 }
 
-/// The export window's state.
+/// What the dialog was asked to save.
+#[derive(Debug, Clone, PartialEq)]
+enum Save {
+    Png(Figure, PathBuf),
+    Csv(PathBuf),
+}
+
+impl Save {
+    fn path(&self) -> &Path {
+        match self {
+            Save::Png(_, p) | Save::Csv(p) => p,
+        }
+    }
+}
+
+/// What happened, said in the dialog.
+#[derive(Debug)]
+enum Outcome {
+    Taking,
+    SavedPng(PathBuf),
+    SavedCurve(PathBuf),
+    Failed(ExportError),
+}
+
+impl Outcome {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            Outcome::Taking => T::Taking.get(lang).to_string(),
+            Outcome::SavedPng(p) => format!("{} {}", T::Saved.get(lang), p.display()),
+            Outcome::SavedCurve(p) => format!("{} {}", T::SavedCurve.get(lang), p.display()),
+            Outcome::Failed(e) => format!("{} {}", T::NotSaved.get(lang), e.text(lang)),
+        }
+    }
+}
+
+/// The export window's state. A PNG is taken on the first frame after the window has
+/// closed (so the image never shows the dialog), and the window opens again to say how it
+/// went; a file that exists is overwritten only once the student says so.
 pub struct ExportState {
     pub open: bool,
     pub path: String,
-    pub status: Option<String>,
-    results: (Sender<String>, Receiver<String>),
+    status: Option<Outcome>,
+    /// A save waiting for "Overwrite".
+    confirm: Option<Save>,
+    /// A PNG to take once the window is closed.
+    pending: Option<(Figure, PathBuf)>,
+    results: (Sender<Outcome>, Receiver<Outcome>),
 }
 
 impl Default for ExportState {
@@ -102,6 +162,8 @@ impl Default for ExportState {
             open: false,
             path: default_path("degrau_step.png"),
             status: None,
+            confirm: None,
+            pending: None,
             results: channel(),
         }
     }
@@ -116,38 +178,52 @@ fn default_path(name: &str) -> String {
 }
 
 impl ExportState {
-    /// Shows the window; `plot_rect` is where the step plot was drawn last frame.
+    /// The status line now, in `lang` (for tests and the dialog).
+    pub fn status(&self, lang: Lang) -> Option<String> {
+        self.status.as_ref().map(|s| s.text(lang))
+    }
+
+    /// Shows the window; `plot_rect` is where the step plot was drawn this frame.
     pub fn show(
         &mut self,
         ctx: &egui::Context,
         plot_rect: Option<Rect>,
         curve: &[[f64; 2]],
         compare: Option<&[[f64; 2]]>,
+        lang: Lang,
     ) {
-        while let Ok(message) = self.results.1.try_recv() {
-            self.status = Some(message);
+        while let Ok(outcome) = self.results.1.try_recv() {
+            self.status = Some(outcome);
+            self.open = true;
+        }
+        if let Some((figure, path)) = self.pending.take() {
+            // The window was not drawn this frame: the screenshot shows the app alone.
+            self.take_png(ctx, figure, path, plot_rect);
+            return;
         }
         let mut open = self.open;
-        egui::Window::new("Export")
+        egui::Window::new(T::ExportTitle.get(lang))
             .open(&mut open)
             .resizable(false)
+            .fade_out(false)
             .show(ctx, |ui| {
-                self.contents(ui, plot_rect, curve, compare);
+                self.contents(ui, curve, compare, lang);
             });
-        self.open = open;
+        self.open = open && self.open;
     }
 
     fn contents(
         &mut self,
         ui: &mut Ui,
-        plot_rect: Option<Rect>,
         curve: &[[f64; 2]],
         compare: Option<&[[f64; 2]]>,
+        lang: Lang,
     ) {
         ui.horizontal(|ui| {
-            ui.label("File");
-            ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(360.0));
-            if ui.button("Browse…").clicked()
+            let name = ui.label(T::FileLabel.get(lang));
+            ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(360.0))
+                .labelled_by(name.id);
+            if ui.button(T::Browse.get(lang)).clicked()
                 && let Some(p) = rfd::FileDialog::new()
                     .set_file_name("degrau_step.png")
                     .save_file()
@@ -155,36 +231,74 @@ impl ExportState {
                 self.path = p.display().to_string();
             }
         });
-        ui.horizontal(|ui| {
-            if ui.button("Save step plot as PNG").clicked() {
-                self.request_png(ui.ctx(), Figure::StepPlot, plot_rect);
+        let mut asked = None;
+        ui.horizontal_wrapped(|ui| {
+            if ui.button(T::SavePlotPng.get(lang)).clicked() {
+                asked =
+                    Some(with_extension(&self.path, "png").map(|p| Save::Png(Figure::StepPlot, p)));
             }
-            if ui.button("Save window as PNG").clicked() {
-                self.request_png(ui.ctx(), Figure::Window, None);
+            if ui.button(T::SaveWindowPng.get(lang)).clicked() {
+                asked =
+                    Some(with_extension(&self.path, "png").map(|p| Save::Png(Figure::Window, p)));
             }
-            if ui.button("Save curve as CSV").clicked() {
-                let path = with_extension(&self.path, "csv");
-                self.status = Some(
-                    match path.and_then(|p| save_csv(&p, curve, compare).map(|_| p)) {
-                        Ok(p) => format!("Saved the curve to {}", p.display()),
-                        Err(e) => format!("Not saved: {e}"),
-                    },
-                );
+            if ui.button(T::SaveCsv.get(lang)).clicked() {
+                asked = Some(with_extension(&self.path, "csv").map(Save::Csv));
             }
         });
+        match asked {
+            Some(Ok(save)) if save.path().exists() => self.confirm = Some(save),
+            Some(Ok(save)) => self.save(ui.ctx(), save, curve, compare),
+            Some(Err(e)) => self.status = Some(Outcome::Failed(e)),
+            None => {}
+        }
+        if let Some(save) = self.confirm.clone() {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(format!("{} {}", save.path().display(), T::Exists.get(lang)));
+                if ui.button(T::Overwrite.get(lang)).clicked() {
+                    self.confirm = None;
+                    self.save(ui.ctx(), save, curve, compare);
+                }
+                if ui.button(T::Cancel.get(lang)).clicked() {
+                    self.confirm = None;
+                }
+            });
+        }
         if let Some(status) = &self.status {
-            ui.label(status);
+            ui.add(egui::Label::new(status.text(lang)).wrap());
         }
     }
 
-    fn request_png(&mut self, ctx: &egui::Context, figure: Figure, plot_rect: Option<Rect>) {
-        let path = match with_extension(&self.path, "png") {
-            Ok(p) => p,
-            Err(e) => {
-                self.status = Some(format!("Not saved: {e}"));
-                return;
+    fn save(
+        &mut self,
+        ctx: &egui::Context,
+        save: Save,
+        curve: &[[f64; 2]],
+        compare: Option<&[[f64; 2]]>,
+    ) {
+        match save {
+            Save::Csv(path) => {
+                self.status = Some(match save_csv(&path, curve, compare) {
+                    Ok(()) => Outcome::SavedCurve(path),
+                    Err(e) => Outcome::Failed(e),
+                });
             }
-        };
+            Save::Png(figure, path) => {
+                // Close the window first; the PNG is taken on the next frame.
+                self.open = false;
+                self.status = Some(Outcome::Taking);
+                self.pending = Some((figure, path));
+                ctx.request_repaint();
+            }
+        }
+    }
+
+    fn take_png(
+        &mut self,
+        ctx: &egui::Context,
+        figure: Figure,
+        path: PathBuf,
+        plot_rect: Option<Rect>,
+    ) {
         let region = match figure {
             Figure::StepPlot => plot_rect,
             Figure::Window => None,
@@ -192,17 +306,16 @@ impl ExportState {
         let pixels_per_point = ctx.pixels_per_point();
         let sender = self.results.0.clone();
         let repaint = ctx.clone();
-        self.status = Some("Taking the screenshot…".into());
         ctx.request_screenshot(move |image: Arc<ColorImage>| {
             let cropped = match region {
                 Some(r) => image.region(&r, Some(pixels_per_point)),
                 None => (*image).clone(),
             };
-            let message = match save_png(&path, &cropped) {
-                Ok(()) => format!("Saved {}", path.display()),
-                Err(e) => format!("Not saved: {e}"),
+            let outcome = match save_png(&path, &cropped) {
+                Ok(()) => Outcome::SavedPng(path),
+                Err(e) => Outcome::Failed(e),
             };
-            let _ = sender.send(message);
+            let _ = sender.send(outcome);
             repaint.request_repaint();
         });
     }

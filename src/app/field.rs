@@ -24,6 +24,7 @@ crate::phrases! {
         ),
         Below => ("is below the smallest allowed value", "é menor que o menor valor permitido"),
         Above => ("is above the largest allowed value", "é maior que o maior valor permitido"),
+        Refused => ("is refused", "é recusado"),
     }
 }
 
@@ -50,6 +51,9 @@ pub enum FieldError {
         max: f64,
         why: Option<LimitReason>,
     },
+    /// A number in range on its own that the role refuses with the rest of what it holds
+    /// (a root too far from the others).
+    Refused { value: f64, why: LimitReason },
 }
 
 /// What a limit protects, said to the student beside the number.
@@ -57,6 +61,8 @@ pub enum FieldError {
 pub enum LimitReason {
     /// A pole or zero beyond this is outside what the exact response can show.
     RootMagnitude,
+    /// A root this much faster than the slowest: the response cannot show both time scales.
+    RootSpread,
     /// The step amplitude.
     Amplitude,
     /// A dead time, in seconds.
@@ -73,6 +79,12 @@ impl Localize for LimitReason {
             LimitReason::RootMagnitude => lang.pick(
                 "a pole or zero this far from the origin is beyond what the exact response can show",
                 "um polo ou zero tão longe da origem está além do que a resposta exata pode mostrar",
+            ),
+            LimitReason::RootSpread => lang.pick(
+                "a root more than 1e12 times faster than the slowest one is beyond what the exact \
+                 response can show",
+                "uma raiz mais de 1e12 vezes mais rápida que a mais lenta está além do que a \
+                 resposta exata pode mostrar",
             ),
             LimitReason::Amplitude => lang.pick("the step amplitude", "a amplitude do degrau"),
             LimitReason::DeadTime => lang.pick("the dead time (s)", "o tempo morto (s)"),
@@ -111,6 +123,12 @@ impl Localize for FieldError {
                 lang.num(*max, 4),
                 why(w)
             ),
+            FieldError::Refused { value, why: w } => format!(
+                "{} {}: {}",
+                lang.num(*value, 4),
+                FieldPhrase::Refused.get(lang),
+                w.text(lang)
+            ),
         }
     }
 }
@@ -119,6 +137,7 @@ impl Localize for FieldError {
 pub fn examples() -> Vec<Message> {
     let reasons = [
         LimitReason::RootMagnitude,
+        LimitReason::RootSpread,
         LimitReason::Amplitude,
         LimitReason::DeadTime,
         LimitReason::Gain,
@@ -142,6 +161,10 @@ pub fn examples() -> Vec<Message> {
             value: 1e300,
             max: 1e6,
             why: Some(LimitReason::RootMagnitude),
+        },
+        FieldError::Refused {
+            value: 1e-9,
+            why: LimitReason::RootSpread,
         },
     ];
     let reasons = reasons
@@ -249,6 +272,9 @@ struct Buffer {
     lang: Lang,
 }
 
+/// A check of a value against the rest of what the role holds (beyond its [`Limits`]).
+type Validate<'a> = Box<dyn Fn(f64) -> Result<(), FieldError> + 'a>;
+
 /// A labelled numeric field: the label names it for screen readers and kittest.
 pub struct NumberField<'a> {
     label: &'a str,
@@ -256,6 +282,8 @@ pub struct NumberField<'a> {
     limits: Limits,
     width: f32,
     suffix: &'a str,
+    salt: Option<u64>,
+    validate: Option<Validate<'a>>,
 }
 
 impl<'a> NumberField<'a> {
@@ -266,7 +294,23 @@ impl<'a> NumberField<'a> {
             limits: Limits::default(),
             width: 90.0,
             suffix: "",
+            salt: None,
+            validate: None,
         }
+    }
+
+    /// Tells apart fields with the same label (the σ of each root).
+    pub fn id_salt(mut self, salt: impl std::hash::Hash) -> Self {
+        let mut hasher = std::collections::hash_map::DefaultHasher::new();
+        std::hash::Hash::hash(&salt, &mut hasher);
+        self.salt = Some(std::hash::Hasher::finish(&hasher));
+        self
+    }
+
+    /// A further check of an accepted number; a refusal shows beside the field.
+    pub fn validate(mut self, check: impl Fn(f64) -> Result<(), FieldError> + 'a) -> Self {
+        self.validate = Some(Box::new(check));
+        self
     }
 
     pub fn limits(mut self, limits: Limits) -> Self {
@@ -286,9 +330,10 @@ impl<'a> NumberField<'a> {
     }
 
     /// Draws the field with its label; the value typed, once committed and accepted.
-    /// A refusal is drawn beside the field, in the error colour, until the text is fixed.
+    /// A refusal is drawn under the field, in the error colour and wrapped to the space there
+    /// is (so it never widens a panel), until the text is fixed.
     pub fn show(self, ui: &mut Ui, lang: Lang) -> Option<f64> {
-        let id = ui.make_persistent_id(("number field", self.label));
+        let id = field_id(ui, self.label, self.salt);
         let mut buffer: Buffer = ui.data(|d| d.get_temp(id)).unwrap_or_default();
         let changed_outside = buffer.source.to_bits() != self.value.to_bits();
         let blank = buffer.error.is_none() && (buffer.text.is_empty() || buffer.lang != lang);
@@ -313,7 +358,11 @@ impl<'a> NumberField<'a> {
             }
             if response.lost_focus() && buffer.editing {
                 buffer.editing = false;
-                match self.limits.parse(&buffer.text) {
+                let checked = self.limits.parse(&buffer.text).and_then(|v| {
+                    self.validate.as_ref().map_or(Ok(()), |check| check(v))?;
+                    Ok(v)
+                });
+                match checked {
                     Ok(v) => {
                         buffer.error = None;
                         buffer.source = v;
@@ -323,19 +372,27 @@ impl<'a> NumberField<'a> {
                     Err(e) => buffer.error = Some(e),
                 }
             }
-            if let Some(e) = &buffer.error {
-                ui.label(RichText::new(e.text(lang)).color(ui.visuals().error_fg_color));
-            }
         });
+        if let Some(e) = &buffer.error {
+            ui.add(
+                egui::Label::new(RichText::new(e.text(lang)).color(ui.visuals().error_fg_color))
+                    .wrap(),
+            );
+        }
         ui.data_mut(|d| d.insert_temp(id, buffer));
         committed
     }
 }
 
+/// The id of a field's typing buffer.
+fn field_id(ui: &Ui, label: &str, salt: Option<u64>) -> Id {
+    ui.make_persistent_id(("number field", label, salt))
+}
+
 /// The field's refusal, if its last entry was refused (for tests and status lines).
 pub fn refusal(ui: &Ui, label: &str) -> Option<FieldError> {
-    let id: Id = ui.make_persistent_id(("number field", label));
-    ui.data(|d| d.get_temp::<Buffer>(id)).and_then(|b| b.error)
+    ui.data(|d| d.get_temp::<Buffer>(field_id(ui, label, None)))
+        .and_then(|b| b.error)
 }
 
 #[cfg(test)]

@@ -1,43 +1,39 @@
-//! The egui desktop app: an s-plane on the left, the live step response on the right, the
-//! system's numbers in a side panel and the metrics and y(t) in a bottom strip. Everything
-//! it shows comes from the library ([`crate::lti`]); this module only lays out and edits.
+//! The egui desktop app. The top level is thin: one [`Saved`] (what is kept between runs),
+//! the sessions of the modes (Design: [`design`]; Identify: [`identify`]), the notices and
+//! the saver. Each frame the views draw from the sessions and return commands (egui's own
+//! `wrap_app.rs` pattern): the menu's and the keys' commands are applied before the mode
+//! draws, the mode views' commands once after they have all drawn, and the derived data is
+//! brought up to date at once, so every view of a frame shows one state and nothing
+//! changes while drawing.
 //!
-//! Every change to the system, whatever made it (a drag, a typed number, a menu), is one
-//! undoable edit: the app compares the system before and after each frame and records the
-//! state before an edit *session* (a drag or a focused text field counts as one).
+//! Every change to the design system is one undoable edit (a drag is one edit; a typed
+//! number is one edit when committed). The session ([`Saved`]) is kept in the app's own
+//! state file ([`persist`]): every state the app is given is checked field by field before
+//! it reaches a view, and it is handed to a saver thread only when something changed.
 //!
-//! The session ([`Saved`]) is kept in the app's own state file ([`persist`]): every state
-//! the app is given, from the file or from a caller, is checked field by field before it
-//! reaches a view, and every change is handed to a saver thread that writes it within a
-//! fraction of a second, frame or no frame.
+//! The presentation size ([`Saved::scale`], 1×–2×) is egui's zoom factor, so text, markers
+//! and line widths scale together; the language ([`Saved::lang`]) picks every label.
 
-pub mod analysis;
+pub mod design;
 pub mod export;
 pub mod field;
 pub mod grid;
 pub mod identify;
 pub mod job;
 pub mod look;
-pub mod metrics_table;
 pub mod persist;
-pub mod presets;
-pub mod splane;
-pub mod state;
-pub mod step_plot;
-pub mod system_panel;
+
+use std::time::Instant;
 
 use eframe::egui::{self, Key, KeyboardShortcut, Modifiers, RichText, Ui};
 use serde::{Deserialize, Serialize};
 
-use analysis::Analysis;
+use design::state::System;
 use export::ExportState;
-use presets::{Preset, presets};
-use splane::SPlaneState;
-use state::{History, RootId, System};
-use step_plot::Markers;
-use system_panel::PanelAction;
+use look::{Look, SCALE_RANGE, clamp_scale};
 
-use crate::lti::StepInfoOptions;
+use crate::text::app::{App as T, CodeKind, Notice};
+use crate::text::{Lang, Localize};
 
 /// Opens the Degrau window and blocks until it is closed.
 pub fn run() -> eframe::Result {
@@ -80,43 +76,73 @@ pub enum Mode {
     Identify,
 }
 
-/// What is kept between runs (the state file of [`persist`]).
-#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+/// What is kept between runs (the state file of [`persist`]). The Design mode's part is
+/// at the top level of the file (`system`, `compare`, `splane`, …) as it always was.
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Saved {
     pub mode: Mode,
     pub ident: identify::IdentSettings,
-    pub system: System,
-    pub compare: Option<(String, System)>,
-    pub splane: SPlaneState,
-    pub markers: Markers,
-    pub options: StepInfoOptions,
-    pub phase_form: bool,
+    #[serde(flatten)]
+    pub design: design::Kept,
     pub dark: bool,
+    /// The language of every label.
+    pub lang: Lang,
+    /// The presentation size, within [`SCALE_RANGE`].
+    pub scale: f32,
 }
 
-/// The app: saved state plus what is derived or transient.
+impl Default for Saved {
+    fn default() -> Self {
+        Self {
+            mode: Mode::default(),
+            ident: identify::IdentSettings::default(),
+            design: design::Kept::default(),
+            dark: false,
+            lang: Lang::default(),
+            scale: 1.0,
+        }
+    }
+}
+
+/// A change the top level makes (the menu, the notices, the keys), or a mode's command.
+#[must_use = "a command does nothing until it is applied"]
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    SetMode(Mode),
+    SetDark(bool),
+    SetLang(Lang),
+    SetScale(f32),
+    Dismiss(usize),
+    OpenExport,
+    /// Choose a step test with the file dialog and open it in the Identify mode.
+    OpenTestFile,
+    /// The design system as code, to the clipboard.
+    CopyCode(CodeKind),
+    Design(design::Command),
+}
+
+/// The app: saved state, the mode sessions, the notices and the saver.
 pub struct DegrauApp {
     pub saved: Saved,
-    pub history: History,
-    pub analysis: Analysis,
-    compare_analysis: Option<Analysis>,
-    /// The response before the current/last edit session, drawn faintly.
-    ghost: Option<Vec<[f64; 2]>>,
-    /// The system as it was when the frame started.
-    frame_start: System,
-    /// True while an edit session is open (pointer held or a text field focused).
-    editing: bool,
-    presets: Vec<Preset>,
+    /// The Design mode's history and derived data (its state is `saved.design`).
+    pub design: design::Session,
+    /// The Identify mode's session (its settings are saved as `saved.ident`).
+    pub ident: identify::Session,
+    /// Messages for the student (what could not be restored or saved), dismissable.
+    pub notices: Vec<Notice>,
     export: ExportState,
     plot_rect: Option<egui::Rect>,
-    /// The identification view (its settings live in `saved.ident`).
-    pub ident: identify::Session,
     fonts_ready: bool,
+    /// The zoom factor the app last set (a different one was set by egui's own keys).
+    zoom_set: f32,
+    /// A short confirmation ("Copied …") and when it was given (seconds of egui time).
+    confirmation: Option<(T, f64)>,
     /// Writes the session to the state file after each change (none: not kept).
     saver: Option<persist::Saver>,
-    /// Messages for the student (what could not be restored or saved), dismissable.
-    pub notices: Vec<String>,
+    /// Something was changed since the session was last handed to the saver.
+    dirty: bool,
+    last_offer: Option<Instant>,
 }
 
 /// Adds egui's bundled monospace font (Hack) as a fallback of the proportional one, so
@@ -135,6 +161,10 @@ const UNDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z)
 const REDO: KeyboardShortcut =
     KeyboardShortcut::new(Modifiers::COMMAND.plus(Modifiers::SHIFT), Key::Z);
 const REDO_Y: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
+/// How long a confirmation stays in the menu bar (s).
+const CONFIRMATION_SECONDS: f64 = 4.0;
+/// The presentation sizes the menu offers.
+const SCALES: [f32; 6] = [1.0, 1.2, 1.4, 1.6, 1.8, 2.0];
 
 impl Default for DegrauApp {
     fn default() -> Self {
@@ -182,10 +212,7 @@ impl DegrauApp {
             Some(path) => Self::with_state_file(path),
             None => {
                 let mut app = Self::default();
-                app.notices.push(
-                    "There is no home directory to keep the session in: it will not be saved."
-                        .into(),
-                );
+                app.notices.push(Notice::NoHome);
                 app
             }
         }
@@ -193,27 +220,20 @@ impl DegrauApp {
 
     /// An app showing `saved` as it is (the callers check it first).
     fn unchecked(saved: Saved) -> Self {
-        let saved_ident = saved.ident.clone();
-        let analysis = Analysis::new(&saved.system, saved.options);
-        let compare_analysis = saved
-            .compare
-            .as_ref()
-            .map(|(_, s)| Analysis::new(s, saved.options));
+        let ident = identify::Session::with_settings(saved.ident.clone());
         Self {
-            frame_start: saved.system.clone(),
+            design: design::Session::new(&saved.design),
             saved,
-            history: History::default(),
-            analysis,
-            compare_analysis,
-            ghost: None,
-            editing: false,
-            presets: presets(),
+            ident,
+            notices: Vec::new(),
             export: ExportState::default(),
             plot_rect: None,
-            ident: identify::Session::with_settings(saved_ident),
             fonts_ready: false,
+            zoom_set: 1.0,
+            confirmation: None,
             saver: None,
-            notices: Vec::new(),
+            dirty: true,
+            last_offer: None,
         }
     }
 
@@ -224,58 +244,98 @@ impl DegrauApp {
 
     /// The system being edited.
     pub fn system(&self) -> &System {
-        &self.saved.system
+        &self.saved.design.system
+    }
+
+    /// What every view is drawn with this frame.
+    pub fn look(&self) -> Look {
+        Look::new(self.saved.lang, self.saved.dark, self.saved.scale)
     }
 
     /// Replaces the system as one undoable edit.
     pub fn set_system(&mut self, system: System) {
-        self.history.record(&self.saved.system);
-        self.ghost = Some(self.analysis.curve.clone());
-        self.saved.system = system;
-        self.frame_start = self.saved.system.clone();
-        self.saved.splane.view = None;
-        self.saved.splane.selected = None;
+        self.design
+            .apply(&mut self.saved.design, design::Command::SetSystem(system));
+        self.dirty = true;
     }
 
     pub fn undo(&mut self) {
-        if self.history.undo(&mut self.saved.system) {
-            self.after_history_jump();
-        }
+        self.design
+            .apply(&mut self.saved.design, design::Command::Undo);
+        self.dirty = true;
     }
 
     pub fn redo(&mut self) {
-        if self.history.redo(&mut self.saved.system) {
-            self.after_history_jump();
-        }
+        self.design
+            .apply(&mut self.saved.design, design::Command::Redo);
+        self.dirty = true;
     }
 
-    fn after_history_jump(&mut self) {
-        self.ghost = Some(self.analysis.curve.clone());
-        self.frame_start = self.saved.system.clone();
-        self.editing = false;
-        let (poles, zeros) = (self.saved.system.poles.len(), self.saved.system.zeros.len());
-        if let Some(sel) = self.saved.splane.selected {
-            let n = match sel.role {
-                state::RootRole::Pole => poles,
-                state::RootRole::Zero => zeros,
-            };
-            if sel.index >= n {
-                self.saved.splane.selected = None;
+    /// Where the step plot was drawn in the last Design frame (the PNG export's region).
+    pub fn plot_rect(&self) -> Option<egui::Rect> {
+        self.plot_rect
+    }
+
+    /// The root currently selected on the s-plane.
+    pub fn selected(&self) -> Option<design::state::RootId> {
+        self.saved.design.splane.selected
+    }
+
+    /// Draws one frame into `ui` (the whole window), applies what the views asked for,
+    /// then hands the session to the saver if it changed.
+    pub fn show(&mut self, ui: &mut Ui) {
+        self.prepare(ui.ctx());
+        // Whatever changed the state outside a command (a test, a restored file) is
+        // analysed before anything draws.
+        self.design.refresh(&self.saved.design);
+        let look = self.look();
+        let mut commands = self.keyboard(ui);
+        commands.extend(
+            egui::Panel::top("menu")
+                .show(ui, |ui| self.menu_bar(ui, &look))
+                .inner,
+        );
+        if !self.notices.is_empty() {
+            commands.extend(
+                egui::Panel::top("notices")
+                    .show(ui, |ui| self.show_notices(ui, &look))
+                    .inner,
+            );
+        }
+        // The menu, the keys and the notices are the frame's input: applied before the mode
+        // draws, so a mode chosen in the menu is the one drawn this frame.
+        self.apply(ui.ctx(), commands);
+        let look = self.look();
+        let mut commands = Vec::new();
+        self.dropped_and_pasted(ui);
+        match self.saved.mode {
+            Mode::Identify => self.identify_frame(ui, &look),
+            Mode::Design => {
+                let shown = design::show(ui, &self.design, &self.saved.design, &look);
+                self.plot_rect = shown.plot_rect;
+                commands.extend(shown.commands.into_iter().map(Command::Design));
             }
         }
-    }
-
-    /// Draws one frame into `ui` (the whole window), then hands the session to the saver if
-    /// it changed.
-    pub fn show(&mut self, ui: &mut Ui) {
-        self.show_mode(ui);
+        let compare_curve = self
+            .design
+            .compare_analysis
+            .as_ref()
+            .map(|a| a.curve.as_slice());
+        self.export.show(
+            ui.ctx(),
+            self.plot_rect,
+            &self.design.analysis.curve,
+            compare_curve,
+            look.lang,
+        );
+        self.apply(ui.ctx(), commands);
         self.autosave(ui.ctx());
     }
 
-    /// Draws the frame of the current mode.
-    fn show_mode(&mut self, ui: &mut Ui) {
+    /// Fonts, theme and the presentation size, before anything is laid out.
+    fn prepare(&mut self, ctx: &egui::Context) {
         if !self.fonts_ready {
-            use_math_fallback_font(ui.ctx());
+            use_math_fallback_font(ctx);
             self.fonts_ready = true;
         }
         let theme = if self.saved.dark {
@@ -283,303 +343,268 @@ impl DegrauApp {
         } else {
             egui::Theme::Light
         };
-        if ui.ctx().theme() != theme {
-            ui.ctx().set_theme(theme);
+        if ctx.theme() != theme {
+            ctx.set_theme(theme);
         }
-        self.keyboard(ui);
-        self.frame_start = self.saved.system.clone();
-
-        egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
-        if !self.notices.is_empty() {
-            egui::Panel::top("notices").show(ui, |ui| self.show_notices(ui));
+        // egui's own Ctrl+plus / Ctrl+minus change the zoom: that is the presentation size.
+        let zoom = ctx.zoom_factor();
+        if (zoom - self.zoom_set).abs() > 1e-3 {
+            self.saved.scale = clamp_scale(zoom);
+            self.dirty = true;
         }
-        self.dropped_and_pasted(ui);
-        if self.saved.mode == Mode::Identify {
-            self.identify(ui);
-            return;
+        self.saved.scale = clamp_scale(self.saved.scale);
+        if (ctx.zoom_factor() - self.saved.scale).abs() > 1e-3 {
+            ctx.set_zoom_factor(self.saved.scale);
         }
-        let action = egui::Panel::right("system")
-            .resizable(true)
-            .default_size(330.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical()
-                    .show(ui, |ui| {
-                        system_panel::show(
-                            ui,
-                            &mut self.saved.system,
-                            &mut self.saved.splane.selected,
-                            &self.analysis,
-                            &self.presets,
-                            self.saved.compare.is_some(),
-                        )
-                    })
-                    .inner
-            })
-            .inner;
-        egui::Panel::bottom("metrics")
-            .resizable(true)
-            .default_size(230.0)
-            .show(ui, |ui| {
-                let compare = compare_pair(&self.saved.compare, &self.compare_analysis);
-                metrics_table::show(ui, &self.analysis, compare, &mut self.saved.phase_form);
-            });
-        let half = (ui.available_width() * 0.45).max(250.0);
-        egui::Panel::left("s-plane")
-            .resizable(true)
-            .default_size(half)
-            .show(ui, |ui| self.splane_panel(ui));
-        egui::CentralPanel::default().show(ui, |ui| self.plot_panel(ui));
-
-        self.apply(action);
-        self.close_edit_session(ui);
-        self.refresh();
-        let compare_curve = self.compare_analysis.as_ref().map(|a| a.curve.as_slice());
-        self.export.show(
-            ui.ctx(),
-            self.plot_rect,
-            &self.analysis.curve,
-            compare_curve,
-        );
+        self.zoom_set = self.saved.scale;
     }
 
-    fn menu_bar(&mut self, ui: &mut Ui) {
-        egui::MenuBar::new().ui(ui, |ui| {
-            ui.selectable_value(&mut self.saved.mode, Mode::Design, "Poles and zeros");
-            ui.selectable_value(&mut self.saved.mode, Mode::Identify, "Identify a step test");
-            ui.separator();
-            ui.menu_button("File", |ui| {
-                if ui.button("Open a step test…").clicked() {
-                    self.saved.mode = Mode::Identify;
-                    if let Some(p) = rfd::FileDialog::new().pick_file() {
-                        self.ident.load_path(&p.display().to_string());
-                    }
-                    ui.close();
-                }
-                if ui.button("Export…").clicked() {
-                    self.export.open = true;
-                    ui.close();
-                }
-                if ui.button("Reset to the built-in example").clicked() {
-                    self.set_system(System::default());
-                    ui.close();
-                }
-            });
-            ui.menu_button("Edit", |ui| {
-                if ui
-                    .add_enabled(
-                        self.history.can_undo(),
-                        egui::Button::new("Undo").shortcut_text(ui.ctx().format_shortcut(&UNDO)),
-                    )
-                    .clicked()
-                {
-                    self.undo();
-                    ui.close();
-                }
-                if ui
-                    .add_enabled(
-                        self.history.can_redo(),
-                        egui::Button::new("Redo").shortcut_text(ui.ctx().format_shortcut(&REDO)),
-                    )
-                    .clicked()
-                {
-                    self.redo();
-                    ui.close();
-                }
-                if ui
-                    .add_enabled(
-                        self.saved.splane.selected.is_some(),
-                        egui::Button::new("Delete selected root").shortcut_text("Delete"),
-                    )
-                    .clicked()
-                {
-                    self.delete_selected();
-                    ui.close();
-                }
-            });
-            ui.menu_button("View", |ui| {
-                ui.checkbox(&mut self.saved.dark, "Dark theme");
-                ui.checkbox(
-                    &mut self.saved.splane.damping_grid,
-                    "Constant ζ and ωn lines",
-                );
-                ui.checkbox(&mut self.saved.splane.snap, "Snap roots to the grid");
-                if ui.button("Fit the s-plane to the roots").clicked() {
-                    self.saved.splane.view = None;
-                    ui.close();
-                }
-            });
-            if ui
-                .add_enabled(self.history.can_undo(), egui::Button::new("Undo"))
-                .clicked()
-            {
-                self.undo();
-            }
-            if ui
-                .add_enabled(self.history.can_redo(), egui::Button::new("Redo"))
-                .clicked()
-            {
-                self.redo();
-            }
-        });
-    }
-
-    fn splane_panel(&mut self, ui: &mut Ui) {
-        ui.horizontal_wrapped(|ui| {
-            ui.checkbox(&mut self.saved.splane.damping_grid, "ζ / ωn grid");
-            ui.checkbox(&mut self.saved.splane.snap, "Snap");
-            if ui
-                .button("Fit")
-                .on_hover_text("Fit the view to the roots")
-                .clicked()
-            {
-                self.saved.splane.view = None;
-            }
-            if self.saved.system.has_rhp_pole() {
-                ui.label(
-                    RichText::new("Unstable: a pole is in the right half plane")
-                        .color(ui.visuals().error_fg_color)
-                        .strong(),
-                );
-            }
-        });
-        let readout = self
-            .saved
-            .splane
-            .readout
-            .clone()
-            .unwrap_or_else(|| "Drag a pole (×) or zero (o); right-click to add; scroll to zoom; drag the background to pan.".into());
-        ui.weak(readout);
-        splane::show(ui, &mut self.saved.system, &mut self.saved.splane);
-    }
-
-    fn plot_panel(&mut self, ui: &mut Ui) {
-        step_plot::controls(ui, &mut self.saved.markers, &mut self.saved.options);
-        if let Err(reason) = &self.analysis.tf {
-            ui.label(
-                RichText::new(format!("No step response: {reason}"))
-                    .color(ui.visuals().error_fg_color),
-            );
+    /// Applies the frame's commands, in order, and asks for the next frame to show them.
+    fn apply(&mut self, ctx: &egui::Context, commands: Vec<Command>) {
+        let mut changed = false;
+        for command in commands {
+            changed |= !matches!(command, Command::Design(design::Command::Readout(_)));
+            self.apply_one(ctx, command);
         }
-        self.plot_rect = Some(ui.available_rect_before_wrap());
-        let compare = compare_pair(&self.saved.compare, &self.compare_analysis);
-        step_plot::show(
-            ui,
-            &self.analysis,
-            compare,
-            self.ghost.as_deref(),
-            &self.saved.markers,
-        );
-    }
-
-    fn apply(&mut self, action: PanelAction) {
-        match action {
-            PanelAction::None => {}
-            PanelAction::LoadPreset(i) => {
-                if let Some(p) = self.presets.get(i) {
-                    let (system, compare) = (
-                        p.system.clone(),
-                        p.compare.as_ref().map(|(n, s)| (n.to_string(), s.clone())),
-                    );
-                    self.set_system(system);
-                    self.saved.compare = compare;
-                }
-            }
-            PanelAction::CompareWithCurrent => {
-                self.saved.compare = Some(("kept".into(), self.saved.system.clone()));
-            }
-            PanelAction::StopComparing => self.saved.compare = None,
+        if changed {
+            self.dirty = true;
+            ctx.request_repaint();
         }
     }
 
-    fn keyboard(&mut self, ui: &mut Ui) {
-        let typing = ui.ctx().memory(|m| m.focused().is_some());
+    fn apply_one(&mut self, ctx: &egui::Context, command: Command) {
+        match command {
+            Command::SetMode(mode) => self.saved.mode = mode,
+            Command::SetDark(dark) => self.saved.dark = dark,
+            Command::SetLang(lang) => self.saved.lang = lang,
+            Command::SetScale(scale) => self.saved.scale = clamp_scale(scale),
+            Command::Dismiss(i) => {
+                if i < self.notices.len() {
+                    self.notices.remove(i);
+                }
+            }
+            Command::OpenExport => self.export.open = true,
+            Command::OpenTestFile => {
+                self.saved.mode = Mode::Identify;
+                if let Some(p) = rfd::FileDialog::new().pick_file() {
+                    self.ident.load_path(&p.display().to_string());
+                }
+            }
+            Command::CopyCode(kind) => {
+                if let Ok(tf) = &self.design.analysis.tf {
+                    let (num, den) = (tf.num(), tf.den());
+                    let code = match kind {
+                        CodeKind::Matlab => crate::text::code::matlab(&num, &den, tf.delay()),
+                        CodeKind::PythonControl => {
+                            crate::text::code::python_control(&num, &den, tf.delay())
+                        }
+                    };
+                    ctx.copy_text(code);
+                    let when = ctx.input(|i| i.time);
+                    self.confirmation = Some((kind.copied(), when));
+                }
+            }
+            Command::Design(c) => self.design.apply(&mut self.saved.design, c),
+        }
+    }
+
+    /// Undo and redo (both modes' menus and keys act on the design system), then the
+    /// Design mode's own keys.
+    fn keyboard(&mut self, ui: &mut Ui) -> Vec<Command> {
         // Ctrl+Z matches Ctrl+Shift+Z too in egui's logical matching: consume redo first.
         let redo = ui.input_mut(|i| i.consume_shortcut(&REDO) || i.consume_shortcut(&REDO_Y));
         let undo = ui.input_mut(|i| i.consume_shortcut(&UNDO));
+        let mut out = Vec::new();
         if redo {
-            self.redo();
+            out.push(Command::Design(design::Command::Redo));
         } else if undo {
-            self.undo();
+            out.push(Command::Design(design::Command::Undo));
         }
-        if typing {
-            return;
+        if self.saved.mode == Mode::Design {
+            out.extend(
+                design::keyboard(ui, &self.saved.design)
+                    .into_iter()
+                    .map(Command::Design),
+            );
         }
-        let Some(id) = self.saved.splane.selected else {
-            return;
-        };
-        if ui.input(|i| i.key_pressed(Key::Delete) || i.key_pressed(Key::Backspace)) {
-            self.delete_selected();
-            return;
-        }
-        let step = self
-            .saved
-            .splane
-            .view
-            .map_or(0.1, |v| grid::nice_step(70.0 / v.pixels_per_unit) / 10.0);
-        let (dx, dy) = ui.input(|i| {
-            let mut d = (0.0, 0.0);
-            if i.key_pressed(Key::ArrowLeft) {
-                d.0 -= step;
+        out
+    }
+
+    fn menu_bar(&self, ui: &mut Ui, look: &Look) -> Vec<Command> {
+        let lang = look.lang;
+        let mut out = Vec::new();
+        let history = &self.design.history;
+        let kept = &self.saved.design;
+        egui::MenuBar::new().ui(ui, |ui| {
+            let mut mode = self.saved.mode;
+            ui.selectable_value(&mut mode, Mode::Design, T::ModeDesign.get(lang));
+            ui.selectable_value(&mut mode, Mode::Identify, T::ModeIdentify.get(lang));
+            if mode != self.saved.mode {
+                out.push(Command::SetMode(mode));
             }
-            if i.key_pressed(Key::ArrowRight) {
-                d.0 += step;
+            ui.separator();
+            ui.menu_button(T::File.get(lang), |ui| {
+                let mut item = |ui: &mut Ui, text: T, enabled: bool, command: Command| {
+                    if ui
+                        .add_enabled(enabled, egui::Button::new(text.get(lang)))
+                        .clicked()
+                    {
+                        out.push(command);
+                        ui.close();
+                    }
+                };
+                item(ui, T::OpenTest, true, Command::OpenTestFile);
+                item(ui, T::Export, true, Command::OpenExport);
+                let has_tf = self.design.analysis.tf.is_ok();
+                item(
+                    ui,
+                    T::CopyMatlab,
+                    has_tf,
+                    Command::CopyCode(CodeKind::Matlab),
+                );
+                item(
+                    ui,
+                    T::CopyPython,
+                    has_tf,
+                    Command::CopyCode(CodeKind::PythonControl),
+                );
+                item(
+                    ui,
+                    T::Reset,
+                    true,
+                    Command::Design(design::Command::SetSystem(System::default())),
+                );
+            });
+            ui.menu_button(T::Edit.get(lang), |ui| {
+                let undo = egui::Button::new(T::Undo.get(lang))
+                    .shortcut_text(ui.ctx().format_shortcut(&UNDO));
+                if ui.add_enabled(history.can_undo(), undo).clicked() {
+                    out.push(Command::Design(design::Command::Undo));
+                    ui.close();
+                }
+                let redo = egui::Button::new(T::Redo.get(lang))
+                    .shortcut_text(ui.ctx().format_shortcut(&REDO));
+                if ui.add_enabled(history.can_redo(), redo).clicked() {
+                    out.push(Command::Design(design::Command::Redo));
+                    ui.close();
+                }
+                let delete = egui::Button::new(T::DeleteSelected.get(lang))
+                    .shortcut_text(T::DeleteKey.get(lang));
+                if let Some(id) = kept.splane.selected
+                    && ui.add(delete).clicked()
+                {
+                    out.push(Command::Design(design::Command::RemoveRoot(id)));
+                    ui.close();
+                }
+            });
+            ui.menu_button(T::View.get(lang), |ui| {
+                let mut dark = self.saved.dark;
+                if ui.checkbox(&mut dark, T::DarkTheme.get(lang)).changed() {
+                    out.push(Command::SetDark(dark));
+                }
+                let mut grid = kept.splane.damping_grid;
+                if ui.checkbox(&mut grid, T::DampingLines.get(lang)).changed() {
+                    out.push(Command::Design(design::Command::SetDampingGrid(grid)));
+                }
+                let mut snap = kept.splane.snap;
+                if ui.checkbox(&mut snap, T::SnapRoots.get(lang)).changed() {
+                    out.push(Command::Design(design::Command::SetSnap(snap)));
+                }
+                if ui.button(T::FitSPlane.get(lang)).clicked() {
+                    out.push(Command::Design(design::Command::SetView(None)));
+                    ui.close();
+                }
+                ui.separator();
+                ui.label(T::PresentationSize.get(lang));
+                for scale in SCALES {
+                    let text = format!("{}×", lang.num(scale as f64, 2));
+                    let on = (self.saved.scale - scale).abs() < 0.05;
+                    if ui.selectable_label(on, text).clicked() {
+                        out.push(Command::SetScale(scale));
+                        ui.close();
+                    }
+                }
+                ui.separator();
+                ui.label(T::Language.get(lang));
+                for l in Lang::ALL {
+                    if ui.selectable_label(l == lang, l.name()).clicked() {
+                        out.push(Command::SetLang(l));
+                        ui.close();
+                    }
+                }
+            });
+            if ui
+                .add_enabled(history.can_undo(), egui::Button::new(T::Undo.get(lang)))
+                .clicked()
+            {
+                out.push(Command::Design(design::Command::Undo));
             }
-            if i.key_pressed(Key::ArrowUp) {
-                d.1 += step;
+            if ui
+                .add_enabled(history.can_redo(), egui::Button::new(T::Redo.get(lang)))
+                .clicked()
+            {
+                out.push(Command::Design(design::Command::Redo));
             }
-            if i.key_pressed(Key::ArrowDown) {
-                d.1 -= step;
+            ui.separator();
+            out.extend(self.size_and_language(ui, look));
+            if let Some((text, _)) = self.confirmation_now(ui.ctx()) {
+                ui.label(RichText::new(text.get(lang)).color(look.palette.main));
             }
-            d
         });
-        if (dx, dy) != (0.0, 0.0)
-            && let Some(root) = self.saved.system.root_mut(id)
+        out
+    }
+
+    /// The visible presentation-size control (A− size A+) and the language switch.
+    fn size_and_language(&self, ui: &mut Ui, look: &Look) -> Vec<Command> {
+        let lang = look.lang;
+        let mut out = Vec::new();
+        let scale = self.saved.scale;
+        let step = 0.2;
+        if ui
+            .add_enabled(scale > *SCALE_RANGE.start() + 1e-3, egui::Button::new("A−"))
+            .on_hover_text(T::Smaller.get(lang))
+            .clicked()
         {
-            let (re, im) = (root.re + dx, root.im + dy);
-            root.move_to(re, im);
+            out.push(Command::SetScale(scale - step));
+        }
+        ui.label(format!("{}×", lang.num(scale as f64, 2)))
+            .on_hover_text(T::PresentationSize.get(lang));
+        if ui
+            .add_enabled(scale < *SCALE_RANGE.end() - 1e-3, egui::Button::new("A+"))
+            .on_hover_text(T::Larger.get(lang))
+            .clicked()
+        {
+            out.push(Command::SetScale(scale + step));
+        }
+        egui::ComboBox::from_id_salt("language")
+            .selected_text(lang.name())
+            .show_ui(ui, |ui| {
+                for l in Lang::ALL {
+                    if ui.selectable_label(l == lang, l.name()).clicked() {
+                        out.push(Command::SetLang(l));
+                    }
+                }
+            })
+            .response
+            .on_hover_text(T::Language.get(lang));
+        out
+    }
+
+    /// The confirmation to show now, if one was given in the last few seconds.
+    fn confirmation_now(&self, ctx: &egui::Context) -> Option<(T, f64)> {
+        let (text, when) = self.confirmation?;
+        let left = CONFIRMATION_SECONDS - (ctx.input(|i| i.time) - when);
+        if left > 0.0 {
+            ctx.request_repaint_after(std::time::Duration::from_secs_f64(left));
+            Some((text, when))
+        } else {
+            None
         }
     }
 
-    fn delete_selected(&mut self) {
-        if let Some(id) = self.saved.splane.selected.take() {
-            let before = self.saved.system.clone();
-            if self.saved.system.remove(id) {
-                self.history.record(&before);
-                self.ghost = Some(self.analysis.curve.clone());
-                self.frame_start = self.saved.system.clone();
-            }
-        }
-    }
-
-    /// Records the state before an edit session and closes the session when the pointer is
-    /// released and no field has focus.
-    fn close_edit_session(&mut self, ui: &Ui) {
-        let changed = self.saved.system != self.frame_start;
-        if changed && !self.editing {
-            self.history.record(&self.frame_start);
-            self.ghost = Some(self.analysis.curve.clone());
-            self.editing = true;
-        }
-        let busy = ui.input(|i| i.pointer.any_down()) || ui.ctx().memory(|m| m.focused().is_some());
-        if !busy && !changed {
-            self.editing = false;
-        }
-    }
-
-    fn refresh(&mut self) {
-        self.analysis
-            .refresh(&self.saved.system, self.saved.options);
-        match (&self.saved.compare, &mut self.compare_analysis) {
-            (Some((_, s)), Some(a)) => a.refresh(s, self.saved.options),
-            (Some((_, s)), None) => {
-                self.compare_analysis = Some(Analysis::new(s, self.saved.options))
-            }
-            (None, _) => self.compare_analysis = None,
-        }
-    }
-
-    /// The identification mode: its session polled, its views drawn, their commands applied.
-    fn identify(&mut self, ui: &mut Ui) {
+    /// The identification mode: its session polled (finished jobs taken in), its views
+    /// drawn from it, then their commands applied.
+    fn identify_frame(&mut self, ui: &mut Ui, look: &Look) {
         if !self.ident.has_waker() {
             let ctx = ui.ctx().clone();
             self.ident
@@ -588,18 +613,17 @@ impl DegrauApp {
         if self.ident.poll() {
             ui.ctx().request_repaint();
         }
-        let look = look::Look::new(crate::text::Lang::En, self.saved.dark, 1.0);
-        for command in identify::show(ui, &self.ident, &look) {
+        for command in identify::show(ui, &self.ident, look) {
             if let Some(identify::Outcome::ShowOnSPlane { tf, du }) = self.ident.apply(command) {
-                self.show_model(&tf, du);
+                self.set_system(System::from_transfer_function(&tf, du));
+                self.saved.mode = Mode::Design;
             }
         }
-    }
-
-    /// Opens a fitted model in the pole-zero view, stepped by the test's Δu.
-    fn show_model(&mut self, tf: &crate::lti::TransferFunction, du: f64) {
-        self.set_system(System::from_transfer_function(tf, du));
-        self.saved.mode = Mode::Design;
+        // Its settings are offered to the saver when they changed (it writes only what
+        // differs from the last file).
+        if self.ident.settings_to_save() != self.saved.ident {
+            self.dirty = true;
+        }
     }
 
     /// Files dropped on the window load as step tests; text pasted in the identification
@@ -615,6 +639,7 @@ impl DegrauApp {
         if let Some(path) = dropped.first() {
             self.saved.mode = Mode::Identify;
             self.ident.load_path(path);
+            self.dirty = true;
         }
         let typing = ui.ctx().memory(|m| m.focused().is_some());
         if self.saved.mode == Mode::Identify && !typing {
@@ -626,64 +651,65 @@ impl DegrauApp {
             });
             if let Some(text) = pasted {
                 self.ident.load_text(&text);
+                self.dirty = true;
             }
         }
     }
 
     /// The notices, each with a button to dismiss it.
-    fn show_notices(&mut self, ui: &mut Ui) {
-        let mut dismissed = None;
-        for (i, text) in self.notices.iter().enumerate() {
+    fn show_notices(&self, ui: &mut Ui, look: &Look) -> Vec<Command> {
+        let mut out = Vec::new();
+        for (i, notice) in self.notices.iter().enumerate() {
             ui.horizontal_wrapped(|ui| {
-                if ui.button("Dismiss").clicked() {
-                    dismissed = Some(i);
+                if ui.button(T::Dismiss.get(look.lang)).clicked() {
+                    out.push(Command::Dismiss(i));
                 }
-                ui.label(RichText::new(text).color(ui.visuals().warn_fg_color));
+                ui.add(
+                    egui::Label::new(
+                        RichText::new(notice.text(look.lang)).color(look.palette.warning),
+                    )
+                    .wrap(),
+                );
             });
         }
-        if let Some(i) = dismissed {
-            self.notices.remove(i);
-        }
+        out
     }
 
-    /// Hands the session to the saver (it writes only when it changed) and shows a notice
-    /// when writing failed.
+    /// Hands the session to the saver when something changed (during a drag at most once
+    /// per [`persist::DEBOUNCE`]), and shows a notice when writing failed.
     fn autosave(&mut self, ctx: &egui::Context) {
         let Some(saver) = self.saver.as_mut() else {
             return;
         };
-        self.saved.ident = self.ident.settings_to_save();
-        let offered = serde_json::to_string_pretty(&self.saved)
-            .map_err(|e| e.to_string())
-            .and_then(|json| {
-                saver
-                    .offer(json, Some(ctx))
-                    .then_some(())
-                    .ok_or_else(|| "the saver has stopped".to_string())
-            });
-        let failure = offered.err().or_else(|| saver.take_error());
-        if let Some(reason) = failure {
-            let text = format!("Could not save the session: {reason}");
-            if !self.notices.contains(&text) {
-                self.notices.push(text);
+        let recent = self
+            .last_offer
+            .is_some_and(|t| t.elapsed() < persist::DEBOUNCE);
+        let dragging = ctx.input(|i| i.pointer.any_down());
+        let failure = if self.dirty && !(dragging && recent) {
+            self.saved.ident = self.ident.settings_to_save();
+            self.dirty = false;
+            self.last_offer = Some(Instant::now());
+            serde_json::to_string_pretty(&self.saved)
+                .map_err(|e| e.to_string())
+                .and_then(|json| {
+                    saver
+                        .offer(json, Some(ctx))
+                        .then_some(())
+                        .ok_or_else(|| "the saver has stopped".to_string())
+                })
+                .err()
+        } else {
+            if self.dirty {
+                ctx.request_repaint_after(persist::DEBOUNCE);
+            }
+            None
+        };
+        if let Some(reason) = failure.or_else(|| saver.take_error()) {
+            let notice = Notice::SaveFailed(reason);
+            if !self.notices.contains(&notice) {
+                self.notices.push(notice);
             }
         }
-    }
-
-    /// The root currently selected on the s-plane.
-    pub fn selected(&self) -> Option<RootId> {
-        self.saved.splane.selected
-    }
-}
-
-/// The comparison system's name and analysis, when comparing.
-fn compare_pair<'a>(
-    saved: &'a Option<(String, System)>,
-    analysis: &'a Option<Analysis>,
-) -> Option<(&'a str, &'a Analysis)> {
-    match (saved, analysis) {
-        (Some((name, _)), Some(a)) => Some((name.as_str(), a)),
-        _ => None,
     }
 }
 
@@ -692,28 +718,18 @@ fn restore_notice(
     problems: &[persist::FieldProblem],
     backup: Option<&std::path::Path>,
     backup_error: Option<&str>,
-) -> Option<String> {
+) -> Option<Notice> {
     if problems.is_empty() {
         return None;
     }
-    let parts: Vec<String> = problems
-        .iter()
-        .map(|p| format!("{} ({})", p.field, p.reason))
-        .collect();
-    let mut text = format!(
-        "Part of the last session could not be restored and was reset to its default: {}.",
-        parts.join("; ")
-    );
-    if let Some(path) = backup {
-        text.push_str(&format!(
-            " The file as it was is kept as {}.",
-            path.display()
-        ));
-    }
-    if let Some(reason) = backup_error {
-        text.push_str(&format!(" It could not be kept aside: {reason}."));
-    }
-    Some(text)
+    Some(Notice::NotRestored {
+        fields: problems
+            .iter()
+            .map(|p| format!("{} ({})", p.field, p.reason))
+            .collect(),
+        backup: backup.map(|p| p.display().to_string()),
+        backup_error: backup_error.map(str::to_string),
+    })
 }
 
 impl eframe::App for DegrauApp {

@@ -20,10 +20,14 @@ use eframe::egui;
 use serde::de::DeserializeOwned;
 use serde_json::{Map, Value};
 
+use crate::text::Localize;
+
 use super::Saved;
+use super::design::Kept;
+use super::design::splane::{SPlaneState, View};
+use super::design::state::{self, RootRole, System};
 use super::identify::{CODES, IdentSettings};
-use super::splane::{SPlaneState, View};
-use super::state::{self, RootRole, System};
+use super::look::clamp_scale;
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::MAX_STARTS;
 
@@ -184,37 +188,63 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
     };
     let d = Saved::default();
     let mut f = Fields::new(Some(obj), "", &mut problems);
-    let system = restore_system(f.nested("system"), d.system);
+    let system = restore_system(f.nested("system"), d.design.system);
+    let design = Kept {
+        compare: f.checked("compare", d.design.compare, |c| {
+            c.as_ref().map_or(Ok(()), |(_, s)| {
+                s.check()?;
+                s.placement().map_err(|why| why.text(crate::text::Lang::En))
+            })
+        }),
+        splane: restore_splane(f.nested("splane"), d.design.splane),
+        markers: f.take("markers", d.design.markers),
+        options: f.checked("options", d.design.options, |o| o.validate()),
+        phase_form: f.take("phase_form", d.design.phase_form),
+        system,
+    };
     let mut saved = Saved {
         mode: f.take("mode", d.mode),
         ident: restore_ident(f.nested("ident"), d.ident),
-        compare: f.checked("compare", d.compare, |c| {
-            c.as_ref().map_or(Ok(()), |(_, s)| s.check())
-        }),
-        splane: restore_splane(f.nested("splane"), d.splane),
-        markers: f.take("markers", d.markers),
-        options: f.checked("options", d.options, |o| o.validate()),
-        phase_form: f.take("phase_form", d.phase_form),
+        design,
         dark: f.take("dark", d.dark),
-        system,
+        lang: f.take("lang", d.lang),
+        scale: f.checked("scale", d.scale, |s| {
+            if clamp_scale(*s) == *s {
+                Ok(())
+            } else {
+                Err(format!("the presentation size {s} is not from 1 to 2"))
+            }
+        }),
     };
     // A selection that names no root of the restored system is dropped (nothing to tell).
-    if let Some(id) = saved.splane.selected
-        && saved.system.root(id).is_none()
+    if let Some(id) = saved.design.splane.selected
+        && saved.design.system.root(id).is_none()
     {
-        saved.splane.selected = None;
+        saved.design.splane.selected = None;
     }
     (saved, problems)
 }
 
 fn restore_system(mut f: Fields<'_>, d: System) -> System {
-    System {
+    let fallback = d.clone();
+    let system = System {
         poles: f.checked("poles", d.poles, |l| state::check_roots(RootRole::Pole, l)),
         zeros: f.checked("zeros", d.zeros, |l| state::check_roots(RootRole::Zero, l)),
         gain: f.checked("gain", d.gain, |g| state::check_gain(*g)),
         gain_mode: f.take("gain_mode", d.gain_mode),
         delay: f.checked("delay", d.delay, |t| state::check_delay(*t)),
         amplitude: f.checked("amplitude", d.amplitude, |a| state::check_amplitude(*a)),
+    };
+    // Roots each within range but too far apart for the exact response fall back whole.
+    match system.placement() {
+        Ok(()) => system,
+        Err(why) => {
+            f.problems.push(FieldProblem {
+                field: f.name("poles"),
+                reason: why.text(crate::text::Lang::En),
+            });
+            fallback
+        }
     }
 }
 
@@ -530,7 +560,7 @@ fn save_loop(path: &Path, rx: &Receiver<Snapshot>, errors: &Sender<String>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::app::state::Root;
+    use crate::app::design::state::Root;
 
     fn temp_dir(name: &str) -> PathBuf {
         let dir =
@@ -543,9 +573,9 @@ mod tests {
     #[test]
     fn a_session_round_trips_with_no_problem() {
         let mut saved = Saved::default();
-        saved.system.poles.push(Root::real(-7.5));
+        saved.design.system.poles.push(Root::real(-7.5));
         saved.dark = true;
-        saved.splane.view = Some(View {
+        saved.design.splane.view = Some(View {
             center_re: -2.0,
             center_im: 0.5,
             pixels_per_unit: 40.0,
@@ -559,7 +589,7 @@ mod tests {
     #[test]
     fn each_bad_field_falls_back_alone() {
         let mut saved = Saved::default();
-        saved.system.gain = 3.0;
+        saved.design.system.gain = 3.0;
         saved.dark = true;
         saved.ident.code = "P1D".into();
         let mut value = serde_json::to_value(&saved).unwrap();
@@ -577,12 +607,18 @@ mod tests {
             ["ident.starts", "options", "splane.view", "system.poles"],
             "{problems:?}"
         );
-        assert_eq!(back.system.poles, System::default().poles);
-        assert_eq!(back.system.gain, 3.0, "the rest of the system is kept");
+        assert_eq!(back.design.system.poles, System::default().poles);
+        assert_eq!(
+            back.design.system.gain, 3.0,
+            "the rest of the system is kept"
+        );
         assert!(back.dark);
         assert_eq!(back.ident.code, "P1D");
         assert_eq!(back.ident.starts, IdentSettings::default().starts);
-        assert_eq!(back.splane.view, None, "an absurd view is fitted again");
+        assert_eq!(
+            back.design.splane.view, None,
+            "an absurd view is fitted again"
+        );
     }
 
     #[test]

@@ -15,8 +15,10 @@
 
 use serde::{Deserialize, Serialize};
 
+pub mod app;
 pub mod cli;
 pub mod code;
+pub mod design;
 pub mod ident;
 pub mod identify;
 pub mod lti;
@@ -176,6 +178,8 @@ pub fn every_message() -> Vec<Message> {
     all.extend(lti::messages());
     all.extend(operating_point::messages());
     all.extend(identify::messages());
+    all.extend(design::messages());
+    all.extend(app::messages());
     all
 }
 

@@ -32,3 +32,44 @@ pub fn wheel(h: &mut Harness<'_, DegrauApp>, at: Pos2, dy: f32) {
         source: egui::MouseWheelSource::Wheel,
     });
 }
+
+/// Every text painted in the last frame, with the rect it covers (tick labels and canvas
+/// captions are painted, not widgets).
+pub fn painted_texts(h: &Harness<'_, DegrauApp>) -> Vec<(String, egui::Rect)> {
+    fn walk(shape: &egui::Shape, out: &mut Vec<(String, egui::Rect)>) {
+        match shape {
+            egui::Shape::Text(t) => out.push((
+                t.galley.text().to_string(),
+                t.galley.rect.translate(t.pos.to_vec2()),
+            )),
+            egui::Shape::Vec(v) => v.iter().for_each(|s| walk(s, out)),
+            _ => {}
+        }
+    }
+    let mut out = Vec::new();
+    for clipped in &h.output().shapes {
+        walk(&clipped.shape, &mut out);
+    }
+    out
+}
+
+/// The numbers painted inside `rect` (tick labels), with where they are; `decimal` is the
+/// language's separator.
+pub fn numbers_in(
+    h: &Harness<'_, DegrauApp>,
+    rect: egui::Rect,
+    decimal: char,
+) -> Vec<(f64, egui::Rect)> {
+    painted_texts(h)
+        .into_iter()
+        .filter(|(_, r)| rect.contains(r.center()))
+        .filter_map(|(t, r)| {
+            t.trim()
+                .replace(decimal, ".")
+                .replace('\u{2212}', "-")
+                .parse::<f64>()
+                .ok()
+                .map(|v| (v, r))
+        })
+        .collect()
+}

@@ -3,14 +3,18 @@
 //! Each handle is an accessible widget labelled "pole 1", "zero 2" (a pair's lower member is
 //! "pole 1 mirror"), so tests find and drag it like a person would.
 
-use eframe::egui::{
-    self, Align2, Color32, FontId, Pos2, Rect, Response, Sense, Shape, Stroke, Ui, Vec2,
-};
+use eframe::egui::{self, Align2, FontId, Pos2, Rect, Response, Sense, Shape, Stroke, Ui, Vec2};
 use serde::{Deserialize, Serialize};
 
-use crate::app::state::{ROOT_LIMIT, Root, RootId, RootKind, RootRole, System};
-use crate::lti::number::format_number;
-use crate::lti::number::sig;
+use crate::app::look::{Look, Palette};
+use crate::text::Lang;
+use crate::text::design::Design as P;
+
+use super::commands::Command;
+use super::state::{ROOT_LIMIT, Root, RootId, RootKind, RootRole, System};
+
+/// Size of the canvas's axis numbers and captions (points, before the presentation size).
+const CANVAS_TEXT: f32 = 13.0;
 
 /// Pixels around a handle that grab it.
 const HANDLE_RADIUS: f32 = 9.0;
@@ -61,19 +65,13 @@ impl View {
 }
 
 /// The canvas's own state (kept between frames and runs).
-#[derive(Debug, Clone, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SPlaneState {
     /// `None` fits the view to the roots on the next frame.
     pub view: Option<View>,
     pub damping_grid: bool,
     pub snap: bool,
     pub selected: Option<RootId>,
-    /// Where the last right-click on empty canvas happened (s-plane coordinates).
-    #[serde(skip)]
-    menu_at: Option<(f64, f64)>,
-    /// What the pointer is over: a readout for the student.
-    #[serde(skip)]
-    pub readout: Option<String>,
 }
 
 impl Default for SPlaneState {
@@ -83,8 +81,6 @@ impl Default for SPlaneState {
             damping_grid: true,
             snap: false,
             selected: None,
-            menu_at: None,
-            readout: None,
         }
     }
 }
@@ -115,7 +111,7 @@ impl Transform {
 
     /// A 1-2-5 grid step giving about [`GRID_PIXELS`] between lines.
     pub fn grid_step(&self) -> f64 {
-        super::grid::nice_step(GRID_PIXELS / self.view.pixels_per_unit)
+        crate::app::grid::nice_step(GRID_PIXELS / self.view.pixels_per_unit)
     }
 }
 
@@ -157,80 +153,63 @@ pub fn fit_view(system: &System, size: Vec2) -> View {
     })
 }
 
-/// Colours of the canvas for the current theme.
-struct Palette {
-    stable: Color32,
-    grid: Color32,
-    axis: Color32,
-    damping: Color32,
-    pole: Color32,
-    zero: Color32,
-    selected: Color32,
-    text: Color32,
-}
-
-impl Palette {
-    fn of(ui: &Ui) -> Self {
-        let dark = ui.visuals().dark_mode;
-        Self {
-            stable: if dark {
-                Color32::from_rgba_unmultiplied(40, 90, 50, 50)
-            } else {
-                Color32::from_rgba_unmultiplied(120, 200, 130, 45)
-            },
-            grid: ui.visuals().widgets.noninteractive.bg_stroke.color,
-            axis: ui.visuals().text_color(),
-            damping: if dark {
-                Color32::from_rgb(90, 110, 160)
-            } else {
-                Color32::from_rgb(130, 150, 200)
-            },
-            pole: if dark {
-                Color32::from_rgb(255, 120, 100)
-            } else {
-                Color32::from_rgb(200, 40, 30)
-            },
-            zero: if dark {
-                Color32::from_rgb(110, 170, 255)
-            } else {
-                Color32::from_rgb(20, 80, 200)
-            },
-            selected: Color32::from_rgb(240, 170, 0),
-            text: ui.visuals().weak_text_color(),
-        }
-    }
-}
-
-/// Draws the canvas and applies the student's edits to `system`. Returns the background's
-/// response (hover, menus).
-pub fn show(ui: &mut Ui, system: &mut System, state: &mut SPlaneState) -> Response {
+/// Draws the canvas; returns the student's edits (drags, menu choices, pan and zoom) as
+/// commands. `system` and `state` are only read.
+pub fn show(ui: &mut Ui, system: &System, state: &SPlaneState, look: &Look) -> Vec<Command> {
+    let mut out = Vec::new();
     let size = ui.available_size().max(Vec2::splat(120.0));
     let (rect, background) = ui.allocate_exact_size(size, Sense::click_and_drag());
+    let name = P::PlaneName.get(look.lang);
+    background.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
     let view = state
         .view
         .and_then(View::sane)
         .unwrap_or_else(|| fit_view(system, rect.size()));
-    state.view = Some(view);
+    if state.view != Some(view) {
+        out.push(Command::SetView(Some(view)));
+    }
     let transform = Transform { rect, view };
-    let palette = Palette::of(ui);
     let painter = ui.painter_at(rect);
 
-    paint_background(&painter, &transform, state.damping_grid, &palette);
-    state.readout = background
+    paint_background(&painter, &transform, state.damping_grid, look);
+    let mut readout_text = background
         .hover_pos()
         .map(|p| transform.to_plane(p))
-        .map(|(re, im)| readout(re, im, "s"));
+        .map(|(re, im)| readout(re, im, "s", look.lang));
 
-    pan_and_zoom(ui, &background, &transform, state);
-    background_menu(&background, &transform, system, state);
+    if let Some(v) = pan_and_zoom(ui, &background, &transform)
+        && v != view
+    {
+        out.push(Command::SetView(Some(v)));
+    }
+    out.extend(background_menu(
+        ui,
+        &background,
+        &transform,
+        system,
+        state,
+        look.lang,
+    ));
 
     for id in system.ids() {
-        handle(ui, &painter, &transform, system, state, id, &palette);
+        out.extend(handle(
+            ui,
+            &painter,
+            &transform,
+            system,
+            state,
+            id,
+            look,
+            &mut readout_text,
+        ));
     }
-    background
+    out.push(Command::Readout(readout_text));
+    out
 }
 
-fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, palette: &Palette) {
+fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, look: &Look) {
+    let palette = &look.palette;
+    let lang = look.lang;
     let rect = t.rect;
     let origin = t.to_screen(0.0, 0.0);
     // Stable region: the open left half plane.
@@ -238,14 +217,14 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
         rect.min,
         Pos2::new(origin.x.clamp(rect.left(), rect.right()), rect.bottom()),
     );
-    painter.rect_filled(stable, 0.0, palette.stable);
+    painter.rect_filled(stable, 0.0, palette.stable_region);
 
     let step = t.grid_step();
     let (re0, im1) = t.to_plane(rect.left_top());
     let (re1, im0) = t.to_plane(rect.right_bottom());
     let grid = Stroke::new(0.5, palette.grid);
-    let font = FontId::proportional(11.0);
-    for re in super::grid::multiples(re0, re1, step) {
+    let font = FontId::proportional(CANVAS_TEXT);
+    for re in crate::app::grid::multiples(re0, re1, step) {
         let x = t.to_screen(re, 0.0).x;
         painter.line_segment(
             [Pos2::new(x, rect.top()), Pos2::new(x, rect.bottom())],
@@ -256,13 +235,13 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
             painter.text(
                 Pos2::new(x + 2.0, y + 2.0),
                 Align2::LEFT_TOP,
-                format_number(re),
+                lang.num(re, 6),
                 font.clone(),
-                palette.text,
+                palette.weak_text,
             );
         }
     }
-    for im in super::grid::multiples(im0, im1, step) {
+    for im in crate::app::grid::multiples(im0, im1, step) {
         let y = t.to_screen(0.0, im).y;
         painter.line_segment(
             [Pos2::new(rect.left(), y), Pos2::new(rect.right(), y)],
@@ -273,14 +252,14 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
             painter.text(
                 Pos2::new(x + 3.0, y),
                 Align2::LEFT_CENTER,
-                format!("{}j", format_number(im)),
+                format!("{}j", lang.num(im, 6)),
                 font.clone(),
-                palette.text,
+                palette.weak_text,
             );
         }
     }
     if damping_grid {
-        paint_damping_grid(painter, t, step, palette);
+        paint_damping_grid(painter, t, step, look);
     }
     let axis = Stroke::new(1.2, palette.axis);
     painter.line_segment(
@@ -300,16 +279,17 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
     painter.text(
         rect.right_top() + Vec2::new(-6.0, 4.0),
         Align2::RIGHT_TOP,
-        "s-plane: σ (1/s) across, jω (rad/s) up",
+        P::PlaneCaption.get(lang),
         font,
-        palette.text,
+        palette.weak_text,
     );
 }
 
 /// Constant-ζ rays from the origin into the left half plane and constant-ωn circles.
-fn paint_damping_grid(painter: &egui::Painter, t: &Transform, step: f64, palette: &Palette) {
+fn paint_damping_grid(painter: &egui::Painter, t: &Transform, step: f64, look: &Look) {
+    let (palette, lang) = (&look.palette, look.lang);
     let stroke = Stroke::new(0.7, palette.damping);
-    let font = FontId::proportional(10.0);
+    let font = FontId::proportional(CANVAS_TEXT - 1.0);
     let origin = t.to_screen(0.0, 0.0);
     let reach = (t.rect.width().max(t.rect.height()) as f64) * 2.0 / t.view.pixels_per_unit;
     for zeta in [0.2, 0.4, 0.6, 0.8] {
@@ -324,7 +304,7 @@ fn paint_damping_grid(painter: &egui::Painter, t: &Transform, step: f64, palette
         painter.text(
             at,
             Align2::RIGHT_BOTTOM,
-            format!("ζ={zeta}"),
+            format!("ζ={}", lang.num(zeta, 2)),
             font.clone(),
             palette.damping,
         );
@@ -344,17 +324,17 @@ fn paint_damping_grid(painter: &egui::Painter, t: &Transform, step: f64, palette
         painter.text(
             label_at,
             Align2::RIGHT_BOTTOM,
-            format!("ωn={}", format_number(wn)),
+            format!("ωn={}", lang.num(wn, 6)),
             font.clone(),
             palette.damping,
         );
     }
 }
 
-fn pan_and_zoom(ui: &Ui, background: &Response, t: &Transform, state: &mut SPlaneState) {
-    let Some(view) = state.view.as_mut() else {
-        return;
-    };
+/// The view after a pan (dragging the background) or a zoom (wheel or pinch at the
+/// pointer), if the student did either.
+fn pan_and_zoom(ui: &Ui, background: &Response, t: &Transform) -> Option<View> {
+    let mut view = t.view;
     if background.dragged() {
         let d = background.drag_delta();
         view.center_re -= d.x as f64 / view.pixels_per_unit;
@@ -373,22 +353,33 @@ fn pan_and_zoom(ui: &Ui, background: &Response, t: &Transform, state: &mut SPlan
             view.center_im = im + (pointer.y - c.y) as f64 / view.pixels_per_unit;
         }
     }
-    state.view = state.view.and_then(View::sane);
+    view.sane()
 }
 
+/// The background's right-click menu (add a root where it was clicked, fit the view) and a
+/// click that clears the selection.
 fn background_menu(
+    ui: &Ui,
     background: &Response,
     t: &Transform,
-    system: &mut System,
-    state: &mut SPlaneState,
-) {
-    if background.secondary_clicked() {
-        state.menu_at = background.interact_pointer_pos().map(|p| t.to_plane(p));
+    system: &System,
+    state: &SPlaneState,
+    lang: Lang,
+) -> Vec<Command> {
+    let mut out = Vec::new();
+    // Where the menu was opened (s-plane coordinates), kept with the widget as egui keeps
+    // a text cursor.
+    let menu_id = background.id.with("menu at");
+    if background.secondary_clicked()
+        && let Some(p) = background.interact_pointer_pos()
+    {
+        let at = t.to_plane(p);
+        ui.data_mut(|d| d.insert_temp(menu_id, at));
     }
-    if background.clicked() {
-        state.selected = None;
+    if background.clicked() && state.selected.is_some() {
+        out.push(Command::Select(None));
     }
-    let at = state.menu_at.unwrap_or((-1.0, 1.0));
+    let at: (f64, f64) = ui.data(|d| d.get_temp(menu_id)).unwrap_or((-1.0, 1.0));
     let snap = state.snap.then(|| t.grid_step() / 5.0);
     let (re, im) = (snap_to(at.0, snap), snap_to(at.1, snap));
     let pair_im = if im.abs() > 0.0 {
@@ -397,35 +388,36 @@ fn background_menu(
         t.grid_step()
     };
     background.context_menu(|ui| {
-        let mut add = |ui: &mut Ui, text: &str, role: RootRole, root: Root| {
+        let mut add = |ui: &mut Ui, text: P, role: RootRole, root: Root| {
             if ui
-                .add_enabled(system.has_room(role), egui::Button::new(text))
+                .add_enabled(system.has_room(role), egui::Button::new(text.get(lang)))
                 .clicked()
             {
-                state.selected = Some(system.add(role, root));
+                out.push(Command::AddRoot { role, root });
                 ui.close();
             }
         };
-        add(ui, "Add real pole here", RootRole::Pole, Root::real(re));
+        add(ui, P::AddRealPoleHere, RootRole::Pole, Root::real(re));
         add(
             ui,
-            "Add complex pole pair here",
+            P::AddPolePairHere,
             RootRole::Pole,
             Root::pair(re, pair_im),
         );
-        add(ui, "Add real zero here", RootRole::Zero, Root::real(re));
+        add(ui, P::AddRealZeroHere, RootRole::Zero, Root::real(re));
         add(
             ui,
-            "Add complex zero pair here",
+            P::AddZeroPairHere,
             RootRole::Zero,
             Root::pair(re, pair_im),
         );
         ui.separator();
-        if ui.button("Fit view to the roots").clicked() {
-            state.view = None;
+        if ui.button(P::FitViewToRoots.get(lang)).clicked() {
+            out.push(Command::SetView(None));
             ui.close();
         }
     });
+    out
 }
 
 fn snap_to(v: f64, step: Option<f64>) -> f64 {
@@ -435,24 +427,30 @@ fn snap_to(v: f64, step: Option<f64>) -> f64 {
     }
 }
 
-/// One root's handle (two for a pair): paint, drag, select, menu.
+/// One root's handle (two for a pair): paint, drag, select, menu; its readout replaces
+/// `readout` while hovered or dragged.
+#[allow(clippy::too_many_arguments)]
 fn handle(
     ui: &mut Ui,
     painter: &egui::Painter,
     t: &Transform,
-    system: &mut System,
-    state: &mut SPlaneState,
+    system: &System,
+    state: &SPlaneState,
     id: RootId,
-    palette: &Palette,
-) {
+    look: &Look,
+    readout_text: &mut Option<String>,
+) -> Vec<Command> {
+    let mut out = Vec::new();
+    let lang = look.lang;
     let Some(root) = system.root(id).copied() else {
-        return;
+        return out;
     };
+    let name = id.label(lang);
     let members: Vec<(f64, String)> = match root.kind {
-        RootKind::Real => vec![(0.0, id.label())],
+        RootKind::Real => vec![(0.0, name.clone())],
         RootKind::Pair => vec![
-            (root.im, id.label()),
-            (-root.im, format!("{} mirror", id.label())),
+            (root.im, name.clone()),
+            (-root.im, format!("{name} {}", P::Mirror.get(lang))),
         ],
     };
     for (k, (im, label)) in members.into_iter().enumerate() {
@@ -463,56 +461,53 @@ fn handle(
         let text = label.clone();
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, &text));
 
-        if response.drag_started() || response.clicked() {
-            state.selected = Some(id);
+        if (response.drag_started() || response.clicked()) && state.selected != Some(id) {
+            out.push(Command::Select(Some(id)));
         }
         if response.dragged()
             && let Some(p) = ui.ctx().pointer_interact_pos()
         {
             let (re, im) = t.to_plane(p);
             let snap = state.snap.then(|| t.grid_step() / 5.0);
-            if let Some(r) = system.root_mut(id) {
-                r.move_to(snap_to(re, snap), snap_to(im, snap));
-            }
+            let (re, im) = (snap_to(re, snap), snap_to(im, snap));
+            out.push(Command::DragRoot { id, re, im });
+            *readout_text = Some(format!("{name}: {}", readout(re, im, "s", lang)));
+        } else if response.hovered() {
+            *readout_text = Some(format!("{name}: {}", readout(root.re, root.im, "s", lang)));
         }
-        if response.hovered() || response.dragged() {
-            let r = system.root(id).copied().unwrap_or(root);
-            state.readout = Some(format!("{}: {}", id.label(), readout(r.re, r.im, "s")));
+        if response.drag_stopped() {
+            out.push(Command::EndDrag);
         }
-        let mut delete = false;
-        let mut toggle = false;
         response.context_menu(|ui| {
-            if ui.button(format!("Delete {}", id.label())).clicked() {
-                delete = true;
+            if ui
+                .button(format!("{} {name}", P::Delete.get(lang)))
+                .clicked()
+            {
+                out.push(Command::RemoveRoot(id));
                 ui.close();
             }
             let toggle_text = match root.kind {
-                RootKind::Real => "Make it a complex pair (adds its mirror)",
-                RootKind::Pair => "Make it two real roots",
+                RootKind::Real => P::MakeComplexPair,
+                RootKind::Pair => P::MakeTwoReal,
             };
-            if ui.button(toggle_text).clicked() {
-                toggle = true;
+            if ui.button(toggle_text.get(lang)).clicked() {
+                out.push(Command::TogglePair {
+                    id,
+                    im: t.grid_step(),
+                });
                 ui.close();
             }
         });
-        if delete {
-            system.remove(id);
-            state.selected = None;
-            return;
-        }
-        if toggle {
-            system.toggle_pair(id, t.grid_step());
-            return;
-        }
         let selected = state.selected == Some(id);
         paint_mark(
             painter,
             at,
             id.role,
             selected || response.hovered(),
-            palette,
+            &look.palette,
         );
     }
+    out
 }
 
 fn paint_mark(
@@ -538,8 +533,10 @@ fn paint_mark(
     }
 }
 
-/// `s = −1 ± 2j · ζ = 0.447 · ωn = 2.236 rad/s · τ = 1 s` for a point of the plane.
-pub fn readout(re: f64, im: f64, name: &str) -> String {
+/// `s = −1 ± 2j · ζ = 0.447 · ωn = 2.236 rad/s · τ = 1 s` for a point of the plane, with
+/// `lang`'s decimal separator.
+pub fn readout(re: f64, im: f64, name: &str, lang: Lang) -> String {
+    let sig = |x: f64, d: i32| lang.num(x, d);
     let root = if im.abs() > 0.0 {
         Root::pair(re, im)
     } else {
@@ -586,11 +583,12 @@ mod tests {
 
     #[test]
     fn readout_names_damping_and_frequency() {
-        let r = readout(-1.0, 2.0, "s");
+        let r = readout(-1.0, 2.0, "s", Lang::En);
         assert_eq!(
             r,
             "s = -1 ± 2j · ζ = 0.4472 · ωn = 2.236 rad/s · τ = 1/|σ| = 1 s · ωd = 2 rad/s"
         );
+        assert!(readout(-1.5, 0.0, "s", Lang::Pt).starts_with("s = -1,5 ·"));
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! its `StepInfo` and the closed-form text. Recomputed only when the system or the metric
 //! thresholds change. No drawing here.
 
-use crate::app::state::System;
+use super::state::System;
 use crate::lti::expr::{OscillationForm, expression};
 use crate::lti::{StepInfo, StepInfoOptions, StepResponse, TransferFunction};
 

@@ -1,14 +1,18 @@
 //! The system a student edits, as the app holds it: roots (a real root or a conjugate pair
 //! σ ± jω), the gain, the dead time and the step amplitude, with undo/redo history.
-//! Nothing here draws; the panels read and change these structs.
+//! Nothing here draws; the views read these structs and the session changes them.
 
 use serde::{Deserialize, Serialize};
 
+use crate::app::field::LimitReason;
 use crate::lti::{C64, LtiError, TransferFunction};
 
-/// Largest |σ| and |ω| of a root the app holds (1/s, rad/s); a root typed, dragged or
-/// restored beyond it is clamped to it (typed) or refused (restored).
-pub const ROOT_LIMIT: f64 = 1e9;
+/// Largest |σ|, |ω| and |s| of a root the app holds (1/s, rad/s): a root typed beyond it is
+/// refused with the reason, a drag or an arrow key stops at it, a restored one is refused.
+pub const ROOT_LIMIT: f64 = 1e6;
+/// Largest ratio of the fastest root's |s| to the slowest (non-zero) one's: beyond it the
+/// exact response cannot show both time scales, so such a placement is refused.
+pub const SPREAD_LIMIT: f64 = 1e12;
 /// Largest |k| or |G(0)| the app holds.
 pub const GAIN_LIMIT: f64 = 1e100;
 /// Largest |A| of the step.
@@ -88,7 +92,6 @@ impl Root {
         }
     }
 
-    /// Moves the root to s (a real root stays on the axis; a pair follows |Im s|).
     /// Moves the root to s (a real root stays on the axis; a pair follows |Im s|), clamped
     /// to ±[`ROOT_LIMIT`].
     pub fn move_to(&mut self, re: f64, im: f64) {
@@ -123,12 +126,12 @@ impl Root {
         (wn > 0.0).then(|| -self.re / wn)
     }
 
-    /// The `−1 ± 2j` text of the handle.
-    pub fn label(&self) -> String {
-        let re = crate::lti::number::format_number(self.re);
+    /// The `−1 ± 2j` text of the handle, with `lang`'s decimal separator.
+    pub fn label(&self, lang: crate::text::Lang) -> String {
+        let re = lang.num(self.re, 6);
         match self.kind {
             RootKind::Real => re,
-            RootKind::Pair => format!("{re} ± {}j", crate::lti::number::format_number(self.im)),
+            RootKind::Pair => format!("{re} ± {}j", lang.num(self.im, 6)),
         }
     }
 }
@@ -141,11 +144,14 @@ pub enum RootRole {
 }
 
 impl RootRole {
+    /// "pole" or "zero" in `lang`.
+    pub fn name_in(self, lang: crate::text::Lang) -> &'static str {
+        crate::text::design::role_name(self == RootRole::Pole, lang)
+    }
+
+    /// "pole" or "zero", as the state file's problems name them.
     pub fn name(self) -> &'static str {
-        match self {
-            RootRole::Pole => "pole",
-            RootRole::Zero => "zero",
-        }
+        self.name_in(crate::text::Lang::En)
     }
 }
 
@@ -157,9 +163,10 @@ pub struct RootId {
 }
 
 impl RootId {
-    /// The accessible label of the handle: "pole 1", "zero 2" (1-based, as people count).
-    pub fn label(&self) -> String {
-        format!("{} {}", self.role.name(), self.index + 1)
+    /// The accessible label of the handle: "pole 1", "zero 2" (1-based, as people count),
+    /// in `lang` ("polo 1").
+    pub fn label(&self, lang: crate::text::Lang) -> String {
+        format!("{} {}", self.role.name_in(lang), self.index + 1)
     }
 }
 
@@ -332,6 +339,32 @@ impl System {
         check_delay(self.delay)
     }
 
+    /// Whether every root is one the exact response can show: |s| within [`ROOT_LIMIT`] and
+    /// the fastest at most [`SPREAD_LIMIT`] times the slowest non-zero one; the reason when
+    /// not.
+    pub fn placement(&self) -> Result<(), LimitReason> {
+        let magnitudes: Vec<f64> = self
+            .poles
+            .iter()
+            .chain(&self.zeros)
+            .map(Root::natural_frequency)
+            .collect();
+        if magnitudes
+            .iter()
+            .any(|m| !(m.is_finite() && *m <= ROOT_LIMIT))
+        {
+            return Err(LimitReason::RootMagnitude);
+        }
+        let nonzero = magnitudes.iter().copied().filter(|m| *m > 0.0);
+        let (slowest, fastest) = nonzero.fold((f64::INFINITY, 0.0f64), |(lo, hi), m| {
+            (lo.min(m), hi.max(m))
+        });
+        if fastest > SPREAD_LIMIT * slowest {
+            return Err(LimitReason::RootSpread);
+        }
+        Ok(())
+    }
+
     /// Every root id, poles first.
     pub fn ids(&self) -> Vec<RootId> {
         let ids = |role: RootRole, n: usize| (0..n).map(move |index| RootId { role, index });
@@ -351,9 +384,9 @@ pub fn check_roots(role: RootRole, list: &[Root]) -> Result<(), String> {
             role.name()
         ));
     }
-    list.iter()
-        .enumerate()
-        .try_for_each(|(index, root)| root.check(&RootId { role, index }.label()))
+    list.iter().enumerate().try_for_each(|(index, root)| {
+        root.check(&RootId { role, index }.label(crate::text::Lang::En))
+    })
 }
 
 /// Whether a gain is finite within ±[`GAIN_LIMIT`].
@@ -480,6 +513,7 @@ mod tests {
     #[test]
     fn roots_stay_within_the_limit_and_bad_numbers_are_named() {
         let mut r = Root::real(-1e30);
+        assert_eq!(ROOT_LIMIT, 1e6);
         assert_eq!(r.re, -ROOT_LIMIT);
         r.move_to(f64::INFINITY, 3.0);
         assert_eq!((r.re, r.im), (ROOT_LIMIT, 0.0));
@@ -504,6 +538,33 @@ mod tests {
             ..System::default()
         };
         assert!(s.check().unwrap_err().contains("zeros"));
+    }
+
+    #[test]
+    fn placements_beyond_the_limits_are_named() {
+        let mut s = System::default();
+        assert_eq!(s.placement(), Ok(()));
+        s.poles[1] = Root::pair(-0.8e6, 0.8e6);
+        assert_eq!(
+            s.placement(),
+            Err(LimitReason::RootMagnitude),
+            "|s| = 1.13e6"
+        );
+        s.poles[1] = Root::real(-1e6);
+        assert_eq!(s.placement(), Ok(()));
+        s.poles.push(Root::real(-1e-7));
+        assert_eq!(
+            s.placement(),
+            Err(LimitReason::RootSpread),
+            "1e13 times faster"
+        );
+        s.poles.pop();
+        s.zeros.push(Root::real(0.0));
+        assert_eq!(
+            s.placement(),
+            Ok(()),
+            "a root at the origin has no time scale"
+        );
     }
 
     #[test]

@@ -1,0 +1,334 @@
+//! The side panel: the system as numbers a student can type (gain and what it means, dead
+//! time, step amplitude, every pole and zero), presets, the comparison, and the transfer
+//! function as MATLAB would print it. Every field is a [`NumberField`]: a decimal comma is
+//! accepted, a refusal is said under the field and never applied, and nothing here grows
+//! with a number (fields have a fixed width, long text wraps).
+
+use eframe::egui::{self, RichText, Ui};
+
+use crate::app::field::{FieldError, LimitReason, Limits, NumberField};
+use crate::app::look::Look;
+use crate::lti::poly::format_poly;
+use crate::text::Lang;
+use crate::text::design::Design as P;
+
+use super::commands::Command;
+use super::session::{Kept, Session, placement_of};
+use super::state::{
+    AMPLITUDE_LIMIT, DELAY_LIMIT, GAIN_LIMIT, GainMode, MAX_ROOTS, ROOT_LIMIT, Root, RootId,
+    RootKind, RootRole, System,
+};
+
+/// Width of a number field (points).
+const FIELD_WIDTH: f32 = 86.0;
+
+/// Draws the panel; returns the edits and requests as commands.
+pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
+    let lang = look.lang;
+    let mut out = Vec::new();
+    ui.heading(P::SystemHeading.get(lang));
+    egui::ComboBox::from_label(P::Example.get(lang))
+        .selected_text(P::LoadExample.get(lang))
+        .width(ui.available_width().min(260.0))
+        .show_ui(ui, |ui| {
+            for (i, p) in session.presets.iter().enumerate() {
+                if ui.selectable_label(false, p.name(lang)).clicked() {
+                    out.push(Command::LoadPreset(i));
+                }
+            }
+        });
+    ui.horizontal_wrapped(|ui| {
+        if kept.compare.is_none() {
+            if ui
+                .button(P::CompareKeep.get(lang))
+                .on_hover_text(P::CompareKeepHelp.get(lang))
+                .clicked()
+            {
+                out.push(Command::CompareWithCurrent);
+            }
+        } else if ui.button(P::StopComparing.get(lang)).clicked() {
+            out.push(Command::StopComparing);
+        }
+    });
+    ui.separator();
+    out.extend(gain_delay_amplitude(ui, &kept.system, lang));
+    ui.separator();
+    out.extend(root_list(
+        ui,
+        &kept.system,
+        kept.splane.selected,
+        RootRole::Pole,
+        lang,
+    ));
+    ui.separator();
+    out.extend(root_list(
+        ui,
+        &kept.system,
+        kept.splane.selected,
+        RootRole::Zero,
+        lang,
+    ));
+    ui.separator();
+    transfer_function(ui, session, lang);
+    out
+}
+
+fn gain_delay_amplitude(ui: &mut Ui, system: &System, lang: Lang) -> Vec<Command> {
+    let mut out = Vec::new();
+    ui.horizontal_wrapped(|ui| {
+        ui.label(P::GainMeans.get(lang))
+            .on_hover_text(P::GainMeansHelp.get(lang));
+        let mut mode = system.gain_mode;
+        ui.radio_value(&mut mode, GainMode::Zpk, P::GainZpk.get(lang));
+        ui.radio_value(&mut mode, GainMode::Static, P::GainStatic.get(lang));
+        if mode != system.gain_mode {
+            out.push(Command::SetGainMode(mode));
+        }
+    });
+    let gain = NumberField::new(P::Gain.get(lang), system.gain)
+        .limits(Limits::new(-GAIN_LIMIT, GAIN_LIMIT, LimitReason::Gain))
+        .width(FIELD_WIDTH)
+        .show(ui, lang);
+    out.extend(gain.map(Command::SetGain));
+    let delay = NumberField::new(P::DeadTime.get(lang), system.delay)
+        .limits(Limits::new(0.0, DELAY_LIMIT, LimitReason::DeadTime))
+        .width(FIELD_WIDTH)
+        .suffix("s")
+        .show(ui, lang);
+    out.extend(delay.map(Command::SetDelay));
+    let amplitude = NumberField::new(P::Amplitude.get(lang), system.amplitude)
+        .limits(Limits::new(
+            -AMPLITUDE_LIMIT,
+            AMPLITUDE_LIMIT,
+            LimitReason::Amplitude,
+        ))
+        .width(FIELD_WIDTH)
+        .show(ui, lang);
+    out.extend(amplitude.map(Command::SetAmplitude));
+    out
+}
+
+/// A number typed in a field, read as the command line reads its numbers (− as a minus),
+/// refused unless finite: "inf", "NaN" or "1e400" keep the field's value. (The Identify
+/// mode's fields read their numbers with this until they use [`NumberField`].)
+pub fn finite_number(text: &str) -> Option<f64> {
+    crate::lti::parse::parse_real(text).ok()
+}
+
+/// The limits of σ and ω, and what they protect.
+fn root_limits(min: f64) -> Limits {
+    Limits::new(min, ROOT_LIMIT, LimitReason::RootMagnitude)
+}
+
+/// A refusal of a root value that is in range alone but not with the other roots.
+fn placement_refusal(
+    system: &System,
+    id: RootId,
+    re: f64,
+    im: f64,
+    value: f64,
+) -> Result<(), FieldError> {
+    match placement_of(system, id, re, im) {
+        Ok(()) => Ok(()),
+        Err(LimitReason::RootMagnitude) => Err(FieldError::Above {
+            value: re.hypot(im),
+            max: ROOT_LIMIT,
+            why: Some(LimitReason::RootMagnitude),
+        }),
+        Err(why) => Err(FieldError::Refused { value, why }),
+    }
+}
+
+fn root_list(
+    ui: &mut Ui,
+    system: &System,
+    selected: Option<RootId>,
+    role: RootRole,
+    lang: Lang,
+) -> Vec<Command> {
+    let mut out = Vec::new();
+    let (add_real, add_pair, none) = match role {
+        RootRole::Pole => (P::AddRealPole, P::AddPolePair, P::NoPoles),
+        RootRole::Zero => (P::AddRealZero, P::AddZeroPair, P::NoZeros),
+    };
+    let title = crate::text::design::role_heading(role == RootRole::Pole, lang);
+    ui.horizontal_wrapped(|ui| {
+        ui.strong(title);
+        let room = system.has_room(role);
+        let full = format!("{} {MAX_ROOTS}", P::AtMostRoots.get(lang));
+        let mut add = |ui: &mut Ui, text: P, root: Root| {
+            if ui
+                .add_enabled(room, egui::Button::new(text.get(lang)).small())
+                .on_disabled_hover_text(&full)
+                .clicked()
+            {
+                out.push(Command::AddRoot { role, root });
+            }
+        };
+        let re = next_free_real(system.roots(role));
+        add(ui, add_real, Root::real(re));
+        add(ui, add_pair, Root::pair(re, 1.0));
+    });
+    if system.roots(role).is_empty() {
+        ui.weak(none.get(lang));
+    }
+    for (index, root) in system.roots(role).iter().enumerate() {
+        let id = RootId { role, index };
+        ui.push_id(("root row", id), |ui| {
+            out.extend(root_row(ui, system, *root, id, selected == Some(id), lang));
+        });
+    }
+    out
+}
+
+/// One root: its name (click to select), σ and ω, make pair / make real, delete.
+fn root_row(
+    ui: &mut Ui,
+    system: &System,
+    root: Root,
+    id: RootId,
+    is_selected: bool,
+    lang: Lang,
+) -> Vec<Command> {
+    let mut out = Vec::new();
+    ui.horizontal_wrapped(|ui| {
+        // "pole 1:" (the s-plane's handle is "pole 1").
+        let name = ui.selectable_label(is_selected, format!("{}:", id.label(lang)));
+        if name.clicked() {
+            out.push(Command::Select(Some(id)));
+        }
+        let sigma = NumberField::new("σ", root.re)
+            .id_salt(("σ", id))
+            .limits(root_limits(-ROOT_LIMIT))
+            .width(FIELD_WIDTH)
+            .validate(|re| placement_refusal(system, id, re, root.im, re))
+            .show(ui, lang);
+        if let Some(re) = sigma {
+            out.push(Command::SetRoot {
+                id,
+                re,
+                im: root.im,
+            });
+        }
+        if root.kind == RootKind::Pair {
+            let omega = NumberField::new("±jω", root.im)
+                .id_salt(("ω", id))
+                .limits(root_limits(0.0))
+                .width(FIELD_WIDTH)
+                .validate(|im| placement_refusal(system, id, root.re, im, im))
+                .show(ui, lang);
+            if let Some(im) = omega {
+                out.push(Command::SetRoot {
+                    id,
+                    re: root.re,
+                    im,
+                });
+            }
+        }
+        let toggle_text = match root.kind {
+            RootKind::Pair => P::MakeReal,
+            RootKind::Real => P::MakePair,
+        };
+        if ui
+            .small_button(toggle_text.get(lang))
+            .on_hover_text(P::TogglePairHelp.get(lang))
+            .clicked()
+        {
+            out.push(Command::TogglePair { id, im: 1.0 });
+        }
+        if ui
+            .small_button(P::DeleteSmall.get(lang))
+            .on_hover_text(format!("{} {}", P::Delete.get(lang), id.label(lang)))
+            .clicked()
+        {
+            out.push(Command::RemoveRoot(id));
+        }
+    });
+    out
+}
+
+/// A real part left of the existing roots, so a new root does not sit on another.
+fn next_free_real(roots: &[Root]) -> f64 {
+    let leftmost = roots.iter().map(|r| r.re).fold(0.0, f64::min);
+    (leftmost - 1.0).floor()
+}
+
+fn transfer_function(ui: &mut Ui, session: &Session, lang: Lang) {
+    ui.strong("G(s)");
+    match &session.analysis.tf {
+        Ok(tf) => {
+            let num = format_poly(&tf.num());
+            let den = format_poly(&tf.den());
+            let delay = if tf.delay() > 0.0 {
+                format!(" · e^(−{} s)", lang.num(tf.delay(), 6))
+            } else {
+                String::new()
+            };
+            let bar = "─".repeat(num.chars().count().max(den.chars().count()).clamp(1, 40));
+            ui.add(
+                egui::Label::new(RichText::new(format!("{num}\n{bar}\n{den}{delay}")).monospace())
+                    .wrap(),
+            );
+            let dc = tf.dc_gain();
+            let dc_text = if dc.is_finite() {
+                lang.num(dc, 6)
+            } else {
+                P::Integrator.get(lang).to_string()
+            };
+            ui.add(
+                egui::Label::new(format!(
+                    "{} {} · {} {} · {} G(0) = {dc_text}",
+                    P::Order.get(lang),
+                    tf.order(),
+                    P::RelativeDegree.get(lang),
+                    tf.relative_degree(),
+                    P::StaticGain.get(lang),
+                ))
+                .wrap(),
+            );
+        }
+        Err(reason) => {
+            ui.add(
+                egui::Label::new(
+                    RichText::new(format!("{} {reason}", P::NoSystem.get(lang)))
+                        .color(ui.visuals().error_fg_color),
+                )
+                .wrap(),
+            );
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::text::Localize;
+
+    #[test]
+    fn only_finite_numbers_are_read() {
+        assert_eq!(finite_number(" −1e3 "), Some(-1000.0));
+        for bad in ["inf", "-inf", "NaN", "1e400", "", "abc"] {
+            assert_eq!(finite_number(bad), None, "{bad}");
+        }
+    }
+
+    #[test]
+    fn a_root_too_far_from_the_others_is_refused_with_its_reason() {
+        let system = System::default();
+        let id = RootId {
+            role: RootRole::Pole,
+            index: 1,
+        };
+        // |s| = 1e-13 against the pair's 2.236: 2e13 times faster.
+        let e = placement_refusal(&system, id, -1e-13, 0.0, -1e-13).unwrap_err();
+        assert_eq!(
+            e,
+            FieldError::Refused {
+                value: -1e-13,
+                why: LimitReason::RootSpread
+            }
+        );
+        assert!(e.text(Lang::En).contains("1e12"), "{}", e.text(Lang::En));
+        assert!(placement_refusal(&system, id, -7.0, 0.0, -7.0).is_ok());
+    }
+}

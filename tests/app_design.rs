@@ -1,0 +1,244 @@
+//! The Design mode's fields, y range and hover, through egui_kittest: what a student types,
+//! what the plot shows and what it reads out.
+
+mod kit;
+
+use degrau::app::DegrauApp;
+use degrau::app::design::state::System;
+use eframe::egui::{self, Pos2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+
+fn harness(app: DegrauApp) -> Harness<'static, DegrauApp> {
+    let mut h = Harness::builder()
+        .with_size([1360.0, 860.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), app);
+    h.run_steps(3);
+    h
+}
+
+/// Types `text` into the `nth` number field labelled `label` and presses Enter.
+fn type_number(h: &mut Harness<'_, DegrauApp>, label: &str, nth: usize, text: &str) {
+    h.get_all_by_role(egui::accesskit::Role::TextInput)
+        .filter(|n| n.accesskit_node().label().as_deref() == Some(label))
+        .nth(nth)
+        .unwrap_or_else(|| panic!("no number field {label:?} number {nth}"))
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.event(egui::Event::Text(text.into()));
+    h.run_steps(1);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(3);
+}
+
+#[test]
+fn a_pole_typed_as_1e300_is_refused_with_why_and_changes_nothing() {
+    let mut h = harness(DegrauApp::default());
+    let panel = h.get_by_label("System").rect();
+    let plane = h.get_by_label("s-plane").rect();
+    for (field, nth, text) in [("σ", 1, "-1e300"), ("σ", 0, "1e300"), ("±jω", 0, "1e300")] {
+        type_number(&mut h, field, nth, text);
+        assert_eq!(h.state().system(), &System::default(), "{field} = {text}");
+        h.get_by_label_contains("beyond what the exact response can show");
+        assert_eq!(
+            h.get_by_label("System").rect(),
+            panel,
+            "the panel keeps its place"
+        );
+        assert_eq!(h.get_by_label("s-plane").rect(), plane);
+        // Fix the entry so the next one is refused on its own.
+        type_number(
+            &mut h,
+            field,
+            nth,
+            if field == "σ" && nth == 1 {
+                "-5"
+            } else if field == "σ" {
+                "-1"
+            } else {
+                "2"
+            },
+        );
+    }
+    assert!(!h.state().design.history.can_undo(), "nothing was applied");
+    // A root 1e13 times slower than the fastest is refused too, naming the spread.
+    type_number(&mut h, "σ", 1, "-5e-13");
+    assert_eq!(h.state().system(), &System::default());
+    h.get_by_label_contains("1e12 times faster");
+}
+
+#[test]
+fn a_decimal_comma_is_accepted_in_the_gain() {
+    let mut h = harness(DegrauApp::default());
+    type_number(&mut h, "Gain", 0, "2,5");
+    assert_eq!(h.state().system().gain, 2.5);
+    type_number(&mut h, "Dead time θ", 0, "0,25");
+    assert_eq!(h.state().system().delay, 0.25);
+    // One undo per committed field.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().system().delay, 0.0);
+    assert_eq!(h.state().system().gain, 2.5);
+}
+
+#[test]
+fn the_ghost_does_not_set_the_y_range() {
+    let mut h = harness(DegrauApp::default());
+    h.get_by_label("Example").click();
+    h.run_steps(2);
+    h.get_by_label("Fifth order vs its dominant pair −3 ± 3j")
+        .click();
+    h.run_steps(4);
+    assert!(
+        h.state().design.ghost.is_some(),
+        "the default system is the ghost"
+    );
+    let plot = h.get_by_label("step response").rect();
+    let y: Vec<f64> = kit::numbers_in(&h, plot.expand(60.0), '.')
+        .into_iter()
+        .filter(|(_, r)| r.center().x < plot.left() + 60.0 && r.center().y < plot.bottom() - 30.0)
+        .map(|(v, _)| v)
+        .collect();
+    // Both current curves end at 2·0.5/9000 = 1.1e-4; the ghost reaches 0.04.
+    assert!(y.len() >= 2, "{y:?}");
+    assert!(
+        y.iter().all(|v| v.abs() < 5e-4),
+        "the y range follows the current curves: {y:?}"
+    );
+}
+
+/// The hover label's lines "t = …" and "y(t) = …", as numbers.
+fn hover_reading(h: &Harness<'_, DegrauApp>) -> Option<(f64, f64)> {
+    let text = h
+        .get_all_by_role(egui::accesskit::Role::Label)
+        .filter_map(|n| {
+            n.accesskit_node()
+                .label()
+                .or_else(|| n.value())
+                .map(|l| l.to_string())
+        })
+        .find(|l| l.starts_with("t = ") && l.contains("y(t) = "))?;
+    let value = |key: &str| -> Option<f64> {
+        let line = text.lines().find(|l| l.starts_with(key))?;
+        line[key.len()..].trim_end_matches(" s").trim().parse().ok()
+    };
+    Some((value("t = ")?, value("y(t) = ")?))
+}
+
+#[test]
+fn hovering_the_plot_reads_the_curve_at_the_cursor_t() {
+    let mut h = harness(DegrauApp::default());
+    let plot = h.get_by_label("step response").rect();
+    let response = h
+        .state()
+        .design
+        .analysis
+        .response
+        .clone()
+        .expect("a response");
+    // Well above the curve, where the cursor's own y is far from it.
+    for fraction in [0.2f32, 0.45, 0.7] {
+        let at = Pos2::new(plot.left() + fraction * plot.width(), plot.top() + 20.0);
+        h.hover_at(at);
+        h.run_steps(2);
+        let (t, y) = hover_reading(&h).expect("a hover label");
+        // Within one pixel of t on either side.
+        let horizon = h.state().design.analysis.horizon;
+        let dt = horizon / plot.width() as f64;
+        let (a, b) = (response.value((t - dt).max(0.0)), response.value(t + dt));
+        let (lo, hi) = (a.min(b), a.max(b));
+        let tolerance = 1e-4 * response.value(horizon).abs();
+        assert!(
+            y >= lo - tolerance && y <= hi + tolerance,
+            "hover at t = {t}: y = {y}, the curve is between {lo} and {hi}"
+        );
+    }
+}
+
+fn open_menu_item(h: &mut Harness<'_, DegrauApp>, menu: &str, item: &str) {
+    h.get_by_label(menu).click();
+    h.run_steps(2);
+    h.get_by_label(item).click();
+    h.run_steps(3);
+}
+
+#[test]
+fn copy_as_code_puts_the_system_on_the_clipboard_and_says_so() {
+    let mut h = harness(DegrauApp::default());
+    h.get_by_label("File").click();
+    h.run_steps(2);
+    h.get_by_label("Copy as MATLAB code").click();
+    h.step();
+    let copied: Vec<String> = h
+        .output()
+        .platform_output
+        .commands
+        .iter()
+        .filter_map(|c| match c {
+            egui::OutputCommand::CopyText(t) => Some(t.clone()),
+            _ => None,
+        })
+        .collect();
+    // 0.5/((s² + 2s + 5)(s + 5)) = 0.5/(s³ + 7s² + 15s + 25)
+    assert_eq!(
+        copied,
+        ["G = tf([0.5], [1 7 15 25]);\nstep(G)\nstepinfo(G)"]
+    );
+    h.run_steps(2);
+    h.get_by_label("Copied the system as MATLAB code");
+}
+
+#[test]
+fn saving_over_a_file_asks_first_and_a_png_waits_for_the_dialog_to_close() {
+    let dir = std::env::temp_dir().join(format!("degrau-overwrite-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("curve.csv");
+    std::fs::write(&path, "kept\n").unwrap();
+    let mut h = harness(DegrauApp::default());
+    open_menu_item(&mut h, "File", "Export…");
+    h.get_all_by_role(egui::accesskit::Role::TextInput)
+        .find(|n| n.value().is_some_and(|v| v.ends_with("degrau_step.png")))
+        .expect("the export path field")
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.event(egui::Event::Text(path.to_str().unwrap().into()));
+    h.run_steps(2);
+    h.get_by_label("Save curve as CSV").click();
+    h.run_steps(2);
+    h.get_by_label_contains("already exists. Overwrite it?");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "kept\n", "not yet");
+    h.get_by_label("Cancel").click();
+    h.run_steps(2);
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "kept\n");
+    h.get_by_label("Save curve as CSV").click();
+    h.run_steps(2);
+    h.get_by_label("Overwrite").click();
+    h.run_steps(2);
+    assert!(
+        std::fs::read_to_string(&path)
+            .unwrap()
+            .starts_with("t_s,y\n")
+    );
+    // A PNG to a new file: the dialog closes first, so the screenshot cannot show it.
+    let png = dir.join("plot.png");
+    h.get_all_by_role(egui::accesskit::Role::TextInput)
+        .find(|n| n.value().is_some_and(|v| v.ends_with("curve.csv")))
+        .expect("the export path field")
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.event(egui::Event::Text(png.to_str().unwrap().into()));
+    h.run_steps(2);
+    h.get_by_label("Save step plot as PNG").click();
+    h.run_steps(2);
+    assert!(
+        h.query_by_label("Save step plot as PNG").is_none(),
+        "the export window is closed while the screenshot is taken"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
