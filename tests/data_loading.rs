@@ -450,8 +450,10 @@ fn leci_measured_step_characteristics() {
         (start - 2.219).abs() < 1e-3 && (end - 3.495).abs() < 1e-3,
         "{start} {end}"
     );
-    // No sample before t0: no measured operating point.
-    assert_eq!(operating_point(&t, t0), None);
+    // The record starts with the step: its first sample, at t0, is the rest level.
+    assert_eq!(operating_point(&t, t0), Some(49.9761));
+    // A step before the first sample leaves nothing measured at rest.
+    assert_eq!(operating_point(&t, t0 - 1.0), None);
 }
 
 #[test]
