@@ -17,29 +17,13 @@ fn harness(app: DegrauApp) -> Harness<'static, DegrauApp> {
     h
 }
 
-/// Types `text` into the `nth` number field labelled `label` and presses Enter.
-fn type_number(h: &mut Harness<'_, DegrauApp>, label: &str, nth: usize, text: &str) {
-    h.get_all_by_role(egui::accesskit::Role::TextInput)
-        .filter(|n| n.accesskit_node().label().as_deref() == Some(label))
-        .nth(nth)
-        .unwrap_or_else(|| panic!("no number field {label:?} number {nth}"))
-        .focus();
-    h.run_steps(1);
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-    h.run_steps(1);
-    h.event(egui::Event::Text(text.into()));
-    h.run_steps(1);
-    h.key_press(egui::Key::Enter);
-    h.run_steps(3);
-}
-
 #[test]
 fn a_pole_typed_as_1e300_is_refused_with_why_and_changes_nothing() {
     let mut h = harness(DegrauApp::default());
     let panel = h.get_by_label("System").rect();
     let plane = h.get_by_label("s-plane").rect();
     for (field, nth, text) in [("σ", 1, "-1e300"), ("σ", 0, "1e300"), ("±jω", 0, "1e300")] {
-        type_number(&mut h, field, nth, text);
+        kit::type_number(&mut h, field, nth, text);
         assert_eq!(h.state().system(), &System::default(), "{field} = {text}");
         h.get_by_label_contains("beyond what the exact response can show");
         assert_eq!(
@@ -49,7 +33,7 @@ fn a_pole_typed_as_1e300_is_refused_with_why_and_changes_nothing() {
         );
         assert_eq!(h.get_by_label("s-plane").rect(), plane);
         // Fix the entry so the next one is refused on its own.
-        type_number(
+        kit::type_number(
             &mut h,
             field,
             nth,
@@ -64,7 +48,7 @@ fn a_pole_typed_as_1e300_is_refused_with_why_and_changes_nothing() {
     }
     assert!(!h.state().design.history.can_undo(), "nothing was applied");
     // A root 1e13 times slower than the fastest is refused too, naming the spread.
-    type_number(&mut h, "σ", 1, "-5e-13");
+    kit::type_number(&mut h, "σ", 1, "-5e-13");
     assert_eq!(h.state().system(), &System::default());
     h.get_by_label_contains("1e12 times faster");
 }
@@ -72,9 +56,9 @@ fn a_pole_typed_as_1e300_is_refused_with_why_and_changes_nothing() {
 #[test]
 fn a_decimal_comma_is_accepted_in_the_gain() {
     let mut h = harness(DegrauApp::default());
-    type_number(&mut h, "Gain", 0, "2,5");
+    kit::type_number(&mut h, "Gain", 0, "2,5");
     assert_eq!(h.state().system().gain, 2.5);
-    type_number(&mut h, "Dead time θ", 0, "0,25");
+    kit::type_number(&mut h, "Dead time θ", 0, "0,25");
     assert_eq!(h.state().system().delay, 0.25);
     // One undo per committed field.
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
@@ -198,15 +182,8 @@ fn saving_over_a_file_asks_first_and_a_png_waits_for_the_dialog_to_close() {
     std::fs::write(&path, "kept\n").unwrap();
     let mut h = harness(DegrauApp::default());
     open_menu_item(&mut h, "File", "Export…");
-    h.get_all_by_role(egui::accesskit::Role::TextInput)
-        .find(|n| n.value().is_some_and(|v| v.ends_with("degrau_step.png")))
-        .expect("the export path field")
-        .focus();
+    kit::retype_field_ending(&mut h, "degrau_step.png", path.to_str().unwrap());
     h.run_steps(1);
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-    h.run_steps(1);
-    h.event(egui::Event::Text(path.to_str().unwrap().into()));
-    h.run_steps(2);
     h.get_by_label("Save curve as CSV").click();
     h.run_steps(2);
     h.get_by_label_contains("already exists. Overwrite it?");
@@ -225,15 +202,8 @@ fn saving_over_a_file_asks_first_and_a_png_waits_for_the_dialog_to_close() {
     );
     // A PNG to a new file: the dialog closes first, so the screenshot cannot show it.
     let png = dir.join("plot.png");
-    h.get_all_by_role(egui::accesskit::Role::TextInput)
-        .find(|n| n.value().is_some_and(|v| v.ends_with("curve.csv")))
-        .expect("the export path field")
-        .focus();
+    kit::retype_field_ending(&mut h, "curve.csv", png.to_str().unwrap());
     h.run_steps(1);
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-    h.run_steps(1);
-    h.event(egui::Event::Text(png.to_str().unwrap().into()));
-    h.run_steps(2);
     h.get_by_label("Save step plot as PNG").click();
     h.run_steps(2);
     assert!(

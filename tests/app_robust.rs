@@ -16,7 +16,7 @@ use degrau::app::persist::FILE_NAME;
 use degrau::app::{DegrauApp, Saved};
 use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::{NodeT, Queryable};
+use egui_kittest::kittest::Queryable;
 
 /// Most shapes one frame may draw: the s-plane grid is capped at 200 lines a direction, and
 /// the default app draws far fewer than this; an unbounded grid drew millions.
@@ -60,29 +60,13 @@ fn view(h: &Harness<'_, DegrauApp>) -> View {
         .expect("the s-plane has a view")
 }
 
-/// Types `text` into the `nth` number field labelled `label` and presses Enter.
-fn type_number(h: &mut Harness<'_, DegrauApp>, label: &str, nth: usize, text: &str) {
-    h.get_all_by_role(egui::accesskit::Role::TextInput)
-        .filter(|n| n.accesskit_node().label().as_deref() == Some(label))
-        .nth(nth)
-        .unwrap_or_else(|| panic!("no number field {label:?} number {nth}"))
-        .focus();
-    h.run_steps(1);
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-    h.run_steps(1);
-    h.event(egui::Event::Text(text.into()));
-    h.run_steps(1);
-    h.key_press(egui::Key::Enter);
-    h.run_steps(2);
-}
-
 #[test]
 fn a_pole_typed_far_away_and_fit_keep_the_app_painting() {
     let mut h = harness(DegrauApp::default());
-    type_number(&mut h, "σ", 1, "-1e30");
+    kit::type_number(&mut h, "σ", 1, "-1e30");
     assert_eq!(h.state().system(), &System::default(), "-1e30 is refused");
     h.get_by_label_contains("is below the smallest allowed value");
-    type_number(&mut h, "σ", 1, "-1e6");
+    kit::type_number(&mut h, "σ", 1, "-1e6");
     let pole = h.state().system().poles[1];
     assert_eq!(pole.re, -ROOT_LIMIT, "the limit itself is accepted");
     h.get_by_label("Fit").click();

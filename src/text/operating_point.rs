@@ -132,26 +132,35 @@ mod tests {
 
     #[test]
     fn the_held_level_is_said_with_its_samples_and_value() {
-        let fact = OperatingPoint::MeanBefore {
-            y0: 250.03,
-            samples: 41,
-        };
-        assert_eq!(
-            fact.text(Lang::En),
-            "Y0 held at the mean of the 41 samples before the step: 250.03"
-        );
-        assert_eq!(
-            fact.text(Lang::Pt),
-            "Y0 mantido na média das 41 amostras antes do degrau: 250,03"
-        );
-        assert_eq!(
-            OperatingPoint::MeanBefore {
-                y0: 20.9,
-                samples: 1
-            }
-            .text(Lang::En),
-            "Y0 held at the sample before the step: 20.9"
-        );
+        let cases = [
+            (
+                OperatingPoint::MeanBefore {
+                    y0: 250.03,
+                    samples: 41,
+                },
+                Lang::En,
+                "Y0 held at the mean of the 41 samples before the step: 250.03",
+            ),
+            (
+                OperatingPoint::MeanBefore {
+                    y0: 250.03,
+                    samples: 41,
+                },
+                Lang::Pt,
+                "Y0 mantido na média das 41 amostras antes do degrau: 250,03",
+            ),
+            (
+                OperatingPoint::MeanBefore {
+                    y0: 20.9,
+                    samples: 1,
+                },
+                Lang::En,
+                "Y0 held at the sample before the step: 20.9",
+            ),
+        ];
+        for (fact, lang, expected) in cases {
+            assert_eq!(fact.text(lang), expected);
+        }
         assert_eq!(OffsetChoice::of(&Offset::Free).get(Lang::Pt), "estimar");
     }
 }

@@ -232,31 +232,43 @@ impl Localize for Behaviour {
     }
 }
 
+/// The stability of a system in a word or two, and with its reason: `[(en, pt); 2]`.
+fn stability_words(s: Stability) -> [(&'static str, &'static str); 2] {
+    match s {
+        Stability::Stable => [
+            ("stable", "estável"),
+            (
+                "stable (every pole in the left half plane)",
+                "estável (todos os polos no semiplano esquerdo)",
+            ),
+        ],
+        Stability::MarginallyStable => [
+            ("marginally stable", "marginalmente estável"),
+            (
+                "marginally stable (poles on the imaginary axis, none to its right)",
+                "marginalmente estável (polos no eixo imaginário, nenhum à sua direita)",
+            ),
+        ],
+        Stability::Unstable => [
+            ("unstable", "instável"),
+            (
+                "unstable (a pole in the right half plane)",
+                "instável (um polo no semiplano direito)",
+            ),
+        ],
+    }
+}
+
 /// The stability of a system, in a word or two.
 pub fn stability(s: Stability, lang: Lang) -> &'static str {
-    match s {
-        Stability::Stable => lang.pick("stable", "estável"),
-        Stability::MarginallyStable => lang.pick("marginally stable", "marginalmente estável"),
-        Stability::Unstable => lang.pick("unstable", "instável"),
-    }
+    let [(en, pt), _] = stability_words(s);
+    lang.pick(en, pt)
 }
 
 /// The stability of a system with the reason, as the CLI prints it.
 pub fn stability_reason(s: Stability, lang: Lang) -> &'static str {
-    match s {
-        Stability::Stable => lang.pick(
-            "stable (every pole in the left half plane)",
-            "estável (todos os polos no semiplano esquerdo)",
-        ),
-        Stability::MarginallyStable => lang.pick(
-            "marginally stable (poles on the imaginary axis, none to its right)",
-            "marginalmente estável (polos no eixo imaginário, nenhum à sua direita)",
-        ),
-        Stability::Unstable => lang.pick(
-            "unstable (a pole in the right half plane)",
-            "instável (um polo no semiplano direito)",
-        ),
-    }
+    let [_, (en, pt)] = stability_words(s);
+    lang.pick(en, pt)
 }
 
 /// Every metric name, definition, absence, behaviour and stability, for the catalogue test.

@@ -1,10 +1,11 @@
-//! Hand gestures shared by the kittests: a drag in several moves and a mouse-wheel turn.
+//! Hand gestures shared by the kittests: a drag in several moves, a mouse-wheel turn, a
+//! number typed into a field, a text field's content replaced.
 #![allow(dead_code)] // each test binary uses its own subset
 
 use degrau::app::DegrauApp;
 use eframe::egui::{self, Pos2, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 
 /// Drags the widget labelled `label` by `by`, in `moves` moves as a hand would.
 pub fn drag_by(h: &mut Harness<'_, DegrauApp>, label: &str, by: Vec2, moves: usize) {
@@ -72,4 +73,36 @@ pub fn numbers_in(
                 .map(|v| (v, r))
         })
         .collect()
+}
+
+/// Types `text` into the `nth` number field labelled `label` and presses Enter.
+pub fn type_number(h: &mut Harness<'_, DegrauApp>, label: &str, nth: usize, text: &str) {
+    h.get_all_by_role(egui::accesskit::Role::TextInput)
+        .filter(|n| n.accesskit_node().label().as_deref() == Some(label))
+        .nth(nth)
+        .unwrap_or_else(|| panic!("no number field {label:?} number {nth}"))
+        .focus();
+    h.run_steps(1);
+    replace_focused_text(h, text);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(3);
+}
+
+/// Replaces the text of the text field whose value ends with `ending` by `text` (no Enter).
+pub fn retype_field_ending(h: &mut Harness<'_, DegrauApp>, ending: &str, text: &str) {
+    h.get_all_by_role(egui::accesskit::Role::TextInput)
+        .find(|n| n.value().is_some_and(|v| v.ends_with(ending)))
+        .unwrap_or_else(|| panic!("no text field ending with {ending:?}"))
+        .focus();
+    h.run_steps(1);
+    replace_focused_text(h, text);
+    h.run_steps(1);
+}
+
+/// Selects all of the focused field's text and types `text` over it.
+fn replace_focused_text(h: &mut Harness<'_, DegrauApp>, text: &str) {
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.event(egui::Event::Text(text.into()));
+    h.run_steps(1);
 }

@@ -397,20 +397,15 @@ fn background_menu(
                 ui.close();
             }
         };
-        add(ui, P::AddRealPoleHere, RootRole::Pole, Root::real(re));
-        add(
-            ui,
-            P::AddPolePairHere,
-            RootRole::Pole,
-            Root::pair(re, pair_im),
-        );
-        add(ui, P::AddRealZeroHere, RootRole::Zero, Root::real(re));
-        add(
-            ui,
-            P::AddZeroPairHere,
-            RootRole::Zero,
-            Root::pair(re, pair_im),
-        );
+        let choices = [
+            (P::AddRealPoleHere, RootRole::Pole, Root::real(re)),
+            (P::AddPolePairHere, RootRole::Pole, Root::pair(re, pair_im)),
+            (P::AddRealZeroHere, RootRole::Zero, Root::real(re)),
+            (P::AddZeroPairHere, RootRole::Zero, Root::pair(re, pair_im)),
+        ];
+        for (phrase, role, root) in choices {
+            add(ui, phrase, role, root);
+        }
         ui.separator();
         if ui.button(P::FitViewToRoots.get(lang)).clicked() {
             out.push(Command::SetView(None));

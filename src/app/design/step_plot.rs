@@ -318,29 +318,6 @@ fn draw_markers(
     );
 }
 
-/// The markers of any step response, in English (the Identify mode's plot calls this until
-/// it draws its own): see [`draw_step_markers_in`].
-pub fn draw_step_markers(
-    plot: &mut egui_plot::PlotUi<'_>,
-    info: &crate::lti::StepInfo,
-    options: &StepInfoOptions,
-    value_at: &dyn Fn(f64) -> f64,
-    shift: f64,
-    markers: &Markers,
-    color: Color32,
-) {
-    draw_step_markers_in(
-        plot,
-        info,
-        options,
-        value_at,
-        shift,
-        markers,
-        color,
-        Lang::En,
-    );
-}
-
 /// The markers of any step response: `value_at(t)` evaluates the curve, `shift` is added
 /// to the metric times (the step instant of a measured test); names in `lang`.
 #[allow(clippy::too_many_arguments)]

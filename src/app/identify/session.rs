@@ -887,7 +887,7 @@ impl Session {
         self.diagnose_job = None;
         match result {
             DiagnoseOutcome::Loop(d) => {
-                self.diagnose_note = DiagnoseNote::Verdict(d.verdict.clone());
+                self.diagnose_note = DiagnoseNote::Verdict(d.verdict);
                 self.selected_step = Some(d.steps.len());
                 self.adopt(&d.final_fit);
                 self.diagnosis = Some(*d);
