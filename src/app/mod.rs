@@ -37,12 +37,12 @@ use crate::text::{Lang, Localize};
 
 /// Opens the Degrau window and blocks until it is closed.
 pub fn run() -> eframe::Result {
-    run_with(None)
+    run_with(None, None)
 }
 
 /// Opens the window; with a step test (path and how to read it), in the identification
 /// mode with that file loaded.
-pub fn run_with(test: Option<identify::IdentSettings>) -> eframe::Result {
+pub fn run_with(test: Option<identify::IdentSettings>, lang: Option<Lang>) -> eframe::Result {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("Degrau")
@@ -53,8 +53,15 @@ pub fn run_with(test: Option<identify::IdentSettings>) -> eframe::Result {
     eframe::run_native(
         "Degrau",
         options,
-        Box::new(move |_cc| {
+        Box::new(move |cc| {
             let mut app = DegrauApp::restore();
+            // The first frame is laid out at the presentation size already, so the panels'
+            // first sizes are taken at it.
+            cc.egui_ctx
+                .set_zoom_factor(look::clamp_scale(app.saved.scale));
+            if let Some(lang) = lang {
+                app.saved.lang = lang;
+            }
             if let Some(settings) = test {
                 let path = settings.path.clone();
                 app.ident.settings = settings;

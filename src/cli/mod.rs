@@ -477,8 +477,8 @@ fn parse_list<T>(
 
 /// The language asked for by `--lang` in `args`, read before clap parses them so that a
 /// refused flag is said in that language too (English when absent or unknown).
-fn lang_in(args: &[std::ffi::OsString]) -> Lang {
-    let mut lang = Lang::En;
+fn lang_in(args: &[std::ffi::OsString]) -> Option<Lang> {
+    let mut lang = None;
     let mut words = args.iter().map(|a| a.to_string_lossy());
     while let Some(word) = words.next() {
         let value = match word.strip_prefix("--lang") {
@@ -487,7 +487,7 @@ fn lang_in(args: &[std::ffi::OsString]) -> Lang {
             None => None,
         };
         if let Some(v) = value.and_then(|v| <Lang as clap::ValueEnum>::from_str(&v, true).ok()) {
-            lang = v;
+            lang = Some(v);
         }
     }
     lang
@@ -498,15 +498,17 @@ pub fn main() -> ExitCode {
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
     let cli = match Cli::try_parse_from(&args) {
         Ok(cli) => cli,
-        Err(e) => return refuse_arguments(&e, lang_in(&args)),
+        Err(e) => return refuse_arguments(&e, lang_in(&args).unwrap_or_default()),
     };
     let lang = cli.lang;
+    // The window takes the language only when it is asked for; else it keeps its own.
+    let window_lang = lang_in(&args);
     match cli.command {
-        None => open_app(lang),
+        None => open_app_with(None, lang, window_lang),
         Some(Command::Step(args)) => finish(run_step(&args, lang), lang),
         Some(Command::Fit(args)) => finish(fit::run_fit(&args, lang), lang),
         Some(Command::Diagnose(args)) => finish(diagnose::run_diagnose(&args, lang), lang),
-        Some(Command::Open(args)) => open_app_with(Some(args.settings()), lang),
+        Some(Command::Open(args)) => open_app_with(Some(args.settings()), lang, window_lang),
     }
 }
 
@@ -537,12 +539,14 @@ fn finish(result: Result<(), CliError>, lang: Lang) -> ExitCode {
     }
 }
 
-fn open_app(lang: Lang) -> ExitCode {
-    open_app_with(None, lang)
-}
-
-fn open_app_with(test: Option<crate::app::identify::IdentSettings>, lang: Lang) -> ExitCode {
-    match crate::app::run_with(test) {
+/// Opens the window (with a step test loaded), in `window_lang` when one was asked for;
+/// a failure is said in `lang`.
+fn open_app_with(
+    test: Option<crate::app::identify::IdentSettings>,
+    lang: Lang,
+    window_lang: Option<Lang>,
+) -> ExitCode {
+    match crate::app::run_with(test, window_lang) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!(
@@ -928,10 +932,13 @@ mod tests {
         let args = |a: &[&str]| a.iter().map(std::ffi::OsString::from).collect::<Vec<_>>();
         assert_eq!(
             lang_in(&args(&["degrau", "step", "--lang", "pt"])),
-            Lang::Pt
+            Some(Lang::Pt)
         );
-        assert_eq!(lang_in(&args(&["degrau", "--lang=pt", "fit"])), Lang::Pt);
-        assert_eq!(lang_in(&args(&["degrau", "step", "--lang"])), Lang::En);
-        assert_eq!(lang_in(&args(&["degrau", "step"])), Lang::En);
+        assert_eq!(
+            lang_in(&args(&["degrau", "--lang=pt", "fit"])),
+            Some(Lang::Pt)
+        );
+        assert_eq!(lang_in(&args(&["degrau", "step", "--lang"])), None);
+        assert_eq!(lang_in(&args(&["degrau", "step"])), None);
     }
 }

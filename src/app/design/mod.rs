@@ -69,7 +69,8 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
             .inner,
     );
     let rest = ui.available_rect_before_wrap().width();
-    let left_max = (rest - PLOT_MIN).max(PLOT_MIN);
+    // The s-plane takes at most half: the step plot is what a class looks at.
+    let left_max = (rest - PLOT_MIN).min(0.5 * rest).max(PLOT_MIN);
     commands.extend(
         egui::Panel::left("s-plane")
             .resizable(true)

@@ -181,6 +181,9 @@ pub fn hover_text(
     text
 }
 
+/// The smallest plot (points) that shows its legend.
+const LEGEND_MIN: egui::Vec2 = egui::vec2(520.0, 380.0);
+
 /// Draws the plot; returns the rect it took (for the PNG export).
 pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::Rect {
     let lang = look.lang;
@@ -212,13 +215,20 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
         ui.style_mut()
             .text_styles
             .insert(egui::TextStyle::Small, font.clone());
-        let response = Plot::new("step response")
-            .legend(
-                Legend::default()
-                    .position(egui_plot::Corner::RightBottom)
-                    .background_alpha(0.75)
-                    .text_style(egui::TextStyle::Body),
-            )
+        // A legend on a small plot would hide the curve: the markers' values are in the
+        // metrics table and on hover, so a small plot goes without it.
+        let room = ui.available_size();
+        let legend = (room.x >= LEGEND_MIN.x && room.y >= LEGEND_MIN.y).then(|| {
+            Legend::default()
+                .position(egui_plot::Corner::RightBottom)
+                .background_alpha(0.75)
+                .text_style(egui::TextStyle::Body)
+        });
+        let mut plot = Plot::new("step response");
+        if let Some(legend) = legend {
+            plot = plot.legend(legend);
+        }
+        let response = plot
             .x_axis_label("t (s)")
             .y_axis_label("y(t)")
             .x_grid_spacer(crate::app::grid::one_two_five())

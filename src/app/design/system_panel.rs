@@ -27,9 +27,20 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
     let lang = look.lang;
     let mut out = Vec::new();
     ui.heading(P::SystemHeading.get(lang));
+    // The label sits beside the box: the box leaves it room, so it is never wrapped.
+    let label_width = ui.fonts_mut(|f| {
+        f.layout_no_wrap(
+            P::Example.get(lang).to_string(),
+            egui::TextStyle::Body.resolve(ui.style()),
+            look.palette.axis,
+        )
+        .size()
+        .x
+    });
+    let room = ui.available_width() - label_width - 3.0 * ui.spacing().item_spacing.x - 20.0;
     egui::ComboBox::from_label(P::Example.get(lang))
         .selected_text(P::LoadExample.get(lang))
-        .width(ui.available_width().min(260.0))
+        .width(room.clamp(120.0, 260.0))
         .show_ui(ui, |ui| {
             for (i, p) in session.presets.iter().enumerate() {
                 if ui.selectable_label(false, p.name(lang)).clicked() {

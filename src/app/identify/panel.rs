@@ -12,7 +12,7 @@ use crate::text::Localize;
 use crate::text::identify::Phrase;
 
 use super::commands::{Choice, CodeKind, Command, LandscapeCommand, OffsetChoice};
-use super::session::{CODES, Session};
+use super::session::{CODES, DiagnoseNote, Session};
 use super::words;
 
 /// Draws the panel's sections into `ui`, adding what the student asks to `out`.
@@ -547,7 +547,10 @@ fn diagnose_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<C
         ui.label(evidence);
         ui.label(remedy);
     }
-    if let Some(verdict) = &d.verdict {
+    // The verdict is said once: above the table when it is the last thing the loop said.
+    if let Some(verdict) = &d.verdict
+        && !matches!(session.diagnose_note, DiagnoseNote::Verdict(_))
+    {
         ui.weak(verdict.text(lang));
     }
 }
