@@ -41,7 +41,7 @@ pub const REPEATED_AXIS_RELATIVE: f64 = 1e-6;
 /// Steps of the exponential recurrence between exact re-evaluations.
 const REANCHOR: usize = 64;
 
-/// What a step response does as t → ∞.
+/// What a step response does as t → ∞ (its words: `crate::text::step`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Behaviour {
@@ -53,18 +53,6 @@ pub enum Behaviour {
     Oscillating,
     /// Grows exponentially: a pole in the right half plane (or a repeated one on the axis).
     Unstable,
-}
-
-impl Behaviour {
-    /// A short phrase for people.
-    pub fn describe(self) -> &'static str {
-        match self {
-            Behaviour::Settles => "settles",
-            Behaviour::Integrating => "does not settle: it ramps (integrator)",
-            Behaviour::Oscillating => "does not settle: it oscillates forever",
-            Behaviour::Unstable => "does not settle: it grows without bound (unstable)",
-        }
-    }
 }
 
 /// One group of equal or nearly equal poles and its contribution to y.
