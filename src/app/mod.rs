@@ -22,6 +22,7 @@ pub mod identify;
 pub mod job;
 pub mod look;
 pub mod persist;
+pub mod plot_span;
 
 use std::time::Instant;
 

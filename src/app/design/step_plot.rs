@@ -10,8 +10,8 @@
 
 use eframe::egui::{self, Color32, FontId, Ui};
 use egui_plot::{
-    HLine, HoverPosition, Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, Points, Span,
-    Text, VLine,
+    HLine, HoverPosition, Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, Points, Text,
+    VLine,
 };
 use serde::{Deserialize, Serialize};
 
@@ -390,12 +390,15 @@ pub fn draw_step_markers_in(
         )
     {
         let (lo, hi) = options.rise_limits;
-        plot.span(
-            Span::new(
-                format!("{} {} s", P::RiseTimeName.get(lang), num(tr)),
-                a..=b,
-            )
-            .fill(color.gamma_multiply(0.12)),
+        // The label starts at the end of the rise, beside the upper crossing.
+        crate::app::plot_span::labelled_span(
+            plot,
+            format!("  {} {} s", P::RiseTimeName.get(lang), num(tr)),
+            a..=b,
+            color.gamma_multiply(0.12),
+            [b, at(hi)],
+            egui::Align2::LEFT_TOP,
+            color,
         );
         let crossing = |f: f64| format!("{} % {}", pct(f, lang), P::CrossingName.get(lang));
         plot.points(point(&crossing(lo), a, at(lo), color));

@@ -128,7 +128,26 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                 );
             }
             if let Some((a, b)) = evidence {
-                plot.span(Span::new(Phrase::Evidence.get(lang), a..=b).fill(palette.evidence));
+                // The label sits on the highest sample of the interval, at its start.
+                let top = plots
+                    .measured
+                    .iter()
+                    .filter(|p| (a..=b).contains(&p[0]))
+                    .map(|p| p[1])
+                    .fold(f64::NEG_INFINITY, f64::max);
+                if top.is_finite() {
+                    crate::app::plot_span::labelled_span(
+                        plot,
+                        Phrase::Evidence.get(lang).to_string(),
+                        a..=b,
+                        palette.evidence,
+                        [a, top],
+                        Align2::LEFT_BOTTOM,
+                        palette.error,
+                    );
+                } else {
+                    plot.span(Span::new(Phrase::Evidence.get(lang), a..=b).fill(palette.evidence));
+                }
             }
             if let (Some(info), Some(setup)) = (&plots.info, setup) {
                 draw_markers(plot, info, &plots.measured, setup.t0, session.markers, look);
@@ -266,8 +285,17 @@ fn draw_markers(
     if markers.rise
         && let (Some(a), Some(b), Some(tr)) = (info.rise_start, info.rise_end, info.rise_time)
     {
-        let name = format!("{} {}", Metric::RiseTime.name(lang), seconds(tr));
-        plot.span(Span::new(name, t0 + a..=t0 + b).fill(color.gamma_multiply(0.12)));
+        let name = format!("  {} {}", Metric::RiseTime.name(lang), seconds(tr));
+        let end = t0 + b;
+        crate::app::plot_span::labelled_span(
+            plot,
+            name,
+            t0 + a..=end,
+            color.gamma_multiply(0.12),
+            [end, value_at(end)],
+            Align2::LEFT_TOP,
+            color,
+        );
     }
     if markers.peak
         && let (Some(tp), Some(os)) = (info.peak_time, info.overshoot)
