@@ -4,24 +4,11 @@
 //! Each is refused with exit code 2 and words naming the flag or the conflict, never a
 //! number printed with exit 0.
 
-use std::process::{Command, Output};
+mod run;
 
-/// y = 50 + 2·(1 − e^{−(t−2)/5}) after a unit step at t = 2 s, Ts = 0.5 s.
-const STEP: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/first_order_step.csv"
-);
+use std::process::Command;
 
-fn degrau(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_degrau"))
-        .args(args)
-        .output()
-        .expect("the degrau binary runs")
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
+use run::{STEP, degrau, stderr};
 
 /// Runs `args`, expects exit code 2 and an error containing every one of `words`.
 fn refused(args: &[&str], words: &[&str]) {

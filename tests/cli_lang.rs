@@ -2,29 +2,11 @@
 //! Brazilian Portuguese with decimal commas and the same numbers as in English; `--json`
 //! byte-identical in both languages.
 
-use std::process::{Command, Output};
+mod run;
 
-/// y = 50 + 2·(1 − e^{−(t−2)/5}) after a unit step at t = 2 s, Ts = 0.5 s.
-const STEP: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/first_order_step.csv"
-);
+use run::{STEP, degrau, stderr, stdout};
+
 const LECI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv");
-
-fn degrau(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_degrau"))
-        .args(args)
-        .output()
-        .expect("the degrau binary runs")
-}
-
-fn stdout(out: &Output) -> String {
-    String::from_utf8_lossy(&out.stdout).into_owned()
-}
-
-fn stderr(out: &Output) -> String {
-    String::from_utf8_lossy(&out.stderr).into_owned()
-}
 
 /// The text output of `args` in `lang`, which must succeed.
 fn text_in(lang: &str, args: &[&str]) -> String {

@@ -1,0 +1,29 @@
+//! Running the `degrau` binary from a test: its output, its standard output and error as
+//! text (shared by the command-line tests).
+#![allow(dead_code)] // each test binary uses its own subset
+
+use std::process::{Command, Output};
+
+/// y = 50 + 2·(1 − e^{−(t−2)/5}) after a unit step at t = 2 s, Ts = 0.5 s.
+pub const STEP: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/first_order_step.csv"
+);
+
+/// `degrau args…`, run to the end.
+pub fn degrau(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_degrau"))
+        .args(args)
+        .output()
+        .expect("the degrau binary runs")
+}
+
+/// The standard output as text.
+pub fn stdout(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// The standard error as text.
+pub fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
