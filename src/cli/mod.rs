@@ -423,7 +423,7 @@ impl StepArgs {
                 .unwrap_or(defaults.settling_threshold),
             rise_limits,
         };
-        options.validate().map_err(CliError::Options)?;
+        options.check()?;
         Ok(options)
     }
 
@@ -844,11 +844,11 @@ mod tests {
         ));
         assert!(matches!(
             options(&["--rise-limits", "10,90"]),
-            Err(CliError::Options(_))
+            Err(CliError::Lti(LtiError::BadRiseLimits { .. }))
         ));
         assert!(matches!(
             options(&["--settling-threshold", "-0.02"]),
-            Err(CliError::Options(_))
+            Err(CliError::Lti(LtiError::BadSettlingBand(_)))
         ));
         assert!(matches!(
             options(&["--rise-limits", "0.1,x"]),
