@@ -3,13 +3,13 @@
 //! estimates it, and the experiment says which it did (`OperatingPoint`).
 //!
 //! Records are simulated from the exact step response (P1D and P2, output far from zero,
-//! noise 0.5 % of the step's effect): the step between two samples in mid-record, and at the
+//! noise 0.5 % of the step's effect, and 0.2–2 % white or coloured, quantised): the step between two samples in mid-record, and at the
 //! first sample of a record that starts with it (the input before given). The TCLab records
 //! in `tests/data/records` close the loop on the logs that raised the issue.
 
 use degrau::ident::data::{LoadOptions, StepTest, load_file, load_str};
 use degrau::ident::experiment::{EstimateReason, Experiment, Offset, OperatingPoint};
-use degrau::ident::fit::{FitOptions, FitReport};
+use degrau::ident::fit::{FitOptions, FitReport, Lcg};
 use degrau::ident::models::Param;
 use degrau::lti::{C64, StepResponse, TransferFunction};
 
@@ -62,20 +62,43 @@ fn fast_p1() -> Process {
     }
 }
 
-/// Gaussian noise from a fixed seed (xorshift64*, Box–Muller), so every run sees the same.
-struct Noise(u64);
+/// Measurement noise as real records have it: Gaussian (Box–Muller on the project's
+/// seeded generator), coloured as an AR(1) process x_k = φ·x_{k−1} + e_k scaled to a
+/// stationary standard deviation `sigma`, and read through an ADC of step `quantum`.
+struct Noise {
+    random: Lcg,
+    sigma: f64,
+    phi: f64,
+    state: f64,
+    quantum: f64,
+}
 
 impl Noise {
-    fn uniform(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        ((self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    fn new(seed: u64, sigma: f64, phi: f64, quantum: f64) -> Self {
+        Self {
+            random: Lcg(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1),
+            sigma,
+            phi,
+            state: 0.0,
+            quantum,
+        }
     }
 
     fn gaussian(&mut self) -> f64 {
-        let (a, b) = (self.uniform(), self.uniform());
+        let (a, b) = (1.0 - self.random.unit(), self.random.unit());
         (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
+    }
+
+    /// `y` as measured.
+    fn read(&mut self, y: f64) -> f64 {
+        let innovation = self.sigma * (1.0 - self.phi * self.phi).sqrt();
+        self.state = self.phi * self.state + innovation * self.gaussian();
+        let measured = y + self.state;
+        if self.quantum > 0.0 {
+            (measured / self.quantum).round() * self.quantum
+        } else {
+            measured
+        }
     }
 }
 
@@ -83,15 +106,19 @@ impl Noise {
 /// input `u_before`, as the loader reads a `t,u,y` file: the input column shows the new
 /// level from the first sample at or after `t_step`.
 fn record(process: &Process, t_step: f64, n: usize, seed: u64) -> StepTest {
-    let response = StepResponse::new(&process.g, DU).unwrap();
     let sigma = NOISE * (process.kp * DU).abs();
-    let mut noise = Noise(seed);
+    record_with(process, t_step, n, Noise::new(seed, sigma, 0.0, 0.0))
+}
+
+/// [`record`] with the given measurement noise.
+fn record_with(process: &Process, t_step: f64, n: usize, mut noise: Noise) -> StepTest {
+    let response = StepResponse::new(&process.g, DU).unwrap();
     let u_before = 20.0;
     let mut text = String::from("t,u,y\n");
     for k in 0..n {
         let t = k as f64 * TS;
         let u = if t >= t_step { u_before + DU } else { u_before };
-        let y = Y0 + response.value(t - t_step) + sigma * noise.gaussian();
+        let y = noise.read(Y0 + response.value(t - t_step));
         text.push_str(&format!("{t},{u},{y}\n"));
     }
     load_str(&text, &LoadOptions::from_text("t", "y", "u", None, 0)).unwrap()
@@ -147,6 +174,50 @@ fn a_step_between_samples_holds_the_mean_before_it() {
         assert!(estimated(&free, Param::Y0), "{}", process.code);
         assert_ne!(free.model.get(Param::Y0), mean);
         assert!((free.model.get(Param::Y0) - Y0).abs() < 3.0 * sigma);
+    }
+}
+
+/// The same on records as messy as real ones: noise from 0.2 % to 2 % of the step's effect,
+/// white or strongly coloured (φ = 0.8), read through an ADC, the step at varied instants
+/// between samples. Auto holds Y0 at exactly the measured mean before the step, which is the
+/// true operating point within what that noise allows of a mean of 41 samples.
+#[test]
+fn messy_records_hold_the_measured_mean_before_the_step() {
+    let mut seed = 10;
+    for process in [p1d(), p2()] {
+        for (level, phi) in [(0.002, 0.0), (0.02, 0.0), (0.005, 0.8), (0.02, 0.8)] {
+            for t_step in [40.15, 40.5, 40.9] {
+                seed += 1;
+                let effect = (process.kp * DU).abs();
+                let noise = Noise::new(seed, level * effect, phi, 0.001 * effect);
+                let test = record_with(&process, t_step, 300, noise);
+                let e = Experiment::new(&test, None, None, None).unwrap();
+                assert_eq!(e.t0, 41.0, "{} at {t_step}", process.code);
+                let data = e.fit_data(&test).unwrap();
+                let mean = test.output[..41].iter().sum::<f64>() / 41.0;
+                assert_eq!(
+                    e.operating_point_fact(&data),
+                    OperatingPoint::MeanBefore {
+                        y0: mean,
+                        samples: 41
+                    }
+                );
+                // The standard deviation of a mean of 41 AR(1) samples is about
+                // σ·√((1 + φ)/(1 − φ))/√41.
+                let spread = level * effect * ((1.0 + phi) / (1.0 - phi)).sqrt() / 41f64.sqrt();
+                assert!((mean - Y0).abs() < 4.0 * spread, "{mean} vs {Y0}");
+                let held = fit(&e, &test, process.code);
+                assert_eq!(held.model.get(Param::Y0), mean, "{}", process.code);
+                let kp = held.model.get(Param::Kp);
+                // Kp errs by the error of Y0 over the effect, plus the fit's own noise.
+                let allowed = 4.0 * spread / effect + 4.0 * level;
+                assert!(
+                    (kp - process.kp).abs() < allowed * process.kp,
+                    "{} level {level} φ {phi} at {t_step}: Kp {kp}",
+                    process.code
+                );
+            }
+        }
     }
 }
 

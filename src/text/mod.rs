@@ -1,6 +1,6 @@
 //! The text layer: the one place where the library's typed facts (notes on the data,
 //! evidence, verdicts, warnings, errors) and the app's labels become words, in English or
-//! in Brazilian Portuguese with the course notes' terms (see `../shared/glossary-pt.md`:
+//! in Brazilian Portuguese with the course notes' terms (the project's English–Portuguese glossary:
 //! tempo de subida, tempo de acomodação, sobressinal, ganho estático, tempo morto, …).
 //!
 //! The library never builds a sentence; the CLI and the app both render through here. JSON

@@ -386,6 +386,38 @@ mod tests {
     }
 
     #[test]
+    fn derived_poles_of_an_overdamped_pair_and_of_time_constants() {
+        // Tw = 1 s, ζ = 1.25: s = −(ζ ± √(ζ² − 1))/Tw = −0.5 and −2.
+        let mut v = Values::default();
+        for (p, x) in [(Param::Kp, 2.0), (Param::Tw, 1.0), (Param::Zeta, 1.25)] {
+            v.set(p, x);
+        }
+        let pair = Model::new(Structure::parse("P2U").unwrap(), v);
+        let en = derived(&pair, Lang::En).join("\n");
+        assert!(
+            en.contains("ωn = 1/Tw = 1 rad/s · σ = ζωn = 1.25 1/s"),
+            "{en}"
+        );
+        assert!(
+            en.contains("overdamped: poles -0.5 and -2")
+                || en.contains("overdamped: poles -2 and -0.5"),
+            "{en}"
+        );
+        // P2 with Tp1 = 4 s, Tp2 = 0.5 s: poles −1/4 and −2.
+        let mut v = Values::default();
+        for (p, x) in [(Param::Kp, 0.8), (Param::Tp1, 4.0), (Param::Tp2, 0.5)] {
+            v.set(p, x);
+        }
+        let lags = Model::new(Structure::parse("P2").unwrap(), v);
+        let pt = derived(&lags, Lang::Pt).join("\n");
+        assert!(
+            pt.contains("Polos reais: -0,25 (de Tp1); -2 (de Tp2)"),
+            "{pt}"
+        );
+        assert!(pt.contains("Ganho estático Kp = Δy/Δu = 0,8"), "{pt}");
+    }
+
+    #[test]
     fn the_fit_text_has_the_same_numbers_in_both_languages() {
         let r = report();
         let en = fit_lines(&r, Lang::En).join("\n");
