@@ -4,8 +4,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use degrau::ident::diagnose::{DiagnoseOptions, diagnose};
+use degrau::ident::excitation::Excitation;
 use degrau::ident::fit::FitData;
-use degrau::ident::models::{Param, StepSetup, Structure};
+use degrau::ident::models::{Param, Structure};
 
 mod common;
 
@@ -17,7 +18,7 @@ fn data() -> FitData {
         (Param::Td, 4.0),
         (Param::Y0, 30.0),
     ];
-    common::noisy_800("P2D", &truth, StepSetup { t0: 20.0, du: 4.0 }, 0.07, 7)
+    common::noisy_800("P2D", &truth, Excitation::step(20.0, 4.0), 0.07, 7)
 }
 
 fn bench(c: &mut Criterion) {

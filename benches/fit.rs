@@ -4,9 +4,10 @@
 //! - a 32-start global fit of an 800-sample test: ≤ 150 ms.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use degrau::ident::excitation::Excitation;
 use degrau::ident::fit::{FitData, FitOptions, fit};
 use degrau::ident::guess::auto_guess;
-use degrau::ident::models::{Param, StepSetup, Structure};
+use degrau::ident::models::{Param, Structure};
 
 mod common;
 
@@ -25,7 +26,7 @@ fn leci() -> FitData {
     FitData {
         times,
         y,
-        setup: StepSetup { t0: 5.0, du: 10.0 },
+        input: Excitation::step(5.0, 10.0),
     }
 }
 
@@ -38,7 +39,7 @@ fn synthetic_800() -> FitData {
         (Param::Td, 6.0),
         (Param::Y0, 20.0),
     ];
-    common::noisy_800("P2DU", &truth, StepSetup { t0: 10.0, du: 5.0 }, 0.04, 12345)
+    common::noisy_800("P2DU", &truth, Excitation::step(10.0, 5.0), 0.04, 12345)
 }
 
 fn benches(c: &mut Criterion) {

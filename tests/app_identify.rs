@@ -234,7 +234,7 @@ fn the_step_time_line_drags_t0() {
         .data
         .clone()
         .unwrap();
-    assert_eq!(d.setup.t0, moved, "the fit data follow the line");
+    assert_eq!(d.input.t0(), moved, "the fit data follow the line");
 }
 
 /// 40 samples 0.5 s apart of a first-order step response (τ = 3 s) from `y0` by `gain`, the

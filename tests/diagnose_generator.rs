@@ -19,13 +19,14 @@
 //! Run with `cargo test --test diagnose_generator -- --nocapture` to see the figures, with
 //! `DEGRAU_DIAGNOSE_CASES=40` for more cases per effect.
 
+use degrau::ident::excitation::Excitation;
 use std::sync::OnceLock;
 use std::time::Instant;
 
 use degrau::ident::diagnose::{Cause, DiagnoseOptions, DiagnoseReport, diagnose};
 use degrau::ident::fit::{FitData, FitOptions, fit};
 use degrau::ident::guess::auto_guess;
-use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
+use degrau::ident::models::{Model, Param, Structure, Values};
 
 // ---------------------------------------------------------------------------------------------
 // Acceptance numbers
@@ -230,8 +231,8 @@ impl Case {
             "| start {} (Y0 held at {:.3}) | t0={:.2} du={:.3} N={} Ts={:.4} | noise {} sd={:.4} ({:.2} % of effect {:.3})",
             self.start.code(),
             self.start_y0,
-            self.data.setup.t0,
-            self.data.setup.du,
+            self.data.input.t0(),
+            self.data.input.du(),
             self.data.times.len(),
             self.data.sampling_period(),
             if self.gaussian { "gauss" } else { "uniform" },
@@ -370,7 +371,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
     }
 
     let truth = Model::new(truth_structure, v);
-    let setup = StepSetup { t0, du };
+    let setup = Excitation::step(t0, du);
     let clean = truth.simulate(&setup, &times).unwrap();
     let noise_sd = rng.range(NOISE_FRACTION) * effect;
     let gaussian = rng.unit() < 0.5;
@@ -390,7 +391,11 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
         index,
         seed,
         truth,
-        data: FitData { times, y, setup },
+        data: FitData {
+            times,
+            y,
+            input: setup,
+        },
         start,
         start_y0,
         effect,
@@ -870,10 +875,10 @@ fn the_generator_keeps_its_ranges() {
             let v = &case.truth.values;
             let n = d.times.len();
             assert!((SAMPLES.0..=SAMPLES.1).contains(&n), "{}", case.describe());
-            let du = d.setup.du.abs();
+            let du = d.input.du().abs();
             assert!(du >= DU.0 && du <= DU.1, "{}", case.describe());
             let record = d.times[n - 1] - d.times[0];
-            let t0_share = (d.setup.t0 - d.times[0]) / record;
+            let t0_share = (d.input.t0() - d.times[0]) / record;
             let sd_share = case.noise_sd / case.effect;
             assert!(
                 sd_share >= NOISE_FRACTION.0 && sd_share <= NOISE_FRACTION.1,
@@ -881,7 +886,7 @@ fn the_generator_keeps_its_ranges() {
                 case.describe()
             );
             if kind == Kind::Offset {
-                assert_eq!(d.times[0], d.setup.t0, "{}", case.describe());
+                assert_eq!(d.times[0], d.input.t0(), "{}", case.describe());
                 assert!(v.get(Param::Y0).abs() >= MIN_OFFSET_FRACTION * case.effect);
                 assert_eq!(case.start_y0, 0.0);
             } else {
@@ -893,7 +898,7 @@ fn the_generator_keeps_its_ranges() {
                 assert_eq!(case.start_y0, v.get(Param::Y0));
             }
             if kind == Kind::Integrator {
-                let rise = (case.truth.simulate(&d.setup, &d.times[n - 1..]).unwrap()[0]
+                let rise = (case.truth.simulate(&d.input, &d.times[n - 1..]).unwrap()[0]
                     - v.get(Param::Y0))
                 .abs()
                     / du;

@@ -1,9 +1,10 @@
 //! The LECI step test of the notes (Tôrres): P2DU from the automatic guess and from the
 //! notes' bad guess, against the notes' answer Gdc 1.0021, θ 1.759 s, ζ 0.1948, ωn 0.9659.
 
+use degrau::ident::excitation::Excitation;
 use degrau::ident::fit::{FitData, FitOptions, FitWarning, Method, fit};
 use degrau::ident::guess::auto_guess;
-use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
+use degrau::ident::models::{Model, Param, Structure, Values};
 
 fn leci() -> FitData {
     let text =
@@ -21,7 +22,7 @@ fn leci() -> FitData {
     FitData {
         times,
         y,
-        setup: StepSetup { t0: 5.0, du: 10.0 },
+        input: Excitation::step(5.0, 10.0),
     }
 }
 
@@ -44,7 +45,7 @@ fn notes_answer() -> Values {
 
 fn mse(data: &FitData, v: Values) -> f64 {
     let y = Model::new(structure(), v)
-        .simulate(&data.setup, &data.times)
+        .simulate(&data.input, &data.times)
         .unwrap();
     data.y
         .iter()

@@ -3,11 +3,12 @@
 //! `/usr/bin/time -v`. Ignored by default: it is a measurement, not a check of speed; what it
 //! asserts is only that the fit is right.
 
+use degrau::ident::excitation::Excitation;
 use std::time::Instant;
 
 use degrau::ident::fit::{FitData, FitOptions, fit};
 use degrau::ident::guess::auto_guess;
-use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
+use degrau::ident::models::{Model, Param, Structure, Values};
 
 const SAMPLES: usize = 5_000_000;
 
@@ -21,7 +22,7 @@ fn record(code: &str) -> FitData {
     ] {
         truth.set(p, x);
     }
-    let setup = StepSetup { t0: 20.05, du: 2.0 };
+    let setup = Excitation::step(20.05, 2.0);
     let times: Vec<f64> = (0..SAMPLES).map(|k| 1e-4 * k as f64).collect();
     let mut y = Model::new(Structure::parse(code).unwrap(), truth)
         .simulate(&setup, &times)
@@ -33,7 +34,11 @@ fn record(code: &str) -> FitData {
             .wrapping_add(1442695040888963407);
         *v += 0.02 * (2.0 * (state >> 11) as f64 / (1u64 << 53) as f64 - 1.0);
     }
-    FitData { times, y, setup }
+    FitData {
+        times,
+        y,
+        input: setup,
+    }
 }
 
 fn measure(code: &str) {

@@ -3,9 +3,10 @@
 //! (1e-9 relative), the same fit %, and its diagnosis names the same causes.
 
 use degrau::ident::diagnose::{DiagnoseOptions, diagnose};
+use degrau::ident::excitation::Excitation;
 use degrau::ident::fit::{FitData, FitError, FitOptions, FitReport, FitWarning, Termination, fit};
 use degrau::ident::guess::auto_guess;
-use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
+use degrau::ident::models::{Model, Param, Structure, Values};
 
 /// Output, time and Δu scales: the unit record first.
 const SCALES: [(f64, f64, f64); 8] = [
@@ -55,7 +56,7 @@ fn record_of(code: &str, (ky, kt, kdu): (f64, f64, f64)) -> FitData {
         (Param::Td, 1.2),
         (Param::Y0, 30.0),
     ]);
-    let setup = StepSetup { t0: 2.05, du: 2.0 };
+    let setup = Excitation::step(2.05, 2.0);
     let times: Vec<f64> = (0..400).map(|k| 0.1 * k as f64).collect();
     let model = Model::new(Structure::parse(code).unwrap(), truth);
     let y = model.simulate(&setup, &times).unwrap();
@@ -65,10 +66,7 @@ fn record_of(code: &str, (ky, kt, kdu): (f64, f64, f64)) -> FitData {
             .zip(noise(times.len()))
             .map(|(y, e)| (y + 0.02 * e) * ky)
             .collect(),
-        setup: StepSetup {
-            t0: setup.t0 * kt,
-            du: setup.du * kdu,
-        },
+        input: Excitation::step(setup.t0() * kt, setup.du() * kdu),
     }
 }
 

@@ -1,14 +1,15 @@
 //! Test data shared by the benches: a simulated step test with deterministic noise.
 
+use degrau::ident::excitation::Excitation;
 use degrau::ident::fit::FitData;
-use degrau::ident::models::{Model, Param, StepSetup, Structure, Values};
+use degrau::ident::models::{Model, Param, Structure, Values};
 
 /// 800 samples (Ts = 0.25 s) of the model `code` with `truth`, plus uniform noise of
 /// peak-to-peak `noise` from a small LCG seeded with `seed`.
 pub fn noisy_800(
     code: &str,
     truth: &[(Param, f64)],
-    setup: StepSetup,
+    setup: Excitation,
     noise: f64,
     seed: u64,
 ) -> FitData {
@@ -28,5 +29,9 @@ pub fn noisy_800(
             .wrapping_add(1442695040888963407);
         *v += noise * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
     }
-    FitData { times, y, setup }
+    FitData {
+        times,
+        y,
+        input: setup,
+    }
 }

@@ -583,10 +583,10 @@ fn explain(
     let r = current.residuals(data).unwrap_or_default();
     let analysis = analyse(current, data);
     let v = extended.model.values;
-    let t0 = data.setup.t0;
+    let t0 = data.input.t0();
     let t_first = data.times.first().copied().unwrap_or(t0);
     let t_last = data.times.last().copied().unwrap_or(t0);
-    let effect = (extended.model.get(Param::Kp) * data.setup.du).abs();
+    let effect = (extended.model.get(Param::Kp) * data.input.du()).abs();
     let region = |kind: residuals::RegionKind| {
         analysis
             .as_ref()

@@ -1,15 +1,23 @@
-//! An identification experiment: a loaded step test plus the choices a student makes on it
-//! (step instant and size, operating point, window, filter), turned into the data a fit
-//! sees. The command line and the app both go through here, so they fit the same thing.
+//! An identification experiment: a loaded test plus the choices a student makes on it (what
+//! drove it: the measured input or one ideal step; operating point, window, filter), turned
+//! into the data a fit sees. The command line and the app both go through here, so they fit
+//! the same thing.
+//!
+//! By default a test with an input column is driven by that input, every change of it used
+//! ([`Drive::Measured`]); one without, or where the student typed the step (t0 or Δu), or
+//! asked for it (`--single-step`), by the ideal step Δu at t0 ([`Drive::Step`], the LECI
+//! case, today's model).
 
 use std::borrow::Cow;
 
 use serde::{Deserialize, Serialize};
 
 use super::data::StepTest;
+use super::excitation::Excitation;
+use super::excitation::Hold;
 use super::fit::{FitData, FitError, FitObserver, FitOptions, FitReport, fit};
 use super::guess::auto_guess;
-use super::models::{ModelError, Param, StepSetup, Structure, Values};
+use super::models::{ModelError, Param, Structure, Values};
 use super::prepare;
 
 /// What to do with the output before the step, y0 (procest's offset).
@@ -49,6 +57,10 @@ pub enum EstimateReason {
     /// [`Offset::Auto`], but no sample is at or before the step instant (it comes before the
     /// first sample kept).
     NoSampleBeforeStep,
+    /// [`Offset::Auto`], but the output still moved before the first change
+    /// ([`super::rest::Rest::NotAtRest`]): no level was at rest, and an initial transient is
+    /// estimated with it.
+    NotAtRest,
 }
 
 impl OperatingPoint {
@@ -77,13 +89,31 @@ pub enum ExperimentError {
     Fit(#[from] FitError),
 }
 
+/// What drove the test, as the model sees it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Drive {
+    /// One ideal step Δu at t0 ([`Experiment::t0`], [`Experiment::du`]).
+    #[default]
+    Step,
+    /// The measured input column, held between samples as `hold` says.
+    Measured { hold: Hold },
+}
+
 /// The choices made on a test.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Experiment {
-    /// Step instant (s, in the file's time).
+    /// Step instant (s, in the file's time): the ideal step's, or the measured input's
+    /// first change.
     pub t0: f64,
-    /// Step size Δu (input units).
+    /// Step size Δu (input units): the ideal step's, or the measured input's first change.
     pub du: f64,
+    /// What drove the test.
+    #[serde(default)]
+    pub drive: Drive,
+    /// The input before the record started, when given (a step at the first sample).
+    #[serde(default)]
+    pub initial_input: Option<f64>,
     pub offset: Offset,
     /// Time range kept (inclusive), `None` for everything.
     pub window: Option<(f64, f64)>,
@@ -92,10 +122,39 @@ pub struct Experiment {
 }
 
 impl Experiment {
-    /// Reads t0 and Δu from the test's input column; `t0`/`du` override what is found.
-    /// `initial_input` is the input before the record started (e.g. 0 for a heater switched
-    /// on at the first sample).
+    /// Driven by the measured input when the test has one that changes and neither `t0`
+    /// nor `du` is typed; else by one ideal step, read from the input's largest change
+    /// where `t0`/`du` do not say it. `initial_input` is the input before the record
+    /// started (e.g. 0 for a heater switched on at the first sample).
     pub fn new(
+        test: &StepTest,
+        t0: Option<f64>,
+        du: Option<f64>,
+        initial_input: Option<f64>,
+    ) -> Result<Self, ExperimentError> {
+        let typed = t0.is_some() || du.is_some();
+        let measured = test
+            .input
+            .as_deref()
+            .and_then(|u| Excitation::measured(&test.time, u, initial_input, Hold::Zoh))
+            .filter(|_| !typed);
+        if let Some(input) = measured {
+            return Ok(Self {
+                t0: input.t0(),
+                du: input.du(),
+                drive: Drive::Measured { hold: Hold::Zoh },
+                initial_input,
+                offset: Offset::Auto,
+                window: None,
+                filter_hz: None,
+            });
+        }
+        Self::single_step(test, t0, du, initial_input)
+    }
+
+    /// Driven by one ideal step (today's model, `--single-step`): t0 and Δu typed, or the
+    /// input column's largest change.
+    pub fn single_step(
         test: &StepTest,
         t0: Option<f64>,
         du: Option<f64>,
@@ -114,6 +173,8 @@ impl Experiment {
         Ok(Self {
             t0,
             du,
+            drive: Drive::Step,
+            initial_input,
             offset: Offset::Auto,
             window: None,
             filter_hz: None,
@@ -137,14 +198,25 @@ impl Experiment {
             let ts = prepare::sampling_period(&kept.time).unwrap_or(1.0);
             y = prepare::Ewma::try_new(fc, ts)?.apply(&y);
         }
+        let input = self.input(test)?;
         Ok(FitData {
             times: kept.time.clone(),
             y,
-            setup: StepSetup {
-                t0: self.t0,
-                du: self.du,
-            },
+            input,
         })
+    }
+
+    /// The input the model sees: the whole record's (a window chooses the samples the fit
+    /// compares, not what drove the process: changes before it still act inside it).
+    fn input(&self, test: &StepTest) -> Result<Excitation, ExperimentError> {
+        match self.drive {
+            Drive::Step => Ok(Excitation::step(self.t0, self.du)),
+            Drive::Measured { hold } => test
+                .input
+                .as_deref()
+                .and_then(|u| Excitation::measured(&test.time, u, self.initial_input, hold))
+                .ok_or(ExperimentError::NoStep),
+        }
     }
 
     /// What the offset choice does with Y0 on `data`: held (at the level measured before
@@ -155,6 +227,11 @@ impl Experiment {
             Offset::Free => OperatingPoint::Estimated {
                 reason: EstimateReason::Asked,
             },
+            Offset::Auto if super::rest::rest_before(data).is_not_at_rest() => {
+                OperatingPoint::Estimated {
+                    reason: EstimateReason::NotAtRest,
+                }
+            }
             Offset::Auto => match super::guess::rest_level(data) {
                 Some(rest) if rest.at_step => OperatingPoint::AtStep { y0: rest.y0 },
                 Some(rest) => OperatingPoint::MeanBefore {
@@ -183,6 +260,9 @@ impl Experiment {
         let mut s = Structure::parse(code)?;
         s.free_offset = self.operating_point(data).is_none();
         s.drift = drift;
+        s.lead = data.input.lead_range > 0.0;
+        s.transient =
+            self.offset == Offset::Auto && super::rest::rest_before(data).is_not_at_rest();
         Ok(s)
     }
 

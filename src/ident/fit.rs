@@ -30,19 +30,21 @@
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
-use super::models::{Model, ModelError, Param, Simulator, StepSetup, Structure, Values};
+use super::excitation::Excitation;
+use super::models::{Model, ModelError, Param, Simulator, Structure, Values};
 use super::scale::{Scale, Unrepresentable};
 use super::stats::student_t_quantile;
 
 /// Samples per piece of the sums over the record.
 pub const CHUNK: usize = 8192;
 
-/// The measured test as the fit sees it (already windowed and filtered).
+/// The measured test as the fit sees it (already windowed and filtered): the output at each
+/// instant and the input that drove it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FitData {
     pub times: Vec<f64>,
     pub y: Vec<f64>,
-    pub setup: StepSetup,
+    pub input: Excitation,
 }
 
 impl FitData {
@@ -58,8 +60,9 @@ impl FitData {
 
     /// Duration of the record after the step (s), at least `ts` (the sampling period).
     pub fn duration_with(&self, ts: f64) -> f64 {
-        let last = self.times.last().copied().unwrap_or(self.setup.t0);
-        (last - self.setup.t0).max(ts)
+        let t0 = self.input.t0();
+        let last = self.times.last().copied().unwrap_or(t0);
+        (last - t0).max(ts)
     }
 }
 
@@ -229,7 +232,7 @@ impl FitReport {
         let units = &self.units;
         let simulator = units
             .model_in(&self.model)
-            .simulator(&internal_setup(&data.setup))?;
+            .simulator(&units.input_in(&data.input))?;
         let mut r = vec![0.0; data.y.len()];
         let mut times = Vec::with_capacity(CHUNK);
         for (k, out) in r.chunks_mut(CHUNK).enumerate() {
@@ -274,28 +277,29 @@ impl From<Unrepresentable> for FitError {
     }
 }
 
-/// The step set-up in internal units: at t̃ = 0, of size ±1.
-fn internal_setup(setup: &StepSetup) -> StepSetup {
-    StepSetup {
-        t0: 0.0,
-        du: setup.du.signum(),
-    }
-}
-
-/// Lower and upper bound of each parameter for this data.
+/// Lower and upper bound of each parameter for this data (a structure with `lead` lets Td
+/// go down to −[`Excitation::lead_range`], and bounds Ta by it).
 pub fn bounds(p: Param, data: &FitData) -> (f64, f64) {
-    bounds_with(p, data.sampling_period(), data.duration())
+    bounds_with(
+        p,
+        data.sampling_period(),
+        data.duration(),
+        data.input.lead_range,
+    )
 }
 
-/// [`bounds`] for a record sampled every `ts` seconds and `duration` seconds long after the
-/// step.
-fn bounds_with(p: Param, ts: f64, duration: f64) -> (f64, f64) {
+/// [`bounds`] for a record sampled every `ts` seconds, `duration` seconds long after the
+/// step, whose changes may have come up to `lead` seconds before they show.
+fn bounds_with(p: Param, ts: f64, duration: f64, lead: f64) -> (f64, f64) {
     match p {
         Param::Tp1 | Param::Tp2 | Param::Tp3 | Param::Tw => (1e-3 * ts, 100.0 * duration),
         Param::Zeta => (0.0, 10.0),
-        Param::Td => (0.0, 0.95 * duration),
+        Param::Td => (-lead, 0.95 * duration),
+        Param::Ta => (0.0, lead),
         Param::Tz => (-100.0 * duration, 100.0 * duration),
-        Param::Kp | Param::Y0 | Param::Drift => (f64::NEG_INFINITY, f64::INFINITY),
+        Param::Kp | Param::Y0 | Param::Drift | Param::X1 | Param::X2 | Param::X3 => {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        }
     }
 }
 
@@ -375,16 +379,25 @@ pub fn fit(
 }
 
 fn validate(data: &FitData, structure: &Structure) -> Result<(), FitError> {
-    if !data.setup.du.is_finite() || data.setup.du == 0.0 {
-        return Err(FitError::BadStep(data.setup.du));
+    let du = data.input.du_scale();
+    if !du.is_finite() || du == 0.0 {
+        return Err(FitError::BadStep(du));
     }
-    if !data.setup.t0.is_finite() {
-        return Err(FitError::BadStepTime(data.setup.t0));
+    if let Some(t) = data
+        .input
+        .steps
+        .iter()
+        .chain(&data.input.ramps)
+        .map(|s| s.t)
+        .chain([data.input.t0()])
+        .find(|t| !t.is_finite())
+    {
+        return Err(FitError::BadStepTime(t));
     }
     if data.times.iter().chain(&data.y).any(|v| !v.is_finite()) {
         return Err(FitError::NonFiniteData);
     }
-    let after = data.times.iter().filter(|&&t| t >= data.setup.t0).count();
+    let after = data.times.iter().filter(|&&t| t >= data.input.t0()).count();
     let p = structure.len();
     if after <= p || data.times.len() <= p + 1 || data.y.len() != data.times.len() {
         return Err(FitError::TooFewSamples { n: after, p });
@@ -453,21 +466,28 @@ struct Problem {
 impl Problem {
     fn new(data: &FitData, structure: Structure, guess: Values) -> Result<Self, FitError> {
         let ts = data.sampling_period();
-        let units = Scale::of(data, ts).ok_or(FitError::BadStep(data.setup.du))?;
+        let units = Scale::of(data, ts).ok_or(FitError::BadStep(data.input.du_scale()))?;
         units.check(structure)?;
         let data = units.data_in(data);
         let ts = ts / units.t_unit;
         let duration = data.duration_with(ts);
         let params = structure.params();
-        let (lower, upper): (Vec<f64>, Vec<f64>) =
-            params.iter().map(|&p| bounds_with(p, ts, duration)).unzip();
+        let lead = if structure.lead {
+            data.input.lead_range
+        } else {
+            0.0
+        };
+        let (lower, upper): (Vec<f64>, Vec<f64>) = params
+            .iter()
+            .map(|&p| bounds_with(p, ts, duration, lead))
+            .unzip();
         let y_span = data.y.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b))
             - data.y.iter().fold(f64::INFINITY, |a, &b| a.min(b));
         let y_scale = y_span.abs().max(1e-12);
         let typical = params
             .iter()
             .map(|&p| match p {
-                Param::Kp | Param::Y0 => y_scale,
+                Param::Kp | Param::Y0 | Param::X1 | Param::X2 | Param::X3 => y_scale,
                 Param::Drift => y_scale / duration,
                 Param::Zeta => 1.0,
                 _ => ts,
@@ -504,7 +524,7 @@ impl Problem {
     }
 
     fn simulator(&self, x: &[f64]) -> Result<Simulator, ModelError> {
-        self.model(x).simulator(&self.data.setup)
+        self.model(x).simulator(&self.data.input)
     }
 
     /// Residuals y − ŷ of one piece of the record (`range`) into `out`.
@@ -624,7 +644,8 @@ impl Problem {
                     Param::Td => v * (0.3 + 1.4 * rng.unit()),
                     Param::Tz => v + rng.symmetric() * duration * 0.3,
                     Param::Kp => v * (0.5 * rng.symmetric()).exp(),
-                    Param::Y0 | Param::Drift => v,
+                    Param::Ta => v,
+                    Param::Y0 | Param::Drift | Param::X1 | Param::X2 | Param::X3 => v,
                 })
                 .collect();
             out.push(self.clamp(x));
@@ -912,7 +933,8 @@ impl Problem {
                 let tolerance = 1e-6 * (bound.abs() + self.typical[i]);
                 if bound.is_finite()
                     && (run.x[i] - bound).abs() <= tolerance
-                    && !(param == Param::Td && bound == 0.0)
+                    && !(param == Param::Td && bound <= 0.0)
+                    && param != Param::Ta
                 {
                     warnings.push(FitWarning::AtBound {
                         param: param.name().into(),
@@ -1086,7 +1108,7 @@ pub fn alias_warning(model: &Model, data: &FitData) -> Option<FitWarning> {
 fn alias_in(model: &Model, data: &FitData, ts: f64) -> Option<FitWarning> {
     let nyquist = std::f64::consts::PI / ts;
     let omega_d = model.damped_frequency().unwrap_or(0.0);
-    let effect = (model.get(Param::Kp) * data.setup.du)
+    let effect = (model.get(Param::Kp) * data.input.du_scale())
         .abs()
         .max(f64::MIN_POSITIVE);
     let between = between_sample_swing(model, data) / effect;
@@ -1119,7 +1141,7 @@ fn frequencies_out(w: FitWarning, units: &Scale) -> FitWarning {
 fn between_sample_swing(model: &Model, data: &FitData) -> f64 {
     const REFINE: usize = 16;
     let t = &data.times;
-    let Ok(simulator) = model.simulator(&data.setup) else {
+    let Ok(simulator) = model.simulator(&data.input) else {
         return 0.0;
     };
     let windows = t.len().saturating_sub(1);
@@ -1143,7 +1165,7 @@ fn between_sample_swing(model: &Model, data: &FitData) -> f64 {
         values.resize(fine.len(), 0.0);
         simulator.fill(&fine, &mut values);
         for (w, i) in (start..end).enumerate() {
-            if t[i + 1] <= data.setup.t0 {
+            if t[i + 1] <= data.input.t0() {
                 continue;
             }
             let (ya, yb) = (values[w * REFINE], values[(w + 1) * REFINE]);
@@ -1197,14 +1219,22 @@ mod tests {
         for &(p, x) in truth {
             v.set(p, x);
         }
-        let setup = StepSetup { t0: 2.0, du: 2.0 };
+        let setup = Excitation::step(2.0, 2.0);
         let times: Vec<f64> = (0..400).map(|k| 0.1 * k as f64).collect();
         let mut y = Model::new(structure, v).simulate(&setup, &times).unwrap();
         let mut rng = Lcg(9);
         for v in y.iter_mut() {
             *v += noise * rng.symmetric();
         }
-        (FitData { times, y, setup }, structure, v)
+        (
+            FitData {
+                times,
+                y,
+                input: setup,
+            },
+            structure,
+            v,
+        )
     }
 
     #[test]
@@ -1298,7 +1328,7 @@ mod tests {
         let data = FitData {
             times: vec![0.0, 1.0],
             y: vec![0.0, 1.0],
-            setup: StepSetup { t0: 0.0, du: 1.0 },
+            input: Excitation::step(0.0, 1.0),
         };
         let s = Structure::parse("P2DU").unwrap();
         assert!(matches!(
@@ -1306,7 +1336,7 @@ mod tests {
             Err(FitError::TooFewSamples { .. })
         ));
         let data = FitData {
-            setup: StepSetup { t0: 0.0, du: 0.0 },
+            input: Excitation::step(0.0, 0.0),
             ..data
         };
         assert!(matches!(

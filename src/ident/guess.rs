@@ -8,8 +8,9 @@
 //! Both the features and the guess are read in the record's internal units ([`Scale`]) and
 //! scaled back, so they do not depend on the record's scale (a 1e300 output, time in years).
 
+use super::excitation::Excitation;
 use super::fit::FitData;
-use super::models::{Model, Param, StepSetup, Structure, Values};
+use super::models::{Model, Param, Structure, Values};
 use super::scale::Scale;
 
 /// What the curve shows, relative to the operating point y0 and the final level.
@@ -59,7 +60,7 @@ pub struct RestLevel {
 /// it exist: a step that came between two samples has already moved a fast output there.
 /// `None` when the data start after t0.
 pub fn rest_level(data: &FitData) -> Option<RestLevel> {
-    let (samples, at_step) = rest_samples(&data.times, data.setup.t0, data.y.len())?;
+    let (samples, at_step) = rest_samples(&data.times, data.input.t0(), data.y.len())?;
     Some(RestLevel {
         y0: mean(&data.y[..samples]),
         samples,
@@ -137,10 +138,10 @@ fn features_as_given(data: &FitData, y0: Option<f64>) -> CurveFeatures {
         .times
         .iter()
         .zip(&data.y)
-        .filter(|(t, _)| **t >= data.setup.t0)
+        .filter(|(t, _)| **t >= data.input.t0())
         .map(|(t, y)| {
             (
-                t - data.setup.t0,
+                t - data.input.t0(),
                 if span != 0.0 { (y - y0) / span } else { 0.0 },
             )
         })
@@ -262,7 +263,7 @@ fn guess_as_given(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
     let f = features_as_given(data, y0);
     let duration = data.duration();
     let ts = data.sampling_period();
-    let du = data.setup.du;
+    let du = data.input.du();
     let mut v = Values::default();
     v.set(Param::Y0, f.y0);
     v.set(Param::Drift, 0.0);
@@ -278,7 +279,7 @@ fn guess_as_given(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
     if structure.integrator {
         v.set(Param::Kp, f.final_slope / du);
         // The ramp's asymptote y = y0 + Kp·du·(t − t0 − Td − Tp) crosses y0 at the total lag.
-        let last_t = data.times.last().copied().unwrap_or(data.setup.t0) - data.setup.t0;
+        let last_t = data.times.last().copied().unwrap_or(data.input.t0()) - data.input.t0();
         let last_y = data.y.last().copied().unwrap_or(f.y0);
         let intercept = if f.final_slope != 0.0 {
             last_t - (last_y - f.y0) / f.final_slope
@@ -400,9 +401,7 @@ fn own_five_percent_time(structure: Structure, values: Values, data: &FitData) -
     let model = Model::new(s, v);
     let horizon = data.duration();
     let times: Vec<f64> = (0..=2000).map(|k| horizon * k as f64 / 2000.0).collect();
-    let y = model
-        .simulate(&StepSetup { t0: 0.0, du: 1.0 }, &times)
-        .ok()?;
+    let y = model.simulate(&Excitation::step(0.0, 1.0), &times).ok()?;
     let kp = v.get(Param::Kp);
     if kp == 0.0 {
         return None;
@@ -423,10 +422,14 @@ mod tests {
         truth.set(Param::Tp1, 5.0);
         truth.set(Param::Td, 1.5);
         truth.set(Param::Y0, 10.0);
-        let setup = StepSetup { t0: 3.0, du: 0.5 };
+        let setup = Excitation::step(3.0, 0.5);
         let times: Vec<f64> = (0..300).map(|k| 0.1 * k as f64).collect();
         let y = Model::new(s, truth).simulate(&setup, &times).unwrap();
-        let data = FitData { times, y, setup };
+        let data = FitData {
+            times,
+            y,
+            input: setup,
+        };
         let g = auto_guess(&data, s, None);
         assert!((g.get(Param::Y0) - 10.0).abs() < 1e-12);
         assert!(
@@ -450,10 +453,14 @@ mod tests {
         truth.set(Param::Tw, 1.0 / 0.9659);
         truth.set(Param::Zeta, 0.1948);
         truth.set(Param::Y0, 50.0);
-        let setup = StepSetup { t0: 5.0, du: 10.0 };
+        let setup = Excitation::step(5.0, 10.0);
         let times: Vec<f64> = (0..400).map(|k| 5.0 + 0.1 * k as f64).collect();
         let y = Model::new(s, truth).simulate(&setup, &times).unwrap();
-        let data = FitData { times, y, setup };
+        let data = FitData {
+            times,
+            y,
+            input: setup,
+        };
         let g = auto_guess(&data, s, Some(50.0));
         let wn = 1.0 / g.get(Param::Tw);
         assert!((wn - 0.9659).abs() < 0.1, "{wn}");
@@ -470,12 +477,16 @@ mod tests {
         for &(p, x) in truth {
             v.set(p, x);
         }
-        let setup = StepSetup { t0: 2.0, du: 1.0 };
+        let setup = Excitation::step(2.0, 1.0);
         let times: Vec<f64> = (0..600).map(|k| 0.1 * k as f64).collect();
         let y = Model::new(s, v).simulate(&setup, &times).unwrap();
         let mut rng = crate::ident::fit::Lcg(0x2545_F491_4F6C_DD1D);
         let y = y.iter().map(|y| y + noise * rng.symmetric()).collect();
-        FitData { times, y, setup }
+        FitData {
+            times,
+            y,
+            input: setup,
+        }
     }
 
     #[test]

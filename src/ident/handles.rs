@@ -7,7 +7,8 @@
 //! - **first peak** (underdamped models): its height sets ζ through the overshoot,
 //!   e^{−ζπ/√(1−ζ²)}, its time sets ωd = π/(t_peak − t0 − Td).
 
-use super::models::{Model, Param, StepSetup};
+use super::excitation::Excitation;
+use super::models::{Model, Param};
 
 /// The draggable handles.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -48,10 +49,10 @@ pub fn handles(model: &Model) -> Vec<Handle> {
 }
 
 /// Samples of the model over [t0, t_end] for locating handles.
-fn curve(model: &Model, setup: &StepSetup, t_end: f64) -> Option<(Vec<f64>, Vec<f64>)> {
+fn curve(model: &Model, setup: &Excitation, t_end: f64) -> Option<(Vec<f64>, Vec<f64>)> {
     let n = 1500;
     let times: Vec<f64> = (0..=n)
-        .map(|k| setup.t0 + (t_end - setup.t0) * k as f64 / n as f64)
+        .map(|k| setup.t0() + (t_end - setup.t0()) * k as f64 / n as f64)
         .collect();
     let y = model.simulate(setup, &times).ok()?;
     Some((times, y))
@@ -60,7 +61,7 @@ fn curve(model: &Model, setup: &StepSetup, t_end: f64) -> Option<(Vec<f64>, Vec<
 /// Where a handle sits (t, y), for a record ending at `t_end`.
 pub fn position(
     model: &Model,
-    setup: &StepSetup,
+    setup: &Excitation,
     t_end: f64,
     handle: Handle,
 ) -> Option<(f64, f64)> {
@@ -72,11 +73,11 @@ pub fn position(
     };
     match handle {
         Handle::FinalValue => Some((t_end, *model.simulate(setup, &[t_end]).ok()?.first()?)),
-        Handle::DeadTime => Some((setup.t0 + td, y0)),
+        Handle::DeadTime => Some((setup.t0() + td, y0)),
         Handle::TimeConstant => {
             let (t, y) = curve(model, setup, t_end)?;
-            let target = y0 + 0.632 * (model.get(Param::Kp) * setup.du);
-            let rising = model.get(Param::Kp) * setup.du > 0.0;
+            let target = y0 + 0.632 * (model.get(Param::Kp) * setup.du());
+            let rising = model.get(Param::Kp) * setup.du() > 0.0;
             let k = y
                 .iter()
                 .position(|&v| if rising { v >= target } else { v <= target })?;
@@ -84,7 +85,7 @@ pub fn position(
         }
         Handle::FirstPeak => {
             let (t, y) = curve(model, setup, t_end)?;
-            let sign = (model.get(Param::Kp) * setup.du).signum();
+            let sign = (model.get(Param::Kp) * setup.du()).signum();
             let k = (1..y.len() - 1)
                 .find(|&k| sign * (y[k] - y[k - 1]) > 0.0 && sign * (y[k + 1] - y[k]) <= 0.0)?;
             Some((t[k], y[k]))
@@ -95,7 +96,7 @@ pub fn position(
 /// The model after dragging `handle` to (t, y).
 pub fn drag(
     model: &Model,
-    setup: &StepSetup,
+    setup: &Excitation,
     t_end: f64,
     handle: Handle,
     (t, y): (f64, f64),
@@ -116,10 +117,10 @@ pub fn drag(
                 }
             }
         }
-        Handle::DeadTime => m.values.set(Param::Td, (t - setup.t0).max(0.0)),
+        Handle::DeadTime => m.values.set(Param::Td, (t - setup.t0()).max(0.0)),
         Handle::TimeConstant => {
             if let Some((t_now, _)) = position(model, setup, t_end, handle) {
-                let (now, wanted) = (t_now - setup.t0 - td, t - setup.t0 - td);
+                let (now, wanted) = (t_now - setup.t0() - td, t - setup.t0() - td);
                 if now > 0.0 && wanted > 0.0 {
                     for p in [Param::Tp1, Param::Tp2, Param::Tp3, Param::Tw, Param::Tz] {
                         m.values.set(p, model.get(p) * wanted / now);
@@ -128,11 +129,11 @@ pub fn drag(
             }
         }
         Handle::FirstPeak => {
-            let y_final = y0 + model.get(Param::Kp) * setup.du;
+            let y_final = y0 + model.get(Param::Kp) * setup.du();
             let overshoot = ((y - y_final) / (y_final - y0)).clamp(1e-4, 0.99);
             let l = overshoot.ln();
             let zeta = -l / (std::f64::consts::PI.powi(2) + l * l).sqrt();
-            let tp = t - setup.t0 - td;
+            let tp = t - setup.t0() - td;
             if tp > 0.0 {
                 let wd = std::f64::consts::PI / tp;
                 m.values.set(Param::Zeta, zeta);
@@ -167,7 +168,7 @@ mod tests {
                 (Param::Y0, 5.0),
             ],
         );
-        let setup = StepSetup { t0: 2.0, du: 1.0 };
+        let setup = Excitation::step(2.0, 1.0);
         assert_eq!(
             handles(&m),
             vec![Handle::FinalValue, Handle::DeadTime, Handle::TimeConstant]
@@ -204,7 +205,7 @@ mod tests {
                 (Param::Y0, 0.0),
             ],
         );
-        let setup = StepSetup { t0: 0.0, du: 1.0 };
+        let setup = Excitation::step(0.0, 1.0);
         // Target: 25 % overshoot at t = 2 s.
         let moved = drag(&m, &setup, 30.0, Handle::FirstPeak, (2.0, 1.25));
         let (t, y) = position(&moved, &setup, 30.0, Handle::FirstPeak).unwrap();

@@ -132,7 +132,7 @@ pub fn compute(
             x_axis.set(&mut v, x);
             y_axis.set(&mut v, y);
             let m = units.model_in(&Model::new(model.structure, v));
-            let c = match m.simulate_into(&inside.setup, &inside.times, &mut buffer) {
+            let c = match m.simulate_into(&inside.input, &inside.times, &mut buffer) {
                 Ok(()) => {
                     buffer
                         .iter()
@@ -167,7 +167,8 @@ pub fn compute(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ident::models::{StepSetup, Structure};
+    use crate::ident::excitation::Excitation;
+    use crate::ident::models::Structure;
 
     #[test]
     fn the_minimum_is_at_the_truth_and_cancel_works() {
@@ -177,11 +178,15 @@ mod tests {
         truth.set(Param::Tw, 1.0);
         truth.set(Param::Zeta, 0.3);
         truth.set(Param::Y0, 0.0);
-        let setup = StepSetup { t0: 0.0, du: 1.0 };
+        let setup = Excitation::step(0.0, 1.0);
         let times: Vec<f64> = (0..200).map(|k| 0.1 * k as f64).collect();
         let model = Model::new(s, truth);
         let y = model.simulate(&setup, &times).unwrap();
-        let data = FitData { times, y, setup };
+        let data = FitData {
+            times,
+            y,
+            input: setup,
+        };
         let xs = grid(0.1, 0.9, 9, false);
         let ys = grid(0.25, 4.0, 17, true);
         let l = compute(

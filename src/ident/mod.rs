@@ -4,13 +4,16 @@
 
 pub mod data;
 pub mod diagnose;
+pub mod excitation;
 pub mod experiment;
 pub mod fit;
 pub mod guess;
 pub mod handles;
 pub mod landscape;
 pub mod models;
+pub mod per_step;
 pub mod prepare;
 pub mod residuals;
+pub mod rest;
 pub mod scale;
 pub mod stats;

@@ -8,12 +8,25 @@
 //! (integrator), e.g. `P1D`, `P2DU`, `P2DUZ`, `P1DI`. Times in seconds; Kp in output units
 //! per input unit (per second with an integrator).
 //!
-//! The measured output is modelled as y(t) = Y0 + Δu·g(t − t0) + Drift·(t − t0), where g is
-//! the exact unit step response of G from [`crate::lti`], t0 the step instant and Δu its size.
-//! Y0 (the operating point) is free or fixed; the linear drift term is optional.
+//! The measured output is modelled as y(t) = Y0 + (g ∗ u)(t) + Drift·(t − t0) + x(t): the exact
+//! response of G (from [`crate::lti`]) to the input's deviation from its level before the first
+//! change ([`Excitation`]: one ideal step Δu at t0, or the measured input held between its
+//! samples), t0 the first change. Y0 (the operating point) is free or fixed; the linear drift
+//! term is optional. Two more terms come from the test rather than the process:
+//! - **the step instant** (`Ta`, s): a change first seen at a sample happened up to one
+//!   sampling period earlier; a structure with `lead` moves every change earlier by Ta
+//!   (0 ≤ Ta < Ts), or, with a dead time, lets Td go down to −Ts (the response starting
+//!   before the sample that first shows the change);
+//! - **the initial transient** (`X1`, `X2`, `X3`, output units): a test not at rest at its
+//!   first change carries the free response of G's own poles, x(t) = Σ Xᵢ·φᵢ(t − t0), with
+//!   φ the Newton basis of the poles' exponentials (e^{p₁τ}, the divided differences
+//!   e^{pτ}[p₁, p₂], e^{pτ}[p₁, p₂, p₃]; e^{στ}cos ωdτ and e^{στ}sin(ωdτ)/ωd for an
+//!   underdamped pair), which stays well conditioned when two poles meet; Xᵢ are the
+//!   coefficients at the first change. An integrator's own mode is Y0 itself.
 
 use serde::{Deserialize, Serialize};
 
+use super::excitation::Excitation;
 use crate::lti::{C64, LtiError, StepResponse, TransferFunction};
 
 /// One parameter of a process model, with procest's name.
@@ -29,10 +42,19 @@ pub enum Param {
     Tz,
     Y0,
     Drift,
+    /// How long before the sample that first shows it each input change happened (s).
+    Ta,
+    /// Coefficients of the initial transient (output units).
+    X1,
+    X2,
+    X3,
 }
 
+/// How many parameters there are.
+pub const PARAM_COUNT: usize = 14;
+
 /// Every parameter, in display order.
-pub const ALL_PARAMS: [Param; 10] = [
+pub const ALL_PARAMS: [Param; PARAM_COUNT] = [
     Param::Kp,
     Param::Tp1,
     Param::Tp2,
@@ -41,6 +63,10 @@ pub const ALL_PARAMS: [Param; 10] = [
     Param::Zeta,
     Param::Td,
     Param::Tz,
+    Param::Ta,
+    Param::X1,
+    Param::X2,
+    Param::X3,
     Param::Y0,
     Param::Drift,
 ];
@@ -59,6 +85,10 @@ impl Param {
             Param::Tz => "Tz",
             Param::Y0 => "Y0",
             Param::Drift => "Drift",
+            Param::Ta => "Ta",
+            Param::X1 => "X1",
+            Param::X2 => "X2",
+            Param::X3 => "X3",
         }
     }
 
@@ -72,8 +102,20 @@ impl Param {
     /// Unit, for people.
     pub fn unit(self) -> &'static str {
         match self {
-            Param::Tp1 | Param::Tp2 | Param::Tp3 | Param::Tw | Param::Td | Param::Tz => "s",
-            Param::Kp | Param::Zeta | Param::Y0 | Param::Drift => "",
+            Param::Tp1
+            | Param::Tp2
+            | Param::Tp3
+            | Param::Tw
+            | Param::Td
+            | Param::Tz
+            | Param::Ta => "s",
+            Param::Kp
+            | Param::Zeta
+            | Param::Y0
+            | Param::Drift
+            | Param::X1
+            | Param::X2
+            | Param::X3 => "",
         }
     }
 }
@@ -123,6 +165,13 @@ pub struct Structure {
     pub free_offset: bool,
     /// Whether a linear drift term is estimated.
     pub drift: bool,
+    /// Whether the input changes' instants are estimated within their sampling interval
+    /// (`Ta`, or a `Td` down to −Ts with a dead time).
+    #[serde(default)]
+    pub lead: bool,
+    /// Whether an initial transient is estimated (the test was not at rest).
+    #[serde(default)]
+    pub transient: bool,
 }
 
 impl Structure {
@@ -147,6 +196,8 @@ impl Structure {
             integrator: false,
             free_offset: true,
             drift: false,
+            lead: false,
+            transient: false,
         };
         for c in chars {
             let flag = match c {
@@ -210,6 +261,16 @@ impl Structure {
         if self.zero {
             p.push(Param::Tz);
         }
+        if self.lead && !self.delay {
+            p.push(Param::Ta);
+        }
+        if self.transient {
+            p.extend(
+                [Param::X1, Param::X2, Param::X3]
+                    .into_iter()
+                    .take(self.poles as usize),
+            );
+        }
         if self.free_offset {
             p.push(Param::Y0);
         }
@@ -230,13 +291,32 @@ impl Structure {
     }
 }
 
-/// Values of every parameter (those not in the structure are ignored).
+/// Values of every parameter (those not in the structure are ignored). Saved as a list in
+/// [`ALL_PARAMS`]'s declaration order; a shorter list (saved before a parameter was added)
+/// reads with the missing ones at 0.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Values([f64; 10]);
+#[serde(from = "Vec<f64>", into = "Vec<f64>")]
+pub struct Values([f64; PARAM_COUNT]);
+
+impl From<Vec<f64>> for Values {
+    fn from(v: Vec<f64>) -> Self {
+        let mut out = [0.0; PARAM_COUNT];
+        for (o, x) in out.iter_mut().zip(v) {
+            *o = x;
+        }
+        Values(out)
+    }
+}
+
+impl From<Values> for Vec<f64> {
+    fn from(v: Values) -> Self {
+        v.0.to_vec()
+    }
+}
 
 impl Default for Values {
     fn default() -> Self {
-        let mut v = Values([0.0; 10]);
+        let mut v = Values([0.0; PARAM_COUNT]);
         v.set(Param::Kp, 1.0);
         v.set(Param::Tp1, 1.0);
         v.set(Param::Tp2, 0.5);
@@ -275,15 +355,6 @@ impl Values {
 pub struct Model {
     pub structure: Structure,
     pub values: Values,
-}
-
-/// Where the step happened and how large it was.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct StepSetup {
-    /// Step instant t0 (s).
-    pub t0: f64,
-    /// Step size Δu (input units).
-    pub du: f64,
 }
 
 impl Model {
@@ -368,47 +439,88 @@ impl Model {
         let tf = TransferFunction::from_zpk(&zeros, &poles, gain)?;
         if s.delay {
             let td = check(Param::Td, false)?;
-            if td < 0.0 {
+            if td < 0.0 && !s.lead {
                 return Err(ModelError::BadValue {
                     name: "Td",
                     value: td,
                     requirement: Requirement::DelayNotNegative,
                 });
             }
-            return Ok(tf.with_delay(td)?);
+            // A negative Td (with `lead`) is the step instant, not the process: G has none.
+            return Ok(tf.with_delay(td.max(0.0))?);
         }
         Ok(tf)
     }
 
-    /// The model's output at each instant, for a step of `setup.du` at `setup.t0`.
-    pub fn simulate(&self, setup: &StepSetup, times: &[f64]) -> Result<Vec<f64>, ModelError> {
+    /// How far the model moves the input's changes in time (s): the dead time, less the
+    /// step-instant lead (Ta, or the negative part of Td).
+    pub fn input_shift(&self) -> f64 {
+        let s = &self.structure;
+        let td = if s.delay {
+            self.values.get(Param::Td)
+        } else {
+            0.0
+        };
+        let ta = if s.lead && !s.delay {
+            self.values.get(Param::Ta)
+        } else {
+            0.0
+        };
+        td - ta
+    }
+
+    /// The dead time of G (s): Td when the structure has one and it is positive, else 0.
+    pub fn dead_time(&self) -> f64 {
+        if self.structure.delay {
+            self.values.get(Param::Td).max(0.0)
+        } else {
+            0.0
+        }
+    }
+
+    /// The model's output at each instant of `times` (ascending) for the input `input`.
+    pub fn simulate(&self, input: &Excitation, times: &[f64]) -> Result<Vec<f64>, ModelError> {
         let mut out = vec![0.0; times.len()];
-        self.simulate_into(setup, times, &mut out)?;
+        self.simulate_into(input, times, &mut out)?;
         Ok(out)
     }
 
-    /// [`Self::simulate`] into a buffer; uniform time grids use the fast recurrence.
+    /// [`Self::simulate`] into a buffer.
     pub fn simulate_into(
         &self,
-        setup: &StepSetup,
+        input: &Excitation,
         times: &[f64],
         out: &mut [f64],
     ) -> Result<(), ModelError> {
-        self.simulator(setup)?.fill(times, out);
+        self.simulator(input)?.fill(times, out);
         Ok(())
     }
 
-    /// The model's response prepared once, to be evaluated on many pieces of a record.
-    pub fn simulator(&self, setup: &StepSetup) -> Result<Simulator, ModelError> {
+    /// The model's response to `input` prepared once, to be evaluated on many pieces of a
+    /// record.
+    pub fn simulator(&self, input: &Excitation) -> Result<Simulator, ModelError> {
+        // G carries the dead time; the steps carry the lead (what is left of the shift).
+        let tf = self.transfer_function()?;
+        let lead = (self.input_shift() - tf.delay()).min(0.0);
+        let ramps = input.shifted_ramps(lead);
+        let ramp = if ramps.is_empty() {
+            None
+        } else {
+            Some(StepResponse::new(&integrated(&tf)?, 1.0)?)
+        };
         Ok(Simulator {
-            response: StepResponse::new(&self.transfer_function()?, setup.du)?,
-            t0: setup.t0,
+            response: StepResponse::new(&tf, 1.0)?,
+            steps: input.shifted_steps(lead),
+            ramp,
+            ramps,
+            t0: input.t0(),
             y0: self.values.get(Param::Y0),
             drift: if self.structure.drift {
                 self.values.get(Param::Drift)
             } else {
                 0.0
             },
+            transient: Transient::of(self),
         })
     }
 
@@ -422,40 +534,192 @@ impl Model {
     }
 }
 
-/// A model's output for one step, ready to be evaluated at any instants (see
+/// G(s)/s (with G's dead time): its step response is G's response to a unit ramp.
+fn integrated(g: &TransferFunction) -> Result<TransferFunction, ModelError> {
+    let mut poles = g.poles().to_vec();
+    poles.push(C64::new(0.0, 0.0));
+    Ok(TransferFunction::from_zpk(g.zeros(), &poles, g.gain())?.with_delay(g.delay())?)
+}
+
+/// A model's output for one input, ready to be evaluated at any instants (see
 /// [`Model::simulator`]): a long record is simulated piece by piece with one set-up.
 #[derive(Debug, Clone)]
 pub struct Simulator {
+    /// G's unit step response, with its dead time.
     response: StepResponse,
+    /// The input's steps, moved earlier by the step-instant lead: (instant, size).
+    steps: Vec<(f64, f64)>,
+    /// G(s)/s's unit step response, for the slope changes of a first-order hold.
+    ramp: Option<StepResponse>,
+    ramps: Vec<(f64, f64)>,
+    /// The first change's instant (s): the origin of the drift and of the transient.
     t0: f64,
     y0: f64,
     drift: f64,
+    transient: Option<Transient>,
 }
 
 impl Simulator {
-    /// The output at each instant of `times` into `out` (both cut to the shorter); uniform
-    /// time grids use the fast recurrence.
+    /// The output at each instant of `times` (ascending) into `out` (both cut to the
+    /// shorter). One ideal step on a uniform grid uses the step response's own recurrence;
+    /// anything else the exact superposition of [`StepResponse::superpose`].
     pub fn fill(&self, times: &[f64], out: &mut [f64]) {
         let n = times.len().min(out.len());
         let (times, out) = (&times[..n], &mut out[..n]);
-        let (t0, y0, drift) = (self.t0, self.y0, self.drift);
-        let first = times.iter().position(|&t| t >= t0).unwrap_or(n);
-        for (o, &t) in out.iter_mut().zip(times).take(first) {
-            *o = y0 + drift * (t - t0);
+        match (self.steps.as_slice(), &self.ramp) {
+            ([(s, a)], None) => self.one_step(*s, *a, times, out),
+            _ => {
+                self.response.superpose(&self.steps, times, out);
+                if let Some(ramp) = &self.ramp {
+                    let mut extra = vec![0.0; n];
+                    ramp.superpose(&self.ramps, times, &mut extra);
+                    out.iter_mut().zip(&extra).for_each(|(o, e)| *o += e);
+                }
+            }
         }
+        let (t0, y0, drift) = (self.t0, self.y0, self.drift);
+        for (o, &t) in out.iter_mut().zip(times) {
+            *o += y0 + drift * (t - t0);
+        }
+        if let Some(x) = &self.transient {
+            for (o, &t) in out.iter_mut().zip(times) {
+                *o += x.value(t - t0);
+            }
+        }
+    }
+
+    /// a·g(t − s) into `out`, 0 before s.
+    fn one_step(&self, s: f64, a: f64, times: &[f64], out: &mut [f64]) {
+        let n = times.len();
+        let first = times.iter().position(|&t| t >= s).unwrap_or(n);
+        out[..first].iter_mut().for_each(|o| *o = 0.0);
         let after = &times[first..];
         if let Some(uniform) = uniform_grid(after) {
             let (_, values) =
                 self.response
-                    .sample_uniform(uniform.0 - t0, uniform.1 - t0, after.len());
-            for ((o, &t), v) in out[first..].iter_mut().zip(after).zip(values) {
-                *o = y0 + v + drift * (t - t0);
+                    .sample_uniform(uniform.0 - s, uniform.1 - s, after.len());
+            for (o, v) in out[first..].iter_mut().zip(values) {
+                *o = a * v;
             }
         } else {
             for (o, &t) in out[first..].iter_mut().zip(after) {
-                *o = y0 + self.response.value(t - t0) + drift * (t - t0);
+                *o = a * self.response.value(t - s);
             }
         }
+    }
+}
+
+/// The initial transient x(τ) = Σ Xᵢ·φᵢ(τ), τ from the first change (see the module docs).
+#[derive(Debug, Clone)]
+struct Transient {
+    /// The coefficients X1… (output units).
+    coefficients: Vec<f64>,
+    modes: Modes,
+}
+
+/// The free-response basis of G's poles (no integrator).
+#[derive(Debug, Clone)]
+enum Modes {
+    /// Real poles: their centre c and offsets pᵢ − c, for the divided differences.
+    Real {
+        center: f64,
+        offsets: Vec<C64>,
+        radius: f64,
+    },
+    /// An underdamped pair σ ± jω (ω² < 0 for real poles from ζ > 1), and a third real
+    /// pole if any.
+    Pair {
+        sigma: f64,
+        omega_squared: f64,
+        third: Option<f64>,
+    },
+}
+
+impl Transient {
+    fn of(model: &Model) -> Option<Transient> {
+        let s = &model.structure;
+        if !s.transient {
+            return None;
+        }
+        let v = &model.values;
+        let count = s.poles as usize;
+        let coefficients = [Param::X1, Param::X2, Param::X3][..count]
+            .iter()
+            .map(|&p| v.get(p))
+            .collect();
+        let modes = if s.underdamped {
+            let (tw, zeta) = (v.get(Param::Tw), v.get(Param::Zeta));
+            Modes::Pair {
+                sigma: -zeta / tw,
+                omega_squared: (1.0 - zeta * zeta) / (tw * tw),
+                third: (s.poles == 3).then(|| -1.0 / v.get(Param::Tp3)),
+            }
+        } else {
+            let poles: Vec<f64> = [Param::Tp1, Param::Tp2, Param::Tp3][..count]
+                .iter()
+                .map(|&p| -1.0 / v.get(p))
+                .collect();
+            let center = poles.iter().sum::<f64>() / count as f64;
+            let offsets: Vec<C64> = poles.iter().map(|p| C64::new(p - center, 0.0)).collect();
+            let radius = offsets.iter().map(|d| d.norm()).fold(0.0, f64::max);
+            Modes::Real {
+                center,
+                offsets,
+                radius,
+            }
+        };
+        Some(Transient {
+            coefficients,
+            modes,
+        })
+    }
+
+    fn value(&self, tau: f64) -> f64 {
+        match &self.modes {
+            Modes::Real {
+                center,
+                offsets,
+                radius,
+            } => {
+                let row = crate::lti::divided::exp_last_row(offsets, *radius, tau);
+                let e = (center * tau).exp();
+                // The last entry is e^{p_m τ}; earlier ones the higher divided differences.
+                self.coefficients
+                    .iter()
+                    .zip(row.iter().rev())
+                    .map(|(x, r)| x * e * r.re)
+                    .sum()
+            }
+            Modes::Pair {
+                sigma,
+                omega_squared,
+                third,
+            } => {
+                let e = (sigma * tau).exp();
+                let (cos, sinc) = oscillation(*omega_squared, tau);
+                let mut sum = self.coefficients[0] * e * cos;
+                sum += self.coefficients.get(1).map_or(0.0, |x| x * e * sinc);
+                if let (Some(p), Some(x)) = (third, self.coefficients.get(2)) {
+                    sum += x * (p * tau).exp();
+                }
+                sum
+            }
+        }
+    }
+}
+
+/// (cos ωτ, sin(ωτ)/ω) for ω² > 0, (cosh, sinh(|ω|τ)/|ω|) for ω² < 0, (1, τ) at ω = 0.
+fn oscillation(omega_squared: f64, tau: f64) -> (f64, f64) {
+    let w = omega_squared.abs().sqrt();
+    let x = w * tau;
+    if x.abs() < 1e-4 {
+        let x2 = omega_squared * tau * tau;
+        return (1.0 - x2 / 2.0, tau * (1.0 - x2 / 6.0));
+    }
+    if omega_squared > 0.0 {
+        (x.cos(), x.sin() / w)
+    } else {
+        (x.cosh(), x.sinh() / w)
     }
 }
 
@@ -539,7 +803,7 @@ mod tests {
                 (Param::Y0, 10.0),
             ],
         );
-        let setup = StepSetup { t0: 1.0, du: 4.0 };
+        let setup = Excitation::step(1.0, 4.0);
         let times: Vec<f64> = (0..50).map(|k| 0.2 * k as f64).collect();
         let y = m.simulate(&setup, &times).unwrap();
         for (t, y) in times.iter().zip(y) {
@@ -567,7 +831,7 @@ mod tests {
                 (Param::Y0, 50.0),
             ],
         );
-        let setup = StepSetup { t0: 5.0, du: 10.0 };
+        let setup = Excitation::step(5.0, 10.0);
         let times = [5.0, 6.0254, 8.0762, 10.1271, 20.3812, 39.8641];
         let y = m.simulate(&setup, &times).unwrap();
         let wd = wn * (1.0f64 - zeta * zeta).sqrt();
@@ -593,7 +857,7 @@ mod tests {
             "P1I",
             &[(Param::Kp, 0.5), (Param::Tp1, 2.0), (Param::Y0, 0.0)],
         );
-        let setup = StepSetup { t0: 0.0, du: 1.0 };
+        let setup = Excitation::step(0.0, 1.0);
         let y = m.simulate(&setup, &[4.0]).unwrap()[0];
         assert!((y - 0.5 * (4.0 - 2.0 * (1.0 - (-2f64).exp()))).abs() < 1e-12);
         // P2Z with Tz < 0 dips first (inverse response).
@@ -618,7 +882,7 @@ mod tests {
         m.structure = s;
         m.values.set(Param::Drift, 0.1);
         let y = m
-            .simulate(&StepSetup { t0: 1.0, du: 1.0 }, &[0.0, 11.0])
+            .simulate(&Excitation::step(1.0, 1.0), &[0.0, 11.0])
             .unwrap();
         assert!((y[0] - 0.9).abs() < 1e-12);
         assert!((y[1] - (1.0 + 1.0 - (-10f64).exp() + 1.0)).abs() < 1e-12);

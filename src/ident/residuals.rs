@@ -196,7 +196,7 @@ fn clamp(x: f64, lo: f64, hi: f64) -> f64 {
 ///
 /// Both are clamped into the record, with response_start ≤ settled.
 pub fn boundaries(model: &Model, data: &FitData) -> Boundaries {
-    let t0 = data.setup.t0;
+    let t0 = data.input.t0();
     let (first, last) = data
         .times
         .iter()
@@ -592,7 +592,8 @@ fn dominant_period(e: &[f64], band: f64, ts: f64, max_lag: usize) -> Option<f64>
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ident::models::{StepSetup, Structure, Values};
+    use crate::ident::excitation::Excitation;
+    use crate::ident::models::{Structure, Values};
 
     /// Deterministic pseudo-random numbers: a 64-bit LCG (Knuth's MMIX constants) and
     /// Box–Muller for normal deviates.
@@ -1018,7 +1019,7 @@ mod tests {
         FitData {
             times,
             y,
-            setup: StepSetup { t0, du: 2.0 },
+            input: Excitation::step(t0, 2.0),
         }
     }
 
@@ -1074,7 +1075,7 @@ mod tests {
     fn fitted_residuals_of_an_underdamped_process_show_its_period() {
         // A P1 "model" of an underdamped process: the residuals oscillate at ωd.
         let times = grid(600, 0.1);
-        let setup = StepSetup { t0: 2.0, du: 1.0 };
+        let setup = Excitation::step(2.0, 1.0);
         let mut v = Values::default();
         v.set(Param::Tw, 1.0);
         v.set(Param::Zeta, 0.1);
@@ -1088,7 +1089,7 @@ mod tests {
         let d = FitData {
             times: times.clone(),
             y,
-            setup,
+            input: setup,
         };
         let a = analyse(&times, &e, None, boundaries(&model, &d));
         let period = 2.0 * std::f64::consts::PI / (1.0f64 - 0.01).sqrt();

@@ -24,8 +24,9 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::excitation::Excitation;
 use super::fit::FitData;
-use super::models::{Model, Param, StepSetup, Structure, Values};
+use super::models::{Model, Param, Structure, Values};
 
 /// The change of units between a record and the fit's internal, unit-sized units.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -80,8 +81,8 @@ impl Scale {
         let y_unit = [half_range, y_level.abs(), 1.0]
             .into_iter()
             .find(|u| is_positive_finite(*u))?;
-        let du_unit = data.setup.du.abs();
-        let t_origin = data.setup.t0;
+        let du_unit = data.input.du_scale().abs();
+        let t_origin = data.input.t0();
         let last = data.times.last().copied().unwrap_or(t_origin);
         let t_unit = [last - t_origin, sampling_period]
             .into_iter()
@@ -103,11 +104,14 @@ impl Scale {
         FitData {
             times: data.times.iter().map(|&t| self.time_in(t)).collect(),
             y: data.y.iter().map(|&y| self.output_in(y)).collect(),
-            setup: StepSetup {
-                t0: 0.0,
-                du: data.setup.du.signum(),
-            },
+            input: self.input_in(&data.input),
         }
+    }
+
+    /// The input in internal units: instants from t0 in record lengths, its deviation in
+    /// units of its largest (so the largest is ±1).
+    pub fn input_in(&self, input: &Excitation) -> Excitation {
+        input.rescaled(self.t_origin, self.t_unit, self.du_unit)
     }
 
     /// An instant in internal units.
@@ -147,9 +151,15 @@ impl Scale {
         match p {
             Param::Kp if structure.integrator => self.y_unit / self.du_unit / self.t_unit,
             Param::Kp => self.y_unit / self.du_unit,
-            Param::Tp1 | Param::Tp2 | Param::Tp3 | Param::Tw | Param::Td | Param::Tz => self.t_unit,
+            Param::Tp1
+            | Param::Tp2
+            | Param::Tp3
+            | Param::Tw
+            | Param::Td
+            | Param::Tz
+            | Param::Ta => self.t_unit,
             Param::Zeta => 1.0,
-            Param::Y0 => self.y_unit,
+            Param::Y0 | Param::X1 | Param::X2 | Param::X3 => self.y_unit,
             Param::Drift => self.y_unit / self.t_unit,
         }
     }
@@ -265,10 +275,7 @@ mod tests {
         FitData {
             times,
             y,
-            setup: StepSetup {
-                t0: 6.0 * scale_t,
-                du,
-            },
+            input: Excitation::step(6.0 * scale_t, du),
         }
     }
 
@@ -279,7 +286,7 @@ mod tests {
         assert!((s.y_level - 3.5).abs() < 1e-15 && (s.y_unit - 0.5).abs() < 1e-15);
         assert_eq!((s.du_unit, s.t_origin, s.t_unit), (2.0, 6.0, 9.0));
         let n = s.data_in(&d);
-        assert_eq!(n.setup, StepSetup { t0: 0.0, du: -1.0 });
+        assert_eq!(n.input, Excitation::step(0.0, -1.0));
         assert!((n.y[0] + 1.0).abs() < 1e-15 && (n.y[10] - 1.0).abs() < 1e-15);
         assert!((n.times[10] - 1.0).abs() < 1e-15);
     }
@@ -338,7 +345,7 @@ mod tests {
         assert_eq!(Scale::of(&d, 1.0).unwrap().y_unit, 5.0);
         d.y = vec![0.0; 11];
         assert_eq!(Scale::of(&d, 1.0).unwrap().y_unit, 1.0);
-        d.setup.du = 0.0;
+        d.input = Excitation::step(d.input.t0(), 0.0);
         assert!(Scale::of(&d, 1.0).is_none());
     }
 }

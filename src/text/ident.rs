@@ -915,6 +915,14 @@ pub fn param_meaning(p: Param, lang: Lang) -> &'static str {
             "slope of a linear drift, output units per second",
             "inclinação de uma deriva linear, unidades da saída por segundo",
         ),
+        Param::Ta => (
+            "how long before the sample that first shows it each input change happened",
+            "quanto antes da amostra que primeiro a mostra cada mudança da entrada ocorreu",
+        ),
+        Param::X1 | Param::X2 | Param::X3 => (
+            "coefficient of the initial transient (the test was not at rest), output units",
+            "coeficiente do transitório inicial (o ensaio não estava em repouso), unidades da saída",
+        ),
     };
     lang.pick(en, pt)
 }
@@ -934,6 +942,9 @@ impl Localize for Structure {
         let mut l = self.code();
         if self.drift {
             l.push_str(lang.pick(" + drift", " + deriva"));
+        }
+        if self.transient {
+            l.push_str(lang.pick(" + initial transient", " + transitório inicial"));
         }
         if !self.free_offset {
             l.push_str(lang.pick(", Y0 held", ", Y0 fixo"));
@@ -2069,6 +2080,8 @@ pub fn messages() -> Vec<Message> {
             integrator: false,
             free_offset: false,
             drift: true,
+            lead: false,
+            transient: false,
         },
     ));
     all.push(Message::of("ident::Ewma", &Ewma::new(0.6, 0.094)));

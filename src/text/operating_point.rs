@@ -81,6 +81,17 @@ impl Localize for OperatingPoint {
                      os demais parâmetros",
                 )
                 .into(),
+            OperatingPoint::Estimated {
+                reason: EstimateReason::NotAtRest,
+            } => lang
+                .pick(
+                    "the output still moved before the first input change (not at rest): Y0 and \
+                     an initial transient estimated with the other parameters",
+                    "a saída ainda se movia antes da primeira mudança da entrada (fora do \
+                     repouso): Y0 e um transitório inicial estimados junto com os demais \
+                     parâmetros",
+                )
+                .into(),
         }
     }
 }
@@ -105,6 +116,9 @@ pub fn messages() -> Vec<Message> {
         OperatingPoint::Estimated {
             reason: EstimateReason::NoSampleBeforeStep,
         },
+        OperatingPoint::Estimated {
+            reason: EstimateReason::NotAtRest,
+        },
     ];
     let mut all = OffsetChoice::messages();
     for fact in &examples {
@@ -120,6 +134,9 @@ pub fn messages() -> Vec<Message> {
             OperatingPoint::Estimated {
                 reason: EstimateReason::NoSampleBeforeStep,
             } => "Estimated(NoSampleBeforeStep)",
+            OperatingPoint::Estimated {
+                reason: EstimateReason::NotAtRest,
+            } => "Estimated(NotAtRest)",
         };
         all.push(Message::of(format!("OperatingPoint::{id}"), fact));
     }

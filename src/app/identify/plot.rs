@@ -120,10 +120,10 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                     .color(palette.data)
                     .radius(2.5),
             );
-            if let Some(setup) = setup {
-                let t0 = lang.num(setup.t0, 4);
+            if let Some(setup) = &setup {
+                let t0 = lang.num(setup.t0(), 4);
                 plot.vline(
-                    VLine::new(Phrase::StepAt.with(lang, &[t0]), setup.t0)
+                    VLine::new(Phrase::StepAt.with(lang, &[t0]), setup.t0())
                         .color(palette.data.gamma_multiply(0.5)),
                 );
             }
@@ -149,8 +149,15 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                     plot.span(Span::new(Phrase::Evidence.get(lang), a..=b).fill(palette.evidence));
                 }
             }
-            if let (Some(info), Some(setup)) = (&plots.info, setup) {
-                draw_markers(plot, info, &plots.measured, setup.t0, session.markers, look);
+            if let (Some(info), Some(setup)) = (&plots.info, &setup) {
+                draw_markers(
+                    plot,
+                    info,
+                    &plots.measured,
+                    setup.t0(),
+                    session.markers,
+                    look,
+                );
             }
             if let Some((_, what)) = shown
                 && !plots.model.is_empty()

@@ -9,6 +9,7 @@
 //! once: a new test, a new structure or a new choice on the test clears the fit, the
 //! diagnosis and the status that belonged to the old one.
 
+use crate::ident::excitation::Excitation;
 use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
@@ -24,7 +25,7 @@ use crate::ident::fit::{
     FitData, FitError, FitObserver, FitOptions, FitReport, Method, Progress, Termination, fit,
 };
 use crate::ident::handles::{self, Handle};
-use crate::ident::models::{Model, ModelError, Param, StepSetup, Structure, Values};
+use crate::ident::models::{Model, ModelError, Param, Structure, Values};
 use crate::lti::{StepInfo, StepInfoOptions};
 
 /// The LECI step test of the course notes (`t, y`), shipped with the app.
@@ -466,6 +467,8 @@ impl Session {
                 let fallback = Experiment {
                     t0,
                     du: 1.0,
+                    drive: Default::default(),
+                    initial_input,
                     offset: Offset::Auto,
                     window: None,
                     filter_hz: None,
@@ -672,8 +675,8 @@ impl Session {
     }
 
     /// The step setup of the fit data.
-    pub fn setup(&self) -> Option<StepSetup> {
-        Some(self.loaded.as_ref()?.data.as_ref().ok()?.setup)
+    pub fn setup(&self) -> Option<Excitation> {
+        Some(self.loaded.as_ref()?.data.as_ref().ok()?.input.clone())
     }
 
     /// The last time of the fit data (where the final-value handle sits).
@@ -705,7 +708,7 @@ impl Session {
     /// The fitted model as a transfer function and the step it was fitted to.
     pub fn fitted_transfer_function(&self) -> Option<(crate::lti::TransferFunction, f64)> {
         let report = self.report.as_ref()?;
-        let du = self.fitted.as_ref().map_or(1.0, |f| f.1.setup.du);
+        let du = self.fitted.as_ref().map_or(1.0, |f| f.1.input.du());
         Some((report.model.transfer_function().ok()?, du))
     }
 
@@ -1070,7 +1073,7 @@ impl FitObserver for Relay<'_> {
 
 /// The plots' data for `data` and the model shown; `y0` is the measured curve's start level.
 fn plots_for(data: &FitData, model: Option<Model>, y0: f64) -> Plots {
-    let setup = data.setup;
+    let setup = &data.input;
     let measured: Vec<[f64; 2]> = data
         .times
         .iter()
@@ -1078,16 +1081,16 @@ fn plots_for(data: &FitData, model: Option<Model>, y0: f64) -> Plots {
         .map(|(t, y)| [*t, *y])
         .collect();
     let t_start = data.times.first().copied().unwrap_or(0.0);
-    let t_end = data.times.last().copied().unwrap_or(setup.t0);
+    let t_end = data.times.last().copied().unwrap_or(setup.t0());
     let fine: Vec<f64> = (0..=CURVE_POINTS)
         .map(|k| t_start + (t_end - t_start) * k as f64 / CURVE_POINTS as f64)
         .collect();
     let curve: Vec<[f64; 2]> = model
-        .and_then(|m| m.simulate(&setup, &fine).ok())
+        .and_then(|m| m.simulate(setup, &fine).ok())
         .map(|c| fine.iter().zip(c).map(|(t, y)| [*t, y]).collect())
         .unwrap_or_default();
     let residuals: Vec<[f64; 2]> = model
-        .and_then(|m| m.simulate(&setup, &data.times).ok())
+        .and_then(|m| m.simulate(setup, &data.times).ok())
         .map(|yhat| {
             measured
                 .iter()
@@ -1097,7 +1100,7 @@ fn plots_for(data: &FitData, model: Option<Model>, y0: f64) -> Plots {
         })
         .unwrap_or_default();
     let y_final = crate::ident::guess::features(data, Some(y0)).y_final;
-    let pieces = crate::ident::prepare::SampledPieces::new(&data.times, &data.y, setup.t0);
+    let pieces = crate::ident::prepare::SampledPieces::new(&data.times, &data.y, setup.t0());
     let info = StepInfo::from_pieces(&pieces, y0, y_final, &StepInfoOptions::default());
     let y_range = padded(range_of(measured.iter().chain(&curve).map(|p| p[1])));
     let residual_range = padded(range_of(

@@ -1,0 +1,122 @@
+//! Each input change of a multi-step record fitted on its own window, beside the joint fit:
+//! if the process is linear, every step gives the same gain, time constants and dead time
+//! within their intervals; up against down, small against large, one operating point
+//! against another differing beyond them is a nonlinearity (the notes' "repetir o teste
+//! várias vezes (subida e descida)").
+//!
+//! Change k's window runs from the sample after the previous change's response began (the
+//! previous change itself, or the record's start) to the last sample before the next change,
+//! so it holds the level the change left from and the response it caused. On it the change
+//! is one step from that level: Y0 estimated (the level before it is not the record's
+//! operating point), an initial transient estimated when the output still moved before it
+//! (the previous step had not settled, [`super::rest`]), the same step-instant lead as the
+//! joint fit.
+
+use super::excitation::{Excitation, InputChange};
+use super::fit::{FitData, FitError, FitOptions, FitReport, fit};
+use super::guess::auto_guess;
+use super::models::Structure;
+
+/// One change's own fit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepFit {
+    pub change: InputChange,
+    /// The window fitted (s, both ends included).
+    pub window: (f64, f64),
+    /// Whether the output still moved before this change (an initial transient estimated).
+    pub not_at_rest: bool,
+    pub fit: Result<FitReport, FitError>,
+}
+
+/// The data of change `k`'s window, as one step from the level before it.
+pub fn window_data(data: &FitData, k: usize) -> Option<FitData> {
+    let changes = &data.input.changes;
+    let change = *changes.get(k)?;
+    let start = match k {
+        0 => data.times.first().copied()?,
+        _ => changes[k - 1].t,
+    };
+    let end = changes.get(k + 1).map_or(f64::INFINITY, |next| next.t);
+    let keep: Vec<usize> = (0..data.times.len())
+        .filter(|&i| data.times[i] >= start && data.times[i] < end)
+        .collect();
+    let mut input = Excitation::step(change.t, change.du);
+    input.changes[0] = change;
+    input.u0 = change.u_before;
+    input.lead_range = data.input.lead_range;
+    Some(FitData {
+        times: keep.iter().map(|&i| data.times[i]).collect(),
+        y: keep.iter().map(|&i| data.y[i]).collect(),
+        input,
+    })
+}
+
+/// Every change of `data` fitted on its own window with `structure`'s process model (see
+/// the module docs); empty for a record with one change (the joint fit is that change's).
+pub fn per_step_fits(data: &FitData, structure: Structure, options: &FitOptions) -> Vec<StepFit> {
+    if !data.input.is_multi_step() {
+        return Vec::new();
+    }
+    (0..data.input.changes.len())
+        .filter_map(|k| {
+            let window = window_data(data, k)?;
+            let not_at_rest = super::rest::rest_before(&window).is_not_at_rest();
+            let s = Structure {
+                free_offset: true,
+                drift: false,
+                lead: window.input.lead_range > 0.0,
+                transient: not_at_rest,
+                ..structure
+            };
+            let guess = auto_guess(&window, s, None);
+            let span = (
+                window.times.first().copied().unwrap_or(f64::NAN),
+                window.times.last().copied().unwrap_or(f64::NAN),
+            );
+            Some(StepFit {
+                change: data.input.changes[k],
+                window: span,
+                not_at_rest,
+                fit: fit(&window, s, guess, options, &mut ()),
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ident::excitation::Hold;
+    use crate::ident::models::{Model, Param, Values};
+
+    #[test]
+    fn each_step_of_a_linear_process_gives_its_gain_and_time_constant() {
+        let times: Vec<f64> = (0..600).map(|k| 0.5 * k as f64).collect();
+        let u: Vec<f64> = times
+            .iter()
+            .map(|&t| match t {
+                t if t < 20.0 => 1.0,
+                t if t < 100.0 => 3.0,
+                t if t < 180.0 => 2.0,
+                _ => 4.5,
+            })
+            .collect();
+        let input = Excitation::measured(&times, &u, None, Hold::Zoh).unwrap();
+        assert_eq!(input.changes.len(), 3);
+        let mut v = Values::default();
+        v.set(Param::Kp, 1.7);
+        v.set(Param::Tp1, 9.0);
+        v.set(Param::Y0, 20.0);
+        let truth = Model::new(Structure::parse("P1").unwrap(), v);
+        let y = truth.simulate(&input, &times).unwrap();
+        let data = FitData { times, y, input };
+        let fits = per_step_fits(&data, truth.structure, &FitOptions::default());
+        assert_eq!(fits.len(), 3);
+        for f in &fits {
+            let r = f.fit.as_ref().unwrap();
+            assert!((r.model.get(Param::Kp) - 1.7).abs() < 1e-4, "{f:?}");
+            assert!((r.model.get(Param::Tp1) - 9.0).abs() < 1e-3, "{f:?}");
+        }
+        assert!(!fits[0].not_at_rest && fits[1].window.0 == 20.0);
+    }
+}
