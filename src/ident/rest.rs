@@ -8,7 +8,7 @@
 //! (at least [`MIN_SAMPLES_BEFORE`]); the output moved when the line's change over that span
 //! exceeds all of six standard errors of itself (the residuals about the line as noise, so
 //! coloured noise counts against it), four times the white noise read from the first
-//! differences (1.4826·MAD/√2), and 2 % of the record's output range (a movement too small
+//! differences (1.4826·MAD/√2), and 5 % of the record's output range (a movement too small
 //! to matter to the fit is not worth a transient's parameters).
 
 use serde::Serialize;
@@ -69,7 +69,7 @@ pub fn rest_before(data: &FitData) -> Rest {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
             (lo.min(v), hi.max(v))
         });
-    let threshold = significance.max(white).max(0.02 * (hi - lo));
+    let threshold = significance.max(white).max(0.05 * (hi - lo));
     let motion = Motion {
         change,
         span,
