@@ -8,12 +8,14 @@ use clap::Args;
 use serde::Serialize;
 
 use crate::ident::diagnose::{DiagnoseOptions, DiagnoseReport, Gain, diagnose};
+use crate::ident::excitation::Excitation;
 use crate::ident::models::{Param, Values};
+use crate::ident::per_step::StepFit;
 
 use crate::text::{Lang, Localize};
 
 use super::CliError;
-use super::fit::{DataArgs, FitJson};
+use super::fit::{DataArgs, FitJson, InputStepJson, per_step, per_step_json, steps_json};
 
 /// `degrau diagnose` options.
 #[derive(Debug, Clone, Args)]
@@ -58,10 +60,15 @@ struct DiagnoseJson {
     adequate: bool,
     verdict: String,
     static_gain: StaticGainJson,
+    /// The input changes every fit used (the diagnosis's `steps` are its chain).
+    input_steps: Vec<InputStepJson>,
+    /// Each change fitted on its own window with the final structure (a multi-step record).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    per_step: Option<Vec<FitJson>>,
 }
 
 impl DiagnoseJson {
-    fn new(r: &DiagnoseReport) -> Self {
+    fn new(r: &DiagnoseReport, input: &Excitation, per_step: Option<&[StepFit]>) -> Self {
         Self {
             start: FitJson::new(&r.start, None),
             steps: r
@@ -82,6 +89,8 @@ impl DiagnoseJson {
                 value: r.static_gain.0,
                 ci95: r.static_gain.1.map(|(a, b)| [a, b]),
             },
+            input_steps: steps_json(input),
+            per_step: per_step.map(per_step_json),
         }
     }
 }
@@ -98,13 +107,24 @@ pub fn run_diagnose(args: &DiagnoseArgs, lang: Lang) -> Result<(), CliError> {
     let mut options = DiagnoseOptions::default();
     options.fit.starts = options.fit.starts.max(1);
     let report = diagnose(&data, start, start_values, &options).map_err(CliError::Diagnose)?;
+    let fits = per_step(&data, report.final_fit.model.structure, &options.fit);
     let mut out = io::stdout().lock();
     let written = if args.json {
-        serde_json::to_writer(&mut out, &DiagnoseJson::new(&report))
+        let json = DiagnoseJson::new(&report, &data.input, fits.as_deref());
+        serde_json::to_writer(&mut out, &json)
             .map_err(io::Error::other)
             .and_then(|()| writeln!(out))
     } else {
-        writeln!(out, "{}", crate::text::report::diagnose_text(&report, lang))
+        let mut text = crate::text::report::diagnose_text(&report, lang);
+        text.push('\n');
+        text.push_str(&crate::text::steps::input_line(&data.input, lang));
+        if let Some(fits) = &fits {
+            for line in crate::text::steps::per_step_lines(fits, &report.final_fit, lang) {
+                text.push('\n');
+                text.push_str(&line);
+            }
+        }
+        writeln!(out, "{text}")
     };
     written
         .and_then(|()| out.flush())

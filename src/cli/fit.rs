@@ -10,9 +10,11 @@ use clap::{Args, ValueEnum};
 use serde::Serialize;
 
 use crate::ident::data::{self, LoadOptions, StepTest};
-use crate::ident::experiment::{Experiment, Offset, OperatingPoint};
+use crate::ident::excitation::{Excitation, Hold};
+use crate::ident::experiment::{Drive, Experiment, Offset, OperatingPoint};
 use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
 use crate::ident::models::{Param, Structure};
+use crate::ident::per_step::{StepFit, per_step_fits};
 use crate::text::{Lang, Localize};
 
 use super::{CliError, finite_f64};
@@ -60,6 +62,31 @@ pub struct DataArgs {
     /// Low-pass the output first (the notes' EWMA filter), cut-off in Hz.
     #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub filter: Option<f64>,
+    /// Model one ideal step (the input column's largest change, or --t0/--du) instead of
+    /// the measured input with every change (the default when the file has an input).
+    #[arg(long)]
+    pub single_step: bool,
+    /// How the measured input moves between samples: zoh (held: a logged actuator
+    /// command) or foh (a straight line: an analog input that was sampled).
+    #[arg(long, value_enum, default_value_t = HoldArg::Zoh)]
+    pub hold: HoldArg,
+}
+
+/// `--hold`, as typed.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, ValueEnum)]
+pub enum HoldArg {
+    #[default]
+    Zoh,
+    Foh,
+}
+
+impl From<HoldArg> for Hold {
+    fn from(h: HoldArg) -> Self {
+        match h {
+            HoldArg::Zoh => Hold::Zoh,
+            HoldArg::Foh => Hold::Foh,
+        }
+    }
 }
 
 /// The optimiser, as typed.
@@ -156,7 +183,16 @@ impl DataArgs {
             path: self.file.display().to_string(),
             error,
         })?;
-        let mut experiment = Experiment::new(&test, self.t0, self.du, self.initial_input)?;
+        let mut experiment = if self.single_step {
+            Experiment::single_step(&test, self.t0, self.du, self.initial_input)?
+        } else {
+            Experiment::new(&test, self.t0, self.du, self.initial_input)?
+        };
+        if let Drive::Measured { .. } = experiment.drive {
+            experiment.drive = Drive::Measured {
+                hold: self.hold.into(),
+            };
+        }
         experiment.offset = parse_offset(&self.y0)?;
         experiment.window = self.window.as_deref().map(parse_window).transpose()?;
         experiment.filter_hz = self.filter;
@@ -291,6 +327,74 @@ pub struct FitJson {
     /// What was done with Y0 (`kind`: mean_before, at_step, given, estimated).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub operating_point: Option<OperatingPoint>,
+    /// The input changes the fit used (the ideal step's one, or every measured change).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub steps: Option<Vec<InputStepJson>>,
+    /// Each change fitted on its own window (a multi-step record), in order.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub per_step: Option<Vec<FitJson>>,
+}
+
+/// One input change in the JSON outputs.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InputStepJson {
+    /// The instant the model puts it at (s): the first sample that shows it.
+    pub t: f64,
+    pub du: f64,
+    /// The input level before it.
+    pub u_before: f64,
+    /// The earliest instant it may have happened (s).
+    pub earliest: f64,
+}
+
+/// The input changes of `input`, for the JSON outputs.
+pub fn steps_json(input: &Excitation) -> Vec<InputStepJson> {
+    input
+        .changes
+        .iter()
+        .map(|c| InputStepJson {
+            t: c.t,
+            du: c.du,
+            u_before: c.u_before,
+            earliest: c.earliest,
+        })
+        .collect()
+}
+
+/// The per-step fits as FIT objects (a failed one as its error in `warnings`).
+pub fn per_step_json(fits: &[StepFit]) -> Vec<FitJson> {
+    fits.iter()
+        .filter_map(|f| match &f.fit {
+            Ok(r) => {
+                let mut json = FitJson::new(r, None);
+                json.steps = Some(vec![InputStepJson {
+                    t: f.change.t,
+                    du: f.change.du,
+                    u_before: f.change.u_before,
+                    earliest: f.change.earliest,
+                }]);
+                Some(json)
+            }
+            Err(_) => None,
+        })
+        .collect()
+}
+
+/// The most changes a record may have for its per-step fits (each is a whole fit; a
+/// PRBS-like input has no step windows to compare).
+pub const MAX_PER_STEP: usize = 12;
+
+/// The per-step fits of `data` with `structure`, `None` when there are none to make (one
+/// change, or more than [`MAX_PER_STEP`]).
+pub fn per_step(
+    data: &FitData,
+    structure: Structure,
+    options: &FitOptions,
+) -> Option<Vec<StepFit>> {
+    let n = data.input.changes.len();
+    (2..=MAX_PER_STEP)
+        .contains(&n)
+        .then(|| per_step_fits(data, structure, options))
 }
 
 impl FitJson {
@@ -327,6 +431,8 @@ impl FitJson {
                 .map(|w| crate::text::Localize::text(w, Lang::En))
                 .collect(),
             operating_point,
+            steps: None,
+            per_step: None,
         }
     }
 }
@@ -371,18 +477,29 @@ pub fn run_fit(args: &FitArgs, lang: Lang) -> Result<(), CliError> {
         &mut (),
     )?;
     let operating_point = experiment.operating_point_fact(&data);
+    let per_step = per_step(&data, structure, &args.options());
     let mut out = io::stdout().lock();
     let written = if args.json {
-        serde_json::to_writer(&mut out, &FitJson::new(&report, Some(operating_point)))
+        let mut json = FitJson::new(&report, Some(operating_point));
+        json.steps = Some(steps_json(&data.input));
+        json.per_step = per_step.as_deref().map(per_step_json);
+        serde_json::to_writer(&mut out, &json)
             .map_err(io::Error::other)
             .and_then(|()| writeln!(out))
     } else {
-        writeln!(
-            out,
-            "{}",
-            crate::text::report::fit_lines(&report, lang).join("\n"),
-        )
-        .and_then(|()| writeln!(out, "{}", operating_point.text(lang)))
+        let mut lines = crate::text::report::fit_lines(&report, lang);
+        lines.push(operating_point.text(lang));
+        lines.push(crate::text::steps::input_line(&data.input, lang));
+        match &per_step {
+            Some(fits) => lines.extend(crate::text::steps::per_step_lines(fits, &report, lang)),
+            None if data.input.changes.len() > MAX_PER_STEP => lines.push(
+                crate::text::steps::StepsPhrase::Skipped
+                    .get(lang)
+                    .replace("{0}", &MAX_PER_STEP.to_string()),
+            ),
+            None => {}
+        }
+        writeln!(out, "{}", lines.join("\n"))
     };
     written
         .and_then(|()| out.flush())

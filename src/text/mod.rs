@@ -25,6 +25,7 @@ pub mod lti;
 pub mod operating_point;
 pub mod report;
 pub mod step;
+pub mod steps;
 
 /// A language the app and the CLI speak.
 #[derive(
@@ -172,6 +173,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(crate::app::field::FieldPhrase::messages());
     all.extend(crate::app::field::examples());
     all.extend(step::messages());
+    all.extend(steps::messages());
     all.extend(ident::messages());
     all.extend(report::messages());
     all.extend(cli::messages());
