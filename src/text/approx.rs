@@ -4,6 +4,7 @@
 //! to paste into a report), in English and Brazilian Portuguese (aproximação, polos
 //! dominantes, tempo morto, constante de tempo, ganho estático, …).
 
+use crate::cli::approx::ApproxCliError;
 use crate::lti::approx::{
     ApproxError, Approximation, Comparison, DelayApproximant, Method, MetricDifference, Reduction,
     Row,
@@ -183,6 +184,40 @@ impl Localize for ApproxError {
                     num(*x)
                 ),
             },
+        }
+    }
+}
+
+/// The heading of `degrau pade`: "Padé (m, n) of e^(-θ s):".
+pub fn pade_heading(m: usize, n: usize, delay: f64, lang: Lang) -> String {
+    let theta = lang.localize_number(&crate::lti::exact(delay));
+    match lang {
+        Lang::En => format!("Padé ({m}, {n}) of e^(-{theta} s):"),
+        Lang::Pt => format!("Padé ({m}, {n}) de e^(-{theta} s):"),
+    }
+}
+
+impl Localize for ApproxCliError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            ApproxCliError::Cli(e) => e.text(lang),
+            ApproxCliError::Approx(e) => e.text(lang),
+            ApproxCliError::BadOrder(text) => match lang {
+                Lang::En => format!(
+                    "--order {text:?}: give the model's order n (e.g. 2), or m,n for pade \
+                     (e.g. 1,2)"
+                ),
+                Lang::Pt => format!(
+                    "--order {text:?}: dê a ordem n do modelo (p. ex. 2), ou m,n para pade \
+                     (p. ex. 1,2)"
+                ),
+            },
+            ApproxCliError::Batch => lang
+                .pick(
+                    "--batch is for degrau step; degrau approx takes one system",
+                    "--batch é de degrau step; degrau approx recebe um só sistema",
+                )
+                .into(),
         }
     }
 }
@@ -386,6 +421,14 @@ pub fn messages() -> Vec<Message> {
             .iter()
             .map(|e| Message::of(format!("approx::ApproxError::{e:?}"), e)),
     );
+    for e in [ApproxCliError::BadOrder("x".into()), ApproxCliError::Batch] {
+        all.push(Message::of(format!("approx::ApproxCliError::{e:?}"), &e));
+    }
+    all.push(Message {
+        id: "approx::pade_heading".into(),
+        en: pade_heading(1, 1, 0.5, Lang::En),
+        pt: pade_heading(1, 1, 0.5, Lang::Pt),
+    });
     let mut names: Vec<Approximation> = Method::ALL
         .iter()
         .map(|m| Approximation::Reduce(m.default_reduction()))
