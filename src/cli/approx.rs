@@ -331,7 +331,7 @@ pub fn human_report(run: &ApproxRun, lang: Lang) -> String {
         ),
         format!(
             "  {}: {}",
-            P::Zeros.get(lang),
+            crate::text::cli::ZEROS,
             roots_text(model.zeros(), lang)
         ),
         String::new(),
@@ -428,7 +428,7 @@ pub fn run_pade(args: &PadeArgs, lang: Lang) -> Result<(), ApproxCliError> {
             crate::text::approx::pade_heading(report.m, report.n, report.delay, lang),
             format_poly(&report.num),
             format_poly(&report.den),
-            P::Zeros.get(lang),
+            crate::text::cli::ZEROS,
             roots(&report.zeros),
             P::Poles.get(lang),
             roots(&report.poles)

@@ -54,7 +54,6 @@ crate::phrases! {
         ReducedModel => ("Reduced model", "Modelo reduzido"),
         Errors => ("Errors", "Erros"),
         Poles => ("Poles", "Polos"),
-        Zeros => ("Zeros", "Zeros"),
         NoRoots => ("none", "nenhum"),
         DelayOrderHelp => (
             "Padé (m, n) of the dead time: m zeros (in the right half plane) and n poles.",

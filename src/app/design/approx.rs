@@ -527,8 +527,9 @@ mod tests {
 
     #[test]
     fn the_scene_jumps_at_the_dead_time_and_holds_both_curves() {
-        // 1/(s + 1) e^{−s} against its Padé (1, 1): the model jumps to −1 at t = 0.
-        let g = TransferFunction::from_zpk(&[], &[C64::new(-1.0, 0.0)], 1.0)
+        // (s + 2)/(2(s + 1))·e^{−s} against its Padé (1, 1): biproper, the model jumps to
+        // −A·D = −0.5 at t = 0 while the true delay holds y at 0 until t = 1.
+        let g = TransferFunction::from_zpk(&[C64::new(-2.0, 0.0)], &[C64::new(-1.0, 0.0)], 0.5)
             .unwrap()
             .with_delay(1.0)
             .unwrap();
@@ -549,9 +550,11 @@ mod tests {
             s.approx[1]
         );
         // The original stays at 0 until θ = 1, then starts from 0.
-        assert!(s.original.iter().all(|p| p[0] > 1.0 || p[1] == 0.0));
-        assert_eq!(s.model_zeros.len(), 1);
-        assert!(s.model_zeros[0].re > 0.0);
+        assert!(s.original.iter().all(|p| p[0] >= 1.0 || p[1] == 0.0));
+        assert!(s.original.contains(&[1.0, 0.0]) && s.original.contains(&[1.0, r.value(1.0)]));
+        // The system's zero −2 and the approximant's 2/θ = 2, in the right half plane.
+        assert_eq!(s.model_zeros.len(), 2);
+        assert_eq!(s.model_zeros.iter().filter(|z| z.re > 0.0).count(), 1);
     }
 
     #[test]
