@@ -115,9 +115,9 @@ pub fn parse_order(text: &str) -> Result<(Option<usize>, usize), ApproxCliError>
         .split(',')
         .map(|part| part.trim().parse::<usize>().map_err(|_| bad()))
         .collect::<Result<_, _>>()?;
-    match numbers.as_slice() {
-        &[n] => Ok((None, n)),
-        &[m, n] => Ok((Some(m), n)),
+    match *numbers.as_slice() {
+        [n] => Ok((None, n)),
+        [m, n] => Ok((Some(m), n)),
         _ => Err(bad()),
     }
 }

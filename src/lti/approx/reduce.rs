@@ -455,7 +455,7 @@ fn series(zeros: &[Factor], poles: &[Factor], delay: f64, count: usize) -> Vec<f
         let terms: Vec<C64> = (0..count)
             .map(|i| {
                 if i > 0 {
-                    term = term * (-delay / i as f64);
+                    term *= -delay / i as f64;
                 }
                 term
             })
@@ -530,8 +530,9 @@ fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
         b.swap(col, pivot);
         for row in col + 1..n {
             let f = a[row][col] / a[col][col];
-            for k in col..n {
-                a[row][k] -= f * a[col][k];
+            let (above, below) = a.split_at_mut(row);
+            for (x, p) in below[0][col..].iter_mut().zip(&above[col][col..]) {
+                *x -= f * p;
             }
             b[row] -= f * b[col];
         }
