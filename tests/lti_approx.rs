@@ -149,6 +149,17 @@ fn the_fifth_order_reduces_to_the_notes_dominant_pair() {
 }
 
 #[test]
+fn neglecting_the_fast_pole_gives_the_notes_approximation_one() {
+    // K/(s(s + 2)(s + 30)) → (K/30)/(s(s + 2)), here K = 60: 2/(s(s + 2)).
+    let g = TransferFunction::from_zpk(&[], &[real(0.0), real(-2.0), real(-30.0)], 60.0).unwrap();
+    let r = approx::dominant(&g, 2).unwrap();
+    let (num, den) = (r.num(), r.den());
+    assert!(close(num[0], 2.0, 1e-12), "{num:?}");
+    assert_eq!(den.len(), 3);
+    assert!(close(den[1], 2.0, 1e-12) && den[2] == 0.0, "{den:?}");
+}
+
+#[test]
 fn dominant_poles_keep_the_zeros_near_them() {
     // Zeros at −4 (between the kept −1 ± 2j and the left-out −20) and −60 (beyond).
     let g = TransferFunction::from_zpk(

@@ -179,7 +179,8 @@ pub fn panel(ui: &mut Ui, view: &ApproxView, analysis: &Analysis, look: &Look) -
     };
     let mut panel = egui::Panel::bottom(id).resizable(open);
     if open {
-        let max = (full - 2.0 * super::PLOT_MIN).max(200.0);
+        // As the metrics panel: the plots above keep at least their smallest height.
+        let max = (full - super::PLOT_MIN - 80.0).max(160.0);
         panel = panel
             .default_size(340.0f32.min(max))
             .size_range(160.0..=max);
