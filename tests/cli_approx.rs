@@ -178,3 +178,29 @@ fn bad_input_is_refused_in_words_with_code_2() {
     let out = degrau(&["--lang", "pt", "pade", "--delay", "1", "--order", "2,1"]);
     assert!(stderr(&out).contains("exige"), "{}", stderr(&out));
 }
+
+#[test]
+fn the_table_compares_every_method_in_markdown() {
+    let mut args = vec!["approx"];
+    args.extend(THIRD);
+    args.extend(["--method", "taylor", "--table"]);
+    let out = degrau(&args);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = stdout(&out);
+    let table: Vec<&str> = text.lines().filter(|l| l.starts_with('|')).collect();
+    // Header, rule, and the ten reductions of a third order without dead time.
+    assert_eq!(table.len(), 12, "{text}");
+    assert!(table[0].contains("| Model |") && table[0].contains("Within 5 %"));
+    let skogestad = table
+        .iter()
+        .find(|l| l.contains("Skogestad's half rule, order 1"))
+        .expect("a Skogestad row");
+    assert!(
+        skogestad.contains("2 e^(-2.1s) / (6.5s + 1)"),
+        "{skogestad}"
+    );
+    // Every row has the header's six cells (a | inside a cell is escaped).
+    let cells = |l: &str| l.replace("\\|", "").matches(" | ").count() + 1;
+    assert!(table.iter().skip(2).all(|l| cells(l) == 6), "{text}");
+    assert_eq!(cells(table[0]), 6);
+}

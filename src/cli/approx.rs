@@ -72,6 +72,9 @@ pub struct ApproxArgs {
     /// Default: 2 for dominant, 1 for taylor and skogestad, 1,1 for pade.
     #[arg(long, value_name = "N|M,N")]
     pub order: Option<String>,
+    /// After the report, every method compared in one Markdown table (text output only).
+    #[arg(long, conflicts_with = "json")]
+    pub table: bool,
 }
 
 /// `degrau pade` options.
@@ -143,6 +146,8 @@ pub fn reduction(method: Method, order: Option<&str>) -> Result<Reduction, Appro
 /// The system, its approximation and the comparison.
 pub struct ApproxRun {
     pub original: TransferFunction,
+    /// Every method compared, when `--table` asks.
+    pub table: Option<Vec<approx::Row>>,
     pub reduction: Reduction,
     pub approximated: Approximated,
     /// y(t) of the original and of the model at the same instants, when asked.
@@ -177,7 +182,11 @@ pub fn approximate(args: &ApproxArgs) -> Result<ApproxRun, ApproxCliError> {
             Some((Samples { t, y }, y_approx))
         }
     };
+    let table = args
+        .table
+        .then(|| approx::table(&original, &response, &options));
     Ok(ApproxRun {
+        table,
         original,
         reduction,
         approximated,
@@ -352,6 +361,10 @@ pub fn human_report(run: &ApproxRun, lang: Lang) -> String {
             .map(|(text, &w)| format!("{text:<w$}"))
             .collect();
         lines.push(format!("  {}", cells.join("  ").trim_end()));
+    }
+    if let Some(rows) = &run.table {
+        lines.push(String::new());
+        lines.push(crate::text::approx::comparison_table(rows, lang));
     }
     if let Some((s, y_approx)) = &run.samples {
         lines.push(String::new());

@@ -51,7 +51,8 @@ pub struct Scene {
     pub original_zeros: Vec<C64>,
 }
 
-/// (t, y) of `r` over [0, horizon], with the instant of its dead time drawn as a jump from 0.
+/// (t, y) of `r` over [0, horizon], with the instant of its dead time drawn as a jump from 0;
+/// a value beyond double precision is left out (nothing that is not a number is plotted).
 fn curve(r: &StepResponse, horizon: f64) -> Vec<[f64; 2]> {
     let mut out = Vec::with_capacity(OVERLAY_SAMPLES + 2);
     let theta = r.delay();
@@ -65,6 +66,7 @@ fn curve(r: &StepResponse, horizon: f64) -> Vec<[f64; 2]> {
         }
         out.push([t, r.value(t)]);
     }
+    out.retain(|p| p[0].is_finite() && p[1].is_finite());
     out
 }
 
