@@ -226,12 +226,21 @@ fn coefficient(x: f64, lang: Lang) -> String {
     lang.num(x, 4)
 }
 
+/// A coefficient multiplying a power of s: as [`coefficient`], but nothing for 1 (`s`, not
+/// `1s`).
+fn times(x: f64, lang: Lang) -> String {
+    match coefficient(x, lang) {
+        one if one == "1" => String::new(),
+        other => other,
+    }
+}
+
 /// `(Ts + 1)` for a real root r (T = −1/r), `(as² + bs + 1)` for a pair.
 fn factor(root: C64, lang: Lang) -> String {
     let sign = |x: f64| if x < 0.0 { "-" } else { "" };
     if root.im == 0.0 {
         let t = -1.0 / root.re;
-        format!("({}{}s + 1)", sign(t), coefficient(t.abs(), lang))
+        format!("({}{}s + 1)", sign(t), times(t.abs(), lang))
     } else {
         let r2 = root.norm_sqr();
         let b = -2.0 * root.re / r2;
@@ -239,9 +248,9 @@ fn factor(root: C64, lang: Lang) -> String {
             String::new()
         } else {
             let op = if b < 0.0 { "-" } else { "+" };
-            format!(" {op} {}s", coefficient(b.abs(), lang))
+            format!(" {op} {}s", times(b.abs(), lang))
         };
-        format!("({}s²{middle} + 1)", coefficient(1.0 / r2, lang))
+        format!("({}s²{middle} + 1)", times(1.0 / r2, lang))
     }
 }
 
@@ -267,7 +276,7 @@ pub fn formula(tf: &TransferFunction, lang: Lang) -> String {
     let num = factors(tf.zeros(), lang);
     let den = factors(tf.poles(), lang);
     let delay = if tf.delay() > 0.0 {
-        format!(" e^(-{}s)", coefficient(tf.delay(), lang))
+        format!(" e^(-{}s)", times(tf.delay(), lang))
     } else {
         String::new()
     };
@@ -460,8 +469,13 @@ mod tests {
             .unwrap()
             .with_delay(0.5)
             .unwrap();
-        assert_eq!(formula(&g, Lang::En), "2 e^(-0.5s) / ((10s + 1)(1s + 1))");
-        assert_eq!(formula(&g, Lang::Pt), "2 e^(-0,5s) / ((10s + 1)(1s + 1))");
+        assert_eq!(formula(&g, Lang::En), "2 e^(-0.5s) / ((10s + 1)(s + 1))");
+        assert_eq!(formula(&g, Lang::Pt), "2 e^(-0,5s) / ((10s + 1)(s + 1))");
+        let unit = TransferFunction::from_zpk(&[], &[C64::new(-1.0, 0.0)], 1.0)
+            .unwrap()
+            .with_delay(1.0)
+            .unwrap();
+        assert_eq!(formula(&unit, Lang::En), "1 e^(-s) / (s + 1)");
         // A zero in the right half plane and a pair: 18/(s² + 6s + 18) has 1/18 and 1/3.
         let h = TransferFunction::from_zpk(
             &[C64::new(10.0, 0.0)],
