@@ -456,3 +456,74 @@ fn the_dead_time_factor_keeps_the_notes_scaling() {
     assert_eq!(f.num, vec![1.0, -6.0, 12.0]);
     assert_eq!(f.den, vec![1.0, 6.0, 12.0]);
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A stable system of order 2–6: real poles and pairs in the left half plane, up to two
+    /// real zeros on either side, a dead time, a gain of either sign.
+    fn stable_system() -> impl Strategy<Value = TransferFunction> {
+        (
+            prop::collection::vec((-8.0f64..-0.1, 0.0f64..4.0, any::<bool>()), 1..=3),
+            prop::collection::vec(prop_oneof![-9.0f64..-0.2, 0.2f64..9.0], 0..=2),
+            0.0f64..2.0,
+            prop_oneof![-5.0f64..-0.1, 0.1f64..5.0],
+        )
+            .prop_map(|(poles, zeros, delay, dc)| {
+                let poles: Vec<C64> = poles
+                    .iter()
+                    .flat_map(|&(re, im, pair)| {
+                        if pair {
+                            vec![C64::new(re, im + 0.1), C64::new(re, -(im + 0.1))]
+                        } else {
+                            vec![real(re), real(re - im - 0.05)]
+                        }
+                    })
+                    .collect();
+                let zeros: Vec<C64> = zeros.into_iter().map(real).collect();
+                TransferFunction::from_zpk(&zeros, &poles, 1.0)
+                    .and_then(|g| g.with_dc_gain(dc))
+                    .and_then(|g| g.with_delay(delay))
+                    .expect("a buildable system")
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 96, ..ProptestConfig::default() })]
+
+        /// Every reduction that applies keeps G(0) to 1e-12, and a true dead time stays a
+        /// delay of the model's exact response; every dead-time stand-in keeps G(0) too.
+        #[test]
+        fn every_approximation_keeps_the_static_gain(g in stable_system()) {
+            let k = g.dc_gain();
+            let mut applied = 0;
+            for approximation in Approximation::catalogue(&g) {
+                match approximation.apply(&g) {
+                    Ok(model) => {
+                        applied += 1;
+                        prop_assert!(
+                            (model.dc_gain() - k).abs() <= 1e-12 * k.abs(),
+                            "{approximation:?} of {}: {} vs {k}",
+                            g.describe(),
+                            model.dc_gain()
+                        );
+                        prop_assert!(model.delay() >= g.delay() || model.delay() == 0.0);
+                    }
+                    // Padé G_{m,n} need not exist; a zero left unpaired may make a
+                    // reduction improper; a lone pair asked to order 1 stays whole: each
+                    // is said, never a wrong model.
+                    Err(
+                        ApproxError::Singular { .. }
+                        | ApproxError::Lti(_)
+                        | ApproxError::NotLower { .. }
+                        | ApproxError::NothingToApproximate,
+                    ) => {}
+                    Err(e) => prop_assert!(false, "{approximation:?} of {}: {e}", g.describe()),
+                }
+            }
+            // At least Padé G_{0,1} (the first moment) exists for every such system.
+            prop_assert!(applied > 0, "nothing applied to {}", g.describe());
+        }
+    }
+}

@@ -36,7 +36,8 @@ pub enum ApproxError {
     UnstablePole(C64),
     /// A target order of 0.
     OrderZero,
-    /// The target order is not below the system's (nothing is left out).
+    /// The target order (once a pair cut in two is kept whole) is not below the system's:
+    /// nothing is left out.
     NotLower { asked: usize, order: usize },
     /// Nothing to approximate: no pole left out, no right-half-plane zero, no dead time.
     NothingToApproximate,

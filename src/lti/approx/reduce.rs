@@ -217,8 +217,9 @@ pub fn dominant(g: &TransferFunction, n: usize) -> Result<TransferFunction, Appr
         }
     }
     if kept_poles.len() >= g.order() {
+        // The pair cut in two, kept whole, leaves nothing out.
         return Err(ApproxError::NotLower {
-            asked: n,
+            asked: kept_poles.len(),
             order: g.order(),
         });
     }
