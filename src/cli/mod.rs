@@ -12,6 +12,7 @@
 use std::io::{self, BufRead, BufWriter, Write};
 use std::process::ExitCode;
 
+pub mod approx;
 pub mod diagnose;
 pub mod fit;
 
@@ -67,6 +68,11 @@ pub enum Command {
     Diagnose(diagnose::DiagnoseArgs),
     /// Open the app on a measured step test.
     Open(fit::OpenArgs),
+    /// Replace a system by a simpler model (dominant poles, Taylor, Skogestad, Padé) and
+    /// measure what it costs.
+    Approx(approx::ApproxArgs),
+    /// The Padé (m, n) polynomials of a dead time e^{−θs}.
+    Pade(approx::PadeArgs),
 }
 
 const STEP_EXAMPLES: &str = "\
@@ -509,6 +515,8 @@ pub fn main() -> ExitCode {
         Some(Command::Fit(args)) => finish(fit::run_fit(&args, lang), lang),
         Some(Command::Diagnose(args)) => finish(diagnose::run_diagnose(&args, lang), lang),
         Some(Command::Open(args)) => open_app_with(Some(args.settings()), lang, window_lang),
+        Some(Command::Approx(args)) => approx::finish(approx::run_approx(&args, lang), lang),
+        Some(Command::Pade(args)) => approx::finish(approx::run_pade(&args, lang), lang),
     }
 }
 

@@ -10,6 +10,7 @@
 //! Pure math: nothing here knows about the GUI or the command line.
 
 pub mod analysis;
+pub mod approx;
 pub mod divided;
 pub mod expr;
 pub mod metrics;

@@ -16,6 +16,7 @@
 use serde::{Deserialize, Serialize};
 
 pub mod app;
+pub mod approx;
 pub mod cli;
 pub mod code;
 pub mod design;
@@ -182,6 +183,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(identify::messages());
     all.extend(design::messages());
     all.extend(app::messages());
+    all.extend(approx::messages());
     all
 }
 

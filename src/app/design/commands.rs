@@ -68,4 +68,6 @@ pub enum Command {
     SetPhaseForm(bool),
     /// What the pointer is over on the s-plane (a readout), or nothing.
     Readout(Option<String>),
+    /// The approximation view's choice ([`super::approx`]).
+    Approx(super::approx::ApproxCommand),
 }

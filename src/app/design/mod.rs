@@ -6,6 +6,7 @@
 //! drawn, so every view of a frame shows the same state.
 
 pub mod analysis;
+pub mod approx;
 pub mod commands;
 pub mod metrics_table;
 pub mod presets;
@@ -68,6 +69,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
             })
             .inner,
     );
+    commands.extend(approx::panel(ui, &session.approx, &session.analysis, look));
     let rest = ui.available_rect_before_wrap().width();
     // The s-plane takes at most half: the step plot is what a class looks at.
     let left_max = (rest - PLOT_MIN).min(0.5 * rest).max(PLOT_MIN);

@@ -43,6 +43,8 @@ pub struct Session {
     pub presets: Vec<Preset>,
     /// The root being dragged (its drag is one undoable edit).
     dragging: Option<RootId>,
+    /// The approximation chosen and its derived model and comparison.
+    pub approx: super::approx::ApproxView,
 }
 
 impl Session {
@@ -59,6 +61,7 @@ impl Session {
             readout: None,
             presets: presets(),
             dragging: None,
+            approx: Default::default(),
         }
     }
 
@@ -78,6 +81,7 @@ impl Session {
             (Some((_, s)), None) => self.compare_analysis = Some(Analysis::new(s, kept.options)),
             (None, _) => self.compare_analysis = None,
         }
+        self.approx.refresh(&self.analysis);
     }
 
     /// Applies one command to `kept`, then brings the derived data up to date.
@@ -177,6 +181,7 @@ impl Session {
             }
             Command::SetPhaseForm(on) => kept.phase_form = on,
             Command::Readout(text) => self.readout = text,
+            Command::Approx(c) => self.approx.apply(c),
         }
     }
 
