@@ -12,6 +12,8 @@
 pub mod analysis;
 pub mod divided;
 pub mod expr;
+pub mod feedback;
+pub mod locus;
 pub mod metrics;
 pub mod number;
 pub mod parse;
