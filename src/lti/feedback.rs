@@ -17,12 +17,13 @@ use super::tf::TransferFunction;
 use super::{LtiError, StepInfo, StepInfoOptions, StepResponse};
 
 /// The input a response is computed for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "snake_case")]
 pub enum Input {
     /// A unit impulse δ(t) (times the amplitude).
     Impulse,
     /// A step of the amplitude.
+    #[default]
     Step,
     /// A ramp A·t.
     Ramp,
@@ -71,6 +72,11 @@ impl InputResponse {
             }
             _ => self.step.sample_uniform(t0, t1, n),
         }
+    }
+
+    /// The closed form of y(t) (none for the impulse, which is the derivative of one).
+    pub fn expression(&self, form: super::expr::OscillationForm) -> Option<String> {
+        (self.input != Input::Impulse).then(|| super::expr::expression(&self.step, form))
     }
 
     /// The input itself at t (before its dead time there is none): δ drawn as 0.

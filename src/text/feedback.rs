@@ -3,7 +3,7 @@
 //! and the Design mode's loop, locus and spec controls, in English and Brazilian Portuguese
 //! (malha fechada, lugar das raízes, ganho crítico, erro em regime permanente, …).
 
-use crate::lti::feedback::InverseError;
+use crate::lti::feedback::{Input, InverseError};
 
 use super::{Lang, Localize, Message};
 
@@ -34,9 +34,156 @@ impl Localize for InverseError {
     }
 }
 
+/// The heading of the response to an input: "Ramp response y(t) (exact closed form):".
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InputHeading(pub Input);
+
+impl Localize for InputHeading {
+    fn text(&self, lang: Lang) -> String {
+        match (self.0, lang) {
+            (Input::Step, Lang::En) => "Step response y(t) (exact closed form):".into(),
+            (Input::Step, Lang::Pt) => "Resposta ao degrau y(t) (forma fechada exata):".into(),
+            (Input::Ramp, Lang::En) => "Ramp response y(t) (exact closed form):".into(),
+            (Input::Ramp, Lang::Pt) => "Resposta à rampa y(t) (forma fechada exata):".into(),
+            (Input::Parabola, Lang::En) => "Parabola response y(t) (exact closed form):".into(),
+            (Input::Parabola, Lang::Pt) => "Resposta à parábola y(t) (forma fechada exata):".into(),
+            (Input::Impulse, Lang::En) => {
+                "Impulse response y(t) = dy_step/dt (for t > θ; a biproper system adds an impulse at θ):".into()
+            }
+            (Input::Impulse, Lang::Pt) => {
+                "Resposta ao impulso y(t) = dy_degrau/dt (para t > θ; um sistema bipróprio soma um impulso em θ):".into()
+            }
+        }
+    }
+}
+
+/// A refusal of `degrau loop` said here (the rest are the CLI's and the library's).
+#[derive(Debug, Clone, PartialEq)]
+pub enum LoopError {
+    /// A `--find` item that is not `name<=number`.
+    BadSpec(String),
+    NoGain,
+}
+
+impl Localize for LoopError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            LoopError::BadSpec(item) => match lang {
+                Lang::En => format!(
+                    "--find \"{item}\" is not a spec: write name<=number with a name among overshoot (%), settling (s), rise (s), ess_step, ess_ramp, e.g. \"overshoot<=10\""
+                ),
+                Lang::Pt => format!(
+                    "--find \"{item}\" não é uma especificação: escreva nome<=número com um nome entre overshoot (sobressinal, %), settling (tempo de acomodação, s), rise (tempo de subida, s), ess_step, ess_ramp, por exemplo \"overshoot<=10\""
+                ),
+            },
+            LoopError::NoGain => lang
+                .pick(
+                    "no proportional gain K > 0 meets every spec on the exact closed-loop response",
+                    "nenhum ganho proporcional K > 0 atende a todas as especificações na resposta exata em malha fechada",
+                )
+                .into(),
+        }
+    }
+}
+
+/// A line of the loop's report, with its numbers already written in the language.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LoopLine {
+    OpenLoop(String),
+    Gain(String),
+    /// The range of gains meeting the specs: low, high (∞ when unbounded).
+    Range(String, String),
+    Constants {
+        system_type: i32,
+        kp: String,
+        kv: String,
+        ka: String,
+    },
+    /// e_ss for a step, a ramp, a parabola.
+    Errors(String, String, String),
+    /// The critical gain and the crossing frequency.
+    Critical(String, String),
+    /// Breakaway (true) or break-in, at σ, with K.
+    Breakaway(bool, String, String),
+    /// The centroid and the angles.
+    Asymptotes(String, String),
+}
+
+impl Localize for LoopLine {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            LoopLine::OpenLoop(g) => match lang {
+                Lang::En => format!("Open loop         G(s) = {g}"),
+                Lang::Pt => format!("Malha aberta      G(s) = {g}"),
+            },
+            LoopLine::Gain(k) => match lang {
+                Lang::En => format!("Proportional gain Kp = {k} (unity feedback)"),
+                Lang::Pt => format!("Ganho proporcional Kp = {k} (realimentação unitária)"),
+            },
+            LoopLine::Range(lo, hi) => match lang {
+                Lang::En => format!(
+                    "Gains meeting every spec: {lo} ≤ Kp ≤ {hi} (exact closed-loop response)"
+                ),
+                Lang::Pt => format!(
+                    "Ganhos que atendem a todas as especificações: {lo} ≤ Kp ≤ {hi} (resposta exata em malha fechada)"
+                ),
+            },
+            LoopLine::Constants {
+                system_type,
+                kp,
+                kv,
+                ka,
+            } => match lang {
+                Lang::En => format!(
+                    "System type {system_type}; error constants of Kp·G: position Kp = {kp}, velocity Kv = {kv}, acceleration Ka = {ka}"
+                ),
+                Lang::Pt => format!(
+                    "Tipo do sistema {system_type}; constantes de erro de Kp·G: posição Kp = {kp}, velocidade Kv = {kv}, aceleração Ka = {ka}"
+                ),
+            },
+            LoopLine::Errors(step, ramp, parabola) => match lang {
+                Lang::En => format!(
+                    "Steady-state error: step {step}, ramp {ramp}, parabola {parabola} (unit inputs)"
+                ),
+                Lang::Pt => format!(
+                    "Erro em regime permanente: degrau {step}, rampa {ramp}, parábola {parabola} (entradas unitárias)"
+                ),
+            },
+            LoopLine::Critical(k, w) => match lang {
+                Lang::En => format!(
+                    "Critical gain Kcr = {k}: closed-loop poles on the jω axis at ±j{w} rad/s"
+                ),
+                Lang::Pt => format!(
+                    "Ganho crítico Kcr = {k}: polos de malha fechada no eixo jω em ±j{w} rad/s"
+                ),
+            },
+            LoopLine::Breakaway(away, s, k) => match (lang, away) {
+                (Lang::En, true) => format!("Breakaway point s = {s} (K = {k})"),
+                (Lang::En, false) => format!("Break-in point s = {s} (K = {k})"),
+                (Lang::Pt, true) => format!("Ponto de saída do eixo real s = {s} (K = {k})"),
+                (Lang::Pt, false) => format!("Ponto de chegada ao eixo real s = {s} (K = {k})"),
+            },
+            LoopLine::Asymptotes(c, angles) => match lang {
+                Lang::En => format!("Asymptotes from the centroid σa = {c}, at {angles}"),
+                Lang::Pt => format!("Assíntotas a partir do centroide σa = {c}, a {angles}"),
+            },
+        }
+    }
+}
+
 crate::phrases! {
     /// The loop's fixed phrases (CLI report and Design mode).
     pub enum Loop {
+        NoSteadyState => (
+            "Steady-state error: none, the closed loop is not stable",
+            "Erro em regime permanente: não há, a malha fechada não é estável"
+        ),
+        NoCriticalGain => (
+            "No critical gain: the locus never crosses the jω axis for K > 0",
+            "Sem ganho crítico: o lugar das raízes nunca cruza o eixo jω para K > 0"
+        ),
+        LocusHeading => ("Root locus (K, closed-loop poles):", "Lugar das raízes (K, polos de malha fechada):"),
+        ClosedLoopHeading => ("Closed loop:", "Malha fechada:"),
         DelayNeedsApproximant => (
             "A dead time e^(−θs) in the loop cannot be closed exactly: the closed loop is not a rational transfer function. Replace the delay by a rational approximant (Padé) to close the loop; the result is then approximate.",
             "Um tempo morto e^(−θs) na malha não pode ser fechado exatamente: a malha fechada não é uma função de transferência racional. Substitua o atraso por uma aproximação racional (Padé) para fechar a malha; o resultado passa a ser aproximado."
@@ -52,5 +199,38 @@ pub fn messages() -> Vec<Message> {
         &InverseError::Overshoot(120.0),
     ));
     all.push(Message::of("InverseError::Time", &InverseError::Time(-1.0)));
+    all.push(Message::of(
+        "LoopError::BadSpec",
+        &LoopError::BadSpec("mp=3".into()),
+    ));
+    all.push(Message::of("LoopError::NoGain", &LoopError::NoGain));
+    for input in [Input::Step, Input::Impulse, Input::Ramp, Input::Parabola] {
+        all.push(Message::of(
+            format!("InputHeading::{input:?}"),
+            &InputHeading(input),
+        ));
+    }
+    let n = |x: &str| x.to_string();
+    for (id, line) in [
+        ("OpenLoop", LoopLine::OpenLoop(n("1 / s"))),
+        ("Gain", LoopLine::Gain(n("2"))),
+        ("Range", LoopLine::Range(n("0"), n("2.86"))),
+        (
+            "Constants",
+            LoopLine::Constants {
+                system_type: 1,
+                kp: n("∞"),
+                kv: n("0.5"),
+                ka: n("0"),
+            },
+        ),
+        ("Errors", LoopLine::Errors(n("0"), n("2"), n("∞"))),
+        ("Critical", LoopLine::Critical(n("53.3"), n("6.45"))),
+        ("Breakaway", LoopLine::Breakaway(true, n("-1"), n("1"))),
+        ("BreakIn", LoopLine::Breakaway(false, n("-5.4"), n("9.9"))),
+        ("Asymptotes", LoopLine::Asymptotes(n("1.5"), n("90°, 270°"))),
+    ] {
+        all.push(Message::of(format!("LoopLine::{id}"), &line));
+    }
     all
 }
