@@ -157,6 +157,41 @@ fn typed_coefficients_and_k_found_for_an_overshoot() {
 }
 
 #[test]
+fn the_locus_is_drawn_on_request_and_reads_k() {
+    let mut h = harness();
+    assert!(
+        h.state().design.feedback.locus.is_none(),
+        "no locus until asked"
+    );
+    click(&mut h, "Root locus");
+    let s = &h.state().design;
+    let locus = s.feedback.locus.as_ref().expect("the locus");
+    assert!(
+        (locus.crossings[0].k - 160.0).abs() < 1e-8,
+        "Routh: K = 160"
+    );
+    assert_eq!(s.feedback.branches.len(), 3);
+    // Hovering the locus reads K there.
+    let plane = h.get_by_label("s-plane").rect();
+    let far = locus.points.iter().find(|p| p.k > 50.0).unwrap().clone();
+    let upper = *far.roots.iter().find(|r| r.im > 0.0).unwrap();
+    let center = plane.center();
+    let view = h.state().saved.design.splane.view.unwrap();
+    let at = egui::pos2(
+        center.x + ((upper.re - view.center_re) * view.pixels_per_unit) as f32,
+        center.y - ((upper.im - view.center_im) * view.pixels_per_unit) as f32,
+    );
+    h.hover_at(at);
+    h.run_steps(2);
+    let readout = h.state().design.readout.clone().unwrap_or_default();
+    assert!(readout.starts_with("K = "), "{readout}");
+    let k: f64 = readout[4..].split(' ').next().unwrap().parse().unwrap();
+    assert!((k - far.k).abs() < 0.2 * far.k, "{k} vs {}", far.k);
+    click(&mut h, "complementary (K < 0)");
+    assert!(!h.state().design.feedback.complementary_branches.is_empty());
+}
+
+#[test]
 fn a_dead_time_says_it_needs_an_approximant() {
     let mut h = harness();
     kit::type_number(&mut h, "Dead time θ", 0, "0.5");

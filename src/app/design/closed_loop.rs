@@ -85,7 +85,7 @@ impl Default for LoopSettings {
         Self {
             closed: false,
             kp: 1.0,
-            locus: true,
+            locus: false,
             complementary: false,
             specs: Specs::default(),
             input: Input::Step,
@@ -137,8 +137,16 @@ pub struct LoopDerived {
 }
 
 impl LoopDerived {
-    /// Brings the caches up to date with `system` and `settings`.
-    pub fn refresh(&mut self, system: &System, settings: &LoopSettings, options: StepInfoOptions) {
+    /// Brings the caches up to date with `system` and `settings`. The locus (thousands of
+    /// polynomials' roots) is computed only when it is shown or the loop is closed, and not
+    /// while `dragging` a root of the open loop: it follows when the drag ends.
+    pub fn refresh(
+        &mut self,
+        system: &System,
+        settings: &LoopSettings,
+        options: StepInfoOptions,
+        dragging: bool,
+    ) {
         if self.system.as_ref() != Some(system) {
             self.system = Some(system.clone());
             self.open_loop = Some(open_loop(system));
@@ -148,21 +156,25 @@ impl LoopDerived {
             self.complementary_branches.clear();
             self.closed_for = None;
             self.found = None;
-            if let Some(Ok(g)) = &self.open_loop {
+        }
+        let wants_locus = settings.locus || settings.closed;
+        if let Some(Ok(g)) = &self.open_loop
+            && !dragging
+        {
+            if wants_locus && self.locus.is_none() {
                 self.locus = Locus::new(g, Side::Positive).ok();
                 self.branches = self.locus.as_ref().map(branches).unwrap_or_default();
+                // The closed-loop poles are put in the branches' order.
+                self.closed_for = None;
             }
-        }
-        if settings.complementary
-            && self.complementary.is_none()
-            && let Some(Ok(g)) = &self.open_loop
-        {
-            self.complementary = Locus::new(g, Side::Complementary).ok();
-            self.complementary_branches = self
-                .complementary
-                .as_ref()
-                .map(branches)
-                .unwrap_or_default();
+            if settings.locus && settings.complementary && self.complementary.is_none() {
+                self.complementary = Locus::new(g, Side::Complementary).ok();
+                self.complementary_branches = self
+                    .complementary
+                    .as_ref()
+                    .map(branches)
+                    .unwrap_or_default();
+            }
         }
         let key = (settings.kp, options, settings.input, settings.closed);
         if self.closed_for != Some(key) {

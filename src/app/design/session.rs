@@ -67,7 +67,7 @@ impl Session {
             settings: LoopSettings::default(),
             feedback: {
                 let mut f = LoopDerived::default();
-                f.refresh(&kept.system, &LoopSettings::default(), kept.options);
+                f.refresh(&kept.system, &LoopSettings::default(), kept.options, false);
                 f
             },
             dragging: None,
@@ -90,8 +90,9 @@ impl Session {
             (Some((_, s)), None) => self.compare_analysis = Some(Analysis::new(s, kept.options)),
             (None, _) => self.compare_analysis = None,
         }
+        let dragging = self.dragging.is_some();
         self.feedback
-            .refresh(&kept.system, &self.settings, kept.options);
+            .refresh(&kept.system, &self.settings, kept.options, dragging);
     }
 
     /// Applies one command to `kept`, then brings the derived data up to date.
@@ -204,7 +205,7 @@ impl Session {
             }
             Command::DragLoopPole { branch, re, im } => {
                 self.feedback
-                    .refresh(&kept.system, &self.settings, kept.options);
+                    .refresh(&kept.system, &self.settings, kept.options, false);
                 if let Some(k) = self.feedback.gain_at(branch, crate::lti::C64::new(re, im)) {
                     self.settings.kp = k;
                     self.settings.closed = true;
@@ -220,7 +221,7 @@ impl Session {
             Command::SetSpecs(specs) => self.settings.specs = specs,
             Command::FindGain => {
                 self.feedback
-                    .refresh(&kept.system, &self.settings, kept.options);
+                    .refresh(&kept.system, &self.settings, kept.options, false);
                 if let Some(k) = self.feedback.find(&self.settings.specs) {
                     self.settings.kp = k;
                     self.settings.closed = true;
