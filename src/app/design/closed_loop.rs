@@ -121,12 +121,14 @@ pub struct LoopDerived {
     pub branches: Vec<Vec<[f64; 2]>>,
     pub complementary_branches: Vec<Vec<[f64; 2]>>,
     /// The Kp and thresholds the closed loop is for.
-    closed_for: Option<(f64, StepInfoOptions, Input, bool)>,
+    closed_for: Option<(f64, StepInfoOptions, Input, bool, bool)>,
     /// The closed loop's analysis (its step response, metrics, curve).
     pub closed: Option<Analysis>,
     /// The closed-loop poles, in the locus's branch order.
     pub closed_poles: Vec<C64>,
     pub constants: Option<ErrorConstants>,
+    /// Whether the loop at Kp is stable (its steady-state errors exist), closed or not.
+    pub closed_stable: Option<bool>,
     /// The formulas of the dominant pair beside the exact metrics, of the loop shown
     /// (closed when it is closed).
     pub formulas: Option<FormulaCheck>,
@@ -176,40 +178,54 @@ impl LoopDerived {
                     .unwrap_or_default();
             }
         }
-        let key = (settings.kp, options, settings.input, settings.closed);
+        let key = (
+            settings.kp,
+            options,
+            settings.input,
+            settings.closed,
+            dragging,
+        );
         if self.closed_for != Some(key) {
             self.closed_for = Some(key);
-            self.recompute_closed(system, settings, options);
+            self.recompute_closed(system, settings, options, dragging);
         }
     }
 
+    /// The closed loop's analysis (when the loop is closed), the constants, and (not while
+    /// dragging, they cost two more analyses) the second-order check.
     fn recompute_closed(
         &mut self,
         system: &System,
         settings: &LoopSettings,
         options: StepInfoOptions,
+        dragging: bool,
     ) {
         self.closed = None;
         self.closed_poles.clear();
         self.constants = None;
+        self.closed_stable = None;
         let open = system.transfer_function().ok();
         let shown = match &self.open_loop {
             Some(Ok(g)) => {
                 self.constants = Some(ErrorConstants::of(g, settings.kp));
-                match g.closed_loop(settings.kp) {
-                    Ok(cl) => {
+                self.closed_stable = g.closed_loop(settings.kp).ok().map(|c| c.is_stable());
+                match g.closed_loop(settings.kp).ok().filter(|_| settings.closed) {
+                    Some(cl) => {
                         let as_system = System::from_transfer_function(&cl, system.amplitude);
                         self.closed = Some(Analysis::new(&as_system, options));
                         self.closed_poles = self.in_branch_order(cl.poles(), settings.kp);
                         Some(cl)
                     }
-                    Err(_) => None,
+                    None => None,
                 }
             }
             _ => None,
         };
         let loop_shown = if settings.closed { shown } else { open.clone() };
-        self.formulas = loop_shown.as_ref().and_then(FormulaCheck::of);
+        self.formulas = loop_shown
+            .as_ref()
+            .filter(|_| !dragging)
+            .and_then(FormulaCheck::of);
         self.input_curve = loop_shown
             .as_ref()
             .filter(|_| settings.input != Input::Step)

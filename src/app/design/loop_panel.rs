@@ -148,12 +148,7 @@ fn constants(ui: &mut Ui, session: &Session, lang: Lang) {
         )
         .wrap(),
     );
-    let stable = session
-        .feedback
-        .closed
-        .as_ref()
-        .and_then(|a| a.tf.as_ref().ok())
-        .is_some_and(|t| t.is_stable());
+    let stable = session.feedback.closed_stable == Some(true);
     let text = if stable {
         let e = c.errors();
         LoopLine::Errors(
