@@ -110,6 +110,7 @@ fn an_overshoot_spec_shades_its_region() {
             .count()
     };
     let none = filled(&h);
+    click(&mut h, "Specs");
     click(&mut h, "overshoot");
     assert_eq!(h.state().design.settings.specs.overshoot, Some(10.0));
     assert_eq!(filled(&h), none + 2, "two wedges where ζ < ζ(10 %)");
@@ -136,6 +137,7 @@ fn typed_coefficients_and_k_found_for_an_overshoot() {
         h.state().system().transfer_function(),
         zpk.transfer_function()
     );
+    click(&mut h, "Specs");
     click(&mut h, "overshoot");
     click(&mut h, "Find K");
     let s = &h.state().design;
@@ -189,6 +191,35 @@ fn the_locus_is_drawn_on_request_and_reads_k() {
     assert!((k - far.k).abs() < 0.2 * far.k, "{k} vs {}", far.k);
     click(&mut h, "complementary (K < 0)");
     assert!(!h.state().design.feedback.complementary_branches.is_empty());
+}
+
+#[test]
+fn the_formulas_sit_beside_the_exact_metrics_and_the_inverse_places_a_pair() {
+    let mut h = harness();
+    click(&mut h, "Second-order formulas vs the exact response");
+    // The notes' system: its dominant pair −1 ± 2j (ζ = 0.447, ωn = 2.236).
+    let f = h
+        .state()
+        .design
+        .feedback
+        .formulas
+        .clone()
+        .expect("a dominant pair");
+    assert!((f.pair.wn - 5f64.sqrt()).abs() < 1e-12);
+    h.get_by_label("t_s ≈ 4/(ζωn)");
+    // Mp = 10 % and t_s = 4 s (the defaults): ζ = 0.5912, ωn = 1.6918; placed in one click.
+    click(&mut h, "Place on the s-plane");
+    let g = h.state().system().transfer_function().unwrap();
+    let zeta = degrau::lti::feedback::SecondOrder::damping_for_overshoot(10.0).unwrap();
+    let wn = 4.0 / (zeta * 4.0);
+    let den = g.den();
+    assert!(
+        (den[1] - 2.0 * zeta * wn).abs() < 1e-12 && (den[2] - wn * wn).abs() < 1e-12,
+        "{den:?}"
+    );
+    // The exact overshoot of the canonical pair is the spec, to the formula's exactness.
+    let f = h.state().design.feedback.formulas.clone().unwrap();
+    assert!((f.overshoot.exact.unwrap() - 10.0).abs() < 1e-6);
 }
 
 #[test]

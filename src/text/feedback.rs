@@ -94,8 +94,8 @@ impl SpecName {
         SpecName::EssRamp,
     ];
 
-    /// The label of the spec's limit field (notation, the same in both languages).
-    pub fn field_label(self) -> &'static str {
+    /// The label of the spec's limit field (notation, with the input named in `lang`).
+    pub fn field_label(self, lang: Lang) -> &'static str {
         match self {
             SpecName::Overshoot => "Mp ≤",
             SpecName::Settling => "t_s ≤",
@@ -103,8 +103,8 @@ impl SpecName {
             SpecName::Rise => "t_r ≤",
             SpecName::WnMin => "ωn ≥",
             SpecName::WnMax => "ωn ≤",
-            SpecName::EssStep => "e_ss step ≤",
-            SpecName::EssRamp => "e_ss ramp ≤",
+            SpecName::EssStep => lang.pick("e_ss step ≤", "e_ss degrau ≤"),
+            SpecName::EssRamp => lang.pick("e_ss ramp ≤", "e_ss rampa ≤"),
         }
     }
 }

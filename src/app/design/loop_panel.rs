@@ -64,12 +64,19 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look) -> Vec<Command> {
     }
     locus_facts(ui, session, lang);
     constants(ui, session, lang);
-    ui.separator();
-    out.extend(specs(ui, session, look));
-    ui.separator();
     out.extend(input_choice(ui, session, lang));
-    ui.separator();
-    out.extend(formulas(ui, session, lang));
+    // The specs and the formulas fold away (closed at first): a panel laid out but unseen
+    // still costs every frame.
+    let specs_shown = egui::CollapsingHeader::new(P::SpecsHeading.get(lang))
+        .id_salt("loop specs")
+        .default_open(false)
+        .show(ui, |ui| specs(ui, session, look));
+    out.extend(specs_shown.body_returned.unwrap_or_default());
+    let formulas_shown = egui::CollapsingHeader::new(P::FormulasHeading.get(lang))
+        .id_salt("loop formulas")
+        .default_open(false)
+        .show(ui, |ui| formulas(ui, session, lang));
+    out.extend(formulas_shown.body_returned.unwrap_or_default());
     out
 }
 
@@ -178,7 +185,7 @@ fn spec_row(
             *value = on.then_some(value.unwrap_or(default));
         }
         if let Some(v) = value {
-            let label = name.field_label();
+            let label = name.field_label(lang);
             if let Some(typed) = NumberField::new(label, *v)
                 .limits(Limits::new(1e-12, 1e12, LimitReason::Gain))
                 .width(FIELD_WIDTH)
@@ -194,8 +201,7 @@ fn spec_row(
 fn specs(ui: &mut Ui, session: &Session, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let mut out = Vec::new();
-    ui.strong(P::SpecsHeading.get(lang))
-        .on_hover_text(P::SpecsHelp.get(lang));
+    ui.add(egui::Label::new(RichText::new(P::SpecsHelp.get(lang)).weak()).wrap());
     let mut s: Specs = session.settings.specs;
     spec_row(ui, SpecName::Overshoot, &mut s.overshoot, 10.0, "%", lang);
     spec_row(ui, SpecName::Settling, &mut s.settling, 4.0, "s", lang);
@@ -256,8 +262,7 @@ fn input_choice(ui: &mut Ui, session: &Session, lang: Lang) -> Vec<Command> {
 /// The formulas of the dominant pair beside the exact metrics, and the inverse.
 fn formulas(ui: &mut Ui, session: &Session, lang: Lang) -> Vec<Command> {
     let mut out = Vec::new();
-    ui.strong(P::FormulasHeading.get(lang))
-        .on_hover_text(P::FormulasHelp.get(lang));
+    ui.add(egui::Label::new(RichText::new(P::FormulasHelp.get(lang)).weak()).wrap());
     let n = |x: f64| lang.num(x, 4);
     match &session.feedback.formulas {
         Some(f) => {
