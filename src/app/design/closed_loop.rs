@@ -349,3 +349,54 @@ fn input_curve(
     let reference = t.iter().map(|&t| [t, r.input_value(t)]).collect();
     Some((curve, reference))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shown() -> LoopSettings {
+        LoopSettings {
+            closed: true,
+            locus: true,
+            ..LoopSettings::default()
+        }
+    }
+
+    #[test]
+    fn the_locus_is_computed_once_per_system_and_not_while_dragging() {
+        let system = System::default();
+        let mut d = LoopDerived::default();
+        d.refresh(&system, &shown(), StepInfoOptions::default(), false);
+        let first = d.branches[0].as_ptr();
+        // A frame with nothing changed keeps every cache.
+        d.refresh(&system, &shown(), StepInfoOptions::default(), false);
+        assert_eq!(d.branches[0].as_ptr(), first);
+        // A new Kp recomputes the closed loop only.
+        let mut k = shown();
+        k.kp = 20.0;
+        d.refresh(&system, &k, StepInfoOptions::default(), false);
+        assert_eq!(d.branches[0].as_ptr(), first);
+        let den = d.closed.as_ref().unwrap().tf.as_ref().unwrap().den();
+        assert!((den[3] - 35.0).abs() < 1e-12, "25 + 20·0.5: {den:?}");
+        // A root dragged: no locus until the drag ends.
+        let mut moved = system.clone();
+        moved.poles[1].move_to(-4.0, 0.0);
+        d.refresh(&moved, &k, StepInfoOptions::default(), true);
+        assert!(d.locus.is_none() && d.branches.is_empty());
+        assert!(d.closed.is_some(), "the closed loop follows the drag");
+        d.refresh(&moved, &k, StepInfoOptions::default(), false);
+        assert!(d.locus.is_some());
+    }
+
+    #[test]
+    fn a_dead_time_leaves_no_loop() {
+        let system = System {
+            delay: 0.3,
+            ..System::default()
+        };
+        let mut d = LoopDerived::default();
+        d.refresh(&system, &shown(), StepInfoOptions::default(), false);
+        assert_eq!(d.open_loop, Some(Err(LtiError::DelayInLoop)));
+        assert!(d.closed.is_none() && d.locus.is_none());
+    }
+}
