@@ -197,7 +197,8 @@ fn rise_limits_zero_to_one_are_matlabs() {
 #[test]
 fn step_gives_impulse_ramp_and_parabola_responses() {
     // 1/(s+1): impulse e^{−t}, ramp t − 1 + e^{−t}, parabola t²/2 − t + 1 − e^{−t}.
-    let exact: [(&str, fn(f64) -> f64); 3] = [
+    type Exact = fn(f64) -> f64;
+    let exact: [(&str, Exact); 3] = [
         ("impulse", |t| (-t).exp()),
         ("ramp", |t| t - 1.0 + (-t).exp()),
         ("parabola", |t| 0.5 * t * t - t + 1.0 - (-t).exp()),

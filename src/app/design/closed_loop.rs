@@ -93,6 +93,9 @@ impl Default for LoopSettings {
     }
 }
 
+/// The response to an input (t, y) and the input itself (t, r), both sampled for the plot.
+pub type InputCurve = (Vec<[f64; 2]>, Vec<[f64; 2]>);
+
 /// The largest |Kp| the app holds.
 pub const KP_LIMIT: f64 = 1e12;
 
@@ -133,7 +136,7 @@ pub struct LoopDerived {
     /// (closed when it is closed).
     pub formulas: Option<FormulaCheck>,
     /// The response to the chosen input (of the closed loop when closed), with the input.
-    pub input_curve: Option<(Vec<[f64; 2]>, Vec<[f64; 2]>)>,
+    pub input_curve: Option<InputCurve>,
     /// The last gain search's answer.
     pub found: Option<Found>,
 }
@@ -331,11 +334,7 @@ fn branches(locus: &Locus) -> Vec<Vec<[f64; 2]>> {
 }
 
 /// The response of `g` to `input` over its step response's window, with the input itself.
-fn input_curve(
-    g: &TransferFunction,
-    input: Input,
-    amplitude: f64,
-) -> Option<(Vec<[f64; 2]>, Vec<[f64; 2]>)> {
+fn input_curve(g: &TransferFunction, input: Input, amplitude: f64) -> Option<InputCurve> {
     let step = crate::lti::StepResponse::new(g, amplitude).ok()?;
     let horizon = Some(step.auto_horizon())
         .filter(|h| h.is_finite() && *h > 0.0)
