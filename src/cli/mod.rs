@@ -15,6 +15,7 @@ use std::process::ExitCode;
 pub mod approx;
 pub mod diagnose;
 pub mod fit;
+pub mod loop_cmd;
 
 use clap::{Args, Parser, Subcommand};
 use serde::{Deserialize, Serialize};
@@ -24,6 +25,7 @@ use crate::ident::data::DataError;
 use crate::ident::experiment::ExperimentError;
 use crate::ident::fit::FitError;
 use crate::lti::expr::{OscillationForm, expression};
+use crate::lti::feedback::{Input, InputResponse};
 use crate::lti::number::format_number;
 use crate::lti::parse::{ParseError, parse_complex_list, parse_real_list};
 use crate::lti::poly::format_poly;
@@ -73,6 +75,8 @@ pub enum Command {
     Approx(approx::ApproxArgs),
     /// The Padé (m, n) polynomials of a dead time e^{−θs}.
     Pade(approx::PadeArgs),
+    /// Unity-feedback loop around Kp·G(s): closed loop, gain for specs, error constants, root locus.
+    Loop(loop_cmd::LoopArgs),
 }
 
 const STEP_EXAMPLES: &str = "\
@@ -130,6 +134,10 @@ pub struct StepArgs {
     /// Add N samples of y(t), evenly spaced over [0, the automatic horizon].
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub samples: Option<usize>,
+    /// The input: step (the default, with its metrics), impulse, ramp or parabola (y(t) and
+    /// its samples, 201 unless --samples says).
+    #[arg(long, value_enum, default_value_t = Input::Step)]
+    pub response: Input,
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
@@ -139,6 +147,7 @@ pub struct StepArgs {
         long,
         conflicts_with_all = [
             "poles", "zeros", "gain", "num", "den", "dc_gain", "delay", "amplitude", "samples",
+            "response",
         ]
     )]
     pub batch: bool,
@@ -517,6 +526,7 @@ pub fn main() -> ExitCode {
         Some(Command::Open(args)) => open_app_with(Some(args.settings()), lang, window_lang),
         Some(Command::Approx(args)) => approx::finish(approx::run_approx(&args, lang), lang),
         Some(Command::Pade(args)) => approx::finish(approx::run_pade(&args, lang), lang),
+        Some(Command::Loop(args)) => loop_cmd::main(&args, lang),
     }
 }
 
@@ -573,6 +583,9 @@ pub fn run_step(args: &StepArgs, lang: Lang) -> Result<(), CliError> {
     if args.batch {
         return run_batch(io::stdin().lock(), io::stdout().lock(), &options);
     }
+    if args.response != Input::Step {
+        return run_input_response(args, &options, lang);
+    }
     let analysis = args.spec()?.analyse(&options)?;
     let mut out = io::stdout().lock();
     let written = if args.json {
@@ -583,6 +596,84 @@ pub fn run_step(args: &StepArgs, lang: Lang) -> Result<(), CliError> {
     written
         .and_then(|()| out.flush())
         .map_err(CliError::WriteOutput)
+}
+
+/// Samples of an impulse, ramp or parabola response when `--samples` does not say.
+const INPUT_SAMPLES: usize = 201;
+
+/// The JSON report of `degrau step --response impulse|ramp|parabola`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InputReport {
+    pub response: Input,
+    /// y(t) in closed form (null for the impulse).
+    pub expression: Option<String>,
+    pub expression_amplitude_phase: Option<String>,
+    pub num: Vec<f64>,
+    pub den: Vec<f64>,
+    pub poles: Vec<[f64; 2]>,
+    pub zeros: Vec<[f64; 2]>,
+    pub delay: f64,
+    pub amplitude: f64,
+    /// Over the window of the step response of the same system.
+    pub samples: Samples,
+}
+
+/// `degrau step --response impulse|ramp|parabola`: y(t) for that input, over the step
+/// response's window.
+fn run_input_response(
+    args: &StepArgs,
+    options: &StepInfoOptions,
+    lang: Lang,
+) -> Result<(), CliError> {
+    let mut spec = args.spec()?;
+    let n = check_samples(spec.samples.take().unwrap_or(INPUT_SAMPLES))?;
+    let step = spec.analyse(options)?;
+    let amplitude = step.response.amplitude();
+    let input = InputResponse::new(&step.tf, args.response, amplitude)?;
+    let horizon = Some(step.response.auto_horizon())
+        .filter(|h| h.is_finite() && *h > 0.0)
+        .unwrap_or(10.0);
+    let (t, y) = input.sample_uniform(0.0, horizon, n);
+    let report = InputReport {
+        response: args.response,
+        expression: input.expression(OscillationForm::CosSin),
+        expression_amplitude_phase: input.expression(OscillationForm::AmplitudePhase),
+        num: step.tf.num(),
+        den: step.tf.den(),
+        poles: as_pairs(step.tf.poles()),
+        zeros: as_pairs(step.tf.zeros()),
+        delay: step.tf.delay(),
+        amplitude,
+        samples: Samples { t, y },
+    };
+    let mut out = io::stdout().lock();
+    let written = if args.json {
+        write_json_line(&mut out, &report)
+    } else {
+        writeln!(out, "{}", input_report_text(&step, &report, lang))
+    };
+    written
+        .and_then(|()| out.flush())
+        .map_err(CliError::WriteOutput)
+}
+
+/// The text of an impulse, ramp or parabola response: the system, y(t), the samples.
+fn input_report_text(step: &Analysis, report: &InputReport, lang: Lang) -> String {
+    use crate::text::feedback::InputHeading;
+    let mut lines = system_lines(step, lang);
+    lines.push(String::new());
+    lines.push(InputHeading(report.response).text(lang));
+    for e in [&report.expression, &report.expression_amplitude_phase]
+        .into_iter()
+        .flatten()
+    {
+        lines.push(format!("  {e}"));
+    }
+    lines.push(String::new());
+    lines.push(format!("{}\n  t (s)\ty", Heading::Samples.get(lang)));
+    let Samples { t, y } = &report.samples;
+    lines.extend(t.iter().zip(y).map(|(t, y)| format!("  {t}\t{y}")));
+    lines.join("\n")
 }
 
 /// `value` as one line of compact JSON (non-finite numbers become `null`).

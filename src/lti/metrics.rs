@@ -14,7 +14,8 @@
 //! All levels are measured from y_init (the output before the step: 0 for a system at rest)
 //! towards y_final, with Δ = y_final − y_init:
 //! - **rise time**: from the first time y reaches y_init + 10 % Δ to the first time it
-//!   reaches y_init + 90 % Δ (limits settable, e.g. 5–95 %);
+//!   reaches y_init + 90 % Δ (limits settable, e.g. 5–95 %; with 0–100 % it is the time of
+//!   the first arrival at y_final after the dead time, as MATLAB's `stepinfo` gives it);
 //! - **settling time**: the first time after which |y − y_final| ≤ 2 % |Δ| forever
 //!   (threshold settable, e.g. 5 %), counted from the step (a dead time is included);
 //! - **overshoot**: 100·(largest excursion beyond y_final)/|Δ| in %, 0 when there is none;
@@ -207,7 +208,12 @@ impl StepInfo {
         let e = |y: f64| sign * (y - y_init) / span;
         let level = |fraction: f64| y_init + fraction * delta;
         // The first piece that reaches `fraction`, and the instant it does.
+        // A response already at the level when the step comes (a low limit of 0 %) reaches
+        // it at the step instant.
         let first_crossing = |fraction: f64| -> Option<(usize, f64)> {
+            if e(points[0].1) >= fraction {
+                return Some((0, points[0].0));
+            }
             points.windows(2).enumerate().find_map(|(i, w)| {
                 let (a, b) = (e(w[0].1), e(w[1].1));
                 (a < fraction && b >= fraction).then(|| (i, pieces.crossing(i, level(fraction))))

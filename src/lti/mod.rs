@@ -13,6 +13,8 @@ pub mod analysis;
 pub mod approx;
 pub mod divided;
 pub mod expr;
+pub mod feedback;
+pub mod locus;
 pub mod metrics;
 pub mod number;
 pub mod parse;

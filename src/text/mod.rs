@@ -20,6 +20,7 @@ pub mod approx;
 pub mod cli;
 pub mod code;
 pub mod design;
+pub mod feedback;
 pub mod ident;
 pub mod identify;
 pub mod lti;
@@ -182,6 +183,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(operating_point::messages());
     all.extend(identify::messages());
     all.extend(design::messages());
+    all.extend(feedback::messages());
     all.extend(app::messages());
     all.extend(approx::messages());
     all

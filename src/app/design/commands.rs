@@ -3,6 +3,9 @@
 //! once per frame, after the views, so no view changes anything while drawing.
 
 use crate::lti::StepInfoOptions;
+use crate::lti::feedback::Input;
+
+use super::closed_loop::Specs;
 
 use super::splane::View;
 use super::state::{GainMode, Root, RootId, RootRole, System};
@@ -70,4 +73,36 @@ pub enum Command {
     Readout(Option<String>),
     /// The approximation view's choice ([`super::approx`]).
     Approx(super::approx::ApproxCommand),
+    /// G(s) typed as coefficients (descending powers), one undoable edit keeping the gain's
+    /// meaning, the dead time and the step.
+    SetCoefficients {
+        num: Vec<f64>,
+        den: Vec<f64>,
+    },
+    /// Unity feedback around Kp·G(s) shown or not.
+    SetLoopClosed(bool),
+    /// The proportional gain Kp (typed or by the slider).
+    SetKp(f64),
+    /// A closed-loop pole of locus branch `branch` dragged towards s = `re` + j`im`: Kp
+    /// becomes the gain that puts it nearest there on its branch.
+    DragLoopPole {
+        branch: usize,
+        re: f64,
+        im: f64,
+    },
+    /// The root locus drawn, and its complementary half.
+    SetLocus {
+        shown: bool,
+        complementary: bool,
+    },
+    SetSpecs(Specs),
+    /// Search the gain meeting the specs on the exact closed-loop response, and take it.
+    FindGain,
+    /// Replace the system by the canonical ωn²/(s² + 2ζωn s + ωn²).
+    PlaceSecondOrder {
+        zeta: f64,
+        wn: f64,
+    },
+    /// The input whose response is plotted beside the step.
+    SetInput(Input),
 }

@@ -7,7 +7,10 @@
 
 pub mod analysis;
 pub mod approx;
+pub mod closed_loop;
 pub mod commands;
+pub mod locus_view;
+pub mod loop_panel;
 pub mod metrics_table;
 pub mod presets;
 pub mod session;
@@ -51,7 +54,12 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
             .size_range(180.0..=side_max)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical()
-                    .show(ui, |ui| system_panel::show(ui, session, kept, look))
+                    .show(ui, |ui| {
+                        let mut out = system_panel::show(ui, session, kept, look);
+                        ui.separator();
+                        out.extend(loop_panel::show(ui, session, look));
+                        out
+                    })
                     .inner
             })
             .inner,
@@ -144,7 +152,11 @@ fn splane_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec
             .wrap()
             .halign(egui::Align::LEFT),
     );
-    out.extend(splane::show(ui, &kept.system, state, look));
+    let overlay = locus_view::Overlay {
+        settings: &session.settings,
+        derived: &session.feedback,
+    };
+    out.extend(splane::show(ui, &kept.system, state, look, Some(&overlay)));
     out
 }
 

@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 use crate::lti::StepInfoOptions;
 
 use super::analysis::Analysis;
+use super::closed_loop::{KP_LIMIT, LoopDerived, LoopSettings};
 use super::commands::Command;
 use super::presets::{Preset, presets};
 use super::splane::SPlaneState;
@@ -41,6 +42,11 @@ pub struct Session {
     /// What the pointer is over on the s-plane.
     pub readout: Option<String>,
     pub presets: Vec<Preset>,
+    /// The closed loop, the locus and the specs the student chose (not yet in the state
+    /// file: `crate::app::persist` restores [`Kept`] field by field).
+    pub settings: LoopSettings,
+    /// The closed loop's and the locus's derived data.
+    pub feedback: LoopDerived,
     /// The root being dragged (its drag is one undoable edit).
     dragging: Option<RootId>,
     /// The approximation chosen and its derived model and comparison.
@@ -60,6 +66,12 @@ impl Session {
             ghost: None,
             readout: None,
             presets: presets(),
+            settings: LoopSettings::default(),
+            feedback: {
+                let mut f = LoopDerived::default();
+                f.refresh(&kept.system, &LoopSettings::default(), kept.options, false);
+                f
+            },
             dragging: None,
             approx: Default::default(),
         }
@@ -82,6 +94,9 @@ impl Session {
             (None, _) => self.compare_analysis = None,
         }
         self.approx.refresh(&self.analysis);
+        let dragging = self.dragging.is_some();
+        self.feedback
+            .refresh(&kept.system, &self.settings, kept.options, dragging);
     }
 
     /// Applies one command to `kept`, then brings the derived data up to date.
@@ -93,7 +108,7 @@ impl Session {
     fn apply_one(&mut self, kept: &mut Kept, command: Command) {
         match command {
             Command::SetGain(gain) => self.edit(kept, |s| s.gain = gain),
-            Command::SetGainMode(mode) => self.edit(kept, |s| s.gain_mode = mode),
+            Command::SetGainMode(mode) => self.edit(kept, |s| keep_system_in_mode(s, mode)),
             Command::SetDelay(delay) => self.edit(kept, |s| s.delay = delay),
             Command::SetAmplitude(a) => self.edit(kept, |s| s.amplitude = a),
             // A typed value is taken as it is: beyond the limits it is refused, not clamped.
@@ -182,6 +197,50 @@ impl Session {
             Command::SetPhaseForm(on) => kept.phase_form = on,
             Command::Readout(text) => self.readout = text,
             Command::Approx(c) => self.approx.apply(c),
+            Command::SetCoefficients { num, den } => {
+                if let Some(system) = from_coefficients(&kept.system, &num, &den) {
+                    self.replace(kept, system);
+                }
+            }
+            Command::SetLoopClosed(on) => self.settings.closed = on,
+            Command::SetKp(kp) => {
+                if kp.is_finite() && kp.abs() <= KP_LIMIT {
+                    self.settings.kp = kp;
+                }
+            }
+            Command::DragLoopPole { branch, re, im } => {
+                self.feedback
+                    .refresh(&kept.system, &self.settings, kept.options, false);
+                if let Some(k) = self.feedback.gain_at(branch, crate::lti::C64::new(re, im)) {
+                    self.settings.kp = k;
+                    self.settings.closed = true;
+                }
+            }
+            Command::SetLocus {
+                shown,
+                complementary,
+            } => {
+                self.settings.locus = shown;
+                self.settings.complementary = complementary;
+            }
+            Command::SetSpecs(specs) => self.settings.specs = specs,
+            Command::FindGain => {
+                self.feedback
+                    .refresh(&kept.system, &self.settings, kept.options, false);
+                if let Some(k) = self.feedback.find(&self.settings.specs) {
+                    self.settings.kp = k;
+                    self.settings.closed = true;
+                }
+            }
+            Command::PlaceSecondOrder { zeta, wn } => {
+                let pair = crate::lti::feedback::SecondOrder { zeta, wn };
+                if let Ok(tf) = pair.transfer_function() {
+                    let mut system = System::from_transfer_function(&tf, kept.system.amplitude);
+                    keep_system_in_mode(&mut system, kept.system.gain_mode);
+                    self.replace(kept, system);
+                }
+            }
+            Command::SetInput(input) => self.settings.input = input,
         }
     }
 
@@ -223,6 +282,35 @@ impl Session {
             kept.splane.selected = None;
         }
     }
+}
+
+/// The same system with its gain read in `mode`: k when it means k, G(0) when it means the
+/// static gain (a system without a finite, non-zero G(0) keeps meaning k).
+fn keep_system_in_mode(system: &mut System, mode: super::state::GainMode) {
+    use super::state::GainMode;
+    let Ok(tf) = system.transfer_function() else {
+        system.gain_mode = mode;
+        return;
+    };
+    let gain = match mode {
+        GainMode::Zpk => tf.gain(),
+        GainMode::Static => tf.dc_gain(),
+    };
+    if gain.is_finite() && gain != 0.0 {
+        system.gain = gain;
+        system.gain_mode = mode;
+    }
+}
+
+/// The system of typed coefficients, keeping the gain's meaning, the dead time and the step
+/// amplitude of `current`; `None` when they are not a system.
+pub fn from_coefficients(current: &System, num: &[f64], den: &[f64]) -> Option<System> {
+    let tf = crate::lti::TransferFunction::from_coeffs(num, den)
+        .and_then(|tf| tf.with_delay(current.delay))
+        .ok()?;
+    let mut system = System::from_transfer_function(&tf, current.amplitude);
+    keep_system_in_mode(&mut system, current.gain_mode);
+    Some(system)
 }
 
 /// Applies `change` to `system` when the result is a different, placeable system; true

@@ -93,6 +93,16 @@ pub struct Transform {
 }
 
 impl Transform {
+    /// The canvas's rect on screen.
+    pub fn rect(&self) -> Rect {
+        self.rect
+    }
+
+    /// Pixels per unit (1/s) of the view.
+    pub fn pixels_per_unit(&self) -> f64 {
+        self.view.pixels_per_unit
+    }
+
     pub fn to_screen(&self, re: f64, im: f64) -> Pos2 {
         let c = self.rect.center();
         Pos2::new(
@@ -154,8 +164,15 @@ pub fn fit_view(system: &System, size: Vec2) -> View {
 }
 
 /// Draws the canvas; returns the student's edits (drags, menu choices, pan and zoom) as
-/// commands. `system` and `state` are only read.
-pub fn show(ui: &mut Ui, system: &System, state: &SPlaneState, look: &Look) -> Vec<Command> {
+/// commands. `system` and `state` are only read; `overlay` adds the closed loop (spec
+/// regions, root locus, closed-loop poles).
+pub fn show(
+    ui: &mut Ui,
+    system: &System,
+    state: &SPlaneState,
+    look: &Look,
+    overlay: Option<&super::locus_view::Overlay<'_>>,
+) -> Vec<Command> {
     let mut out = Vec::new();
     let size = ui.available_size().max(Vec2::splat(120.0));
     let (rect, background) = ui.allocate_exact_size(size, Sense::click_and_drag());
@@ -172,6 +189,9 @@ pub fn show(ui: &mut Ui, system: &System, state: &SPlaneState, look: &Look) -> V
     let painter = ui.painter_at(rect);
 
     paint_background(&painter, &transform, state.damping_grid, look);
+    if let Some(o) = overlay {
+        super::locus_view::paint(&painter, &transform, o, look);
+    }
     let mut readout_text = background
         .hover_pos()
         .map(|p| transform.to_plane(p))
@@ -200,6 +220,18 @@ pub fn show(ui: &mut Ui, system: &System, state: &SPlaneState, look: &Look) -> V
             state,
             id,
             look,
+            &mut readout_text,
+        ));
+    }
+    // The closed-loop poles come last, so they take a drag over an open-loop root.
+    if let Some(o) = overlay {
+        out.extend(super::locus_view::handles(
+            ui,
+            &painter,
+            &transform,
+            o,
+            look,
+            background.hover_pos(),
             &mut readout_text,
         ));
     }

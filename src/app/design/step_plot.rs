@@ -19,6 +19,7 @@ use crate::app::look::Look;
 use crate::lti::{StepInfoOptions, StepResponse};
 use crate::text::Lang;
 use crate::text::design::Design as P;
+use crate::text::feedback::Loop;
 use crate::text::step::Metric;
 
 use super::analysis::Analysis;
@@ -195,6 +196,19 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
     if let Some((_, b)) = compare {
         current.push(&b.curve);
     }
+    let closed = session
+        .feedback
+        .closed
+        .as_ref()
+        .filter(|_| session.settings.closed);
+    if let Some(c) = closed {
+        current.push(&c.curve);
+    }
+    let input = session.feedback.input_curve.as_ref();
+    if let Some((curve, reference)) = input {
+        current.push(curve);
+        current.push(reference);
+    }
     let (y_lo, y_hi) = y_range(&current);
     let t_hi = t_range(&current);
     let main_response = analysis.response.as_ref();
@@ -265,6 +279,34 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
                         .width(2.2),
                 );
                 draw_markers(plot, analysis, &kept.markers, look);
+                if let Some(c) = closed {
+                    plot.line(
+                        Line::new(Loop::ClosedLoopCurve.get(lang), c.curve.clone())
+                            .color(palette.model)
+                            .width(2.2),
+                    );
+                    draw_markers(plot, c, &kept.markers, look);
+                }
+                if let Some((curve, reference)) = input {
+                    let which = Loop::input_name(session.settings.input).get(lang);
+                    plot.line(
+                        Line::new(
+                            format!("{} {which}", Loop::InputCurve.get(lang)),
+                            curve.clone(),
+                        )
+                        .color(palette.path)
+                        .width(2.0),
+                    );
+                    plot.line(
+                        Line::new(
+                            format!("{} {which}", Loop::InputItself.get(lang)),
+                            reference.clone(),
+                        )
+                        .color(palette.path.gamma_multiply(0.5))
+                        .style(LineStyle::dashed_dense())
+                        .width(1.2),
+                    );
+                }
             });
         let r = &response.response;
         let moved = r.dragged()

@@ -81,6 +81,117 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
     ));
     ui.separator();
     transfer_function(ui, session, lang);
+    out.extend(coefficient_fields(ui, session, &kept.system, lang));
+    out
+}
+
+/// What the coefficient fields hold between frames.
+#[derive(Debug, Clone, Default)]
+struct CoefficientBuffer {
+    num: String,
+    den: String,
+    /// The coefficients the texts were written from.
+    source: Option<(Vec<f64>, Vec<f64>)>,
+    editing: bool,
+    error: Option<String>,
+}
+
+/// A typed list of coefficients: separated by spaces or semicolons (MATLAB's `[1 7 15 25]`),
+/// or by commas in English; a decimal comma is read in Portuguese.
+pub fn parse_coefficients(
+    text: &str,
+    lang: Lang,
+) -> Result<Vec<f64>, crate::app::field::FieldError> {
+    let inner = text.trim().trim_start_matches('[').trim_end_matches(']');
+    let separators: &[char] = match lang {
+        Lang::En => &[',', ';', ' ', '\t'],
+        Lang::Pt => &[';', ' ', '\t'],
+    };
+    let items: Vec<&str> = inner
+        .split(separators)
+        .filter(|t| !t.trim().is_empty())
+        .collect();
+    if items.is_empty() {
+        return Err(crate::app::field::FieldError::Empty);
+    }
+    items
+        .into_iter()
+        .map(crate::app::field::parse_number)
+        .collect()
+}
+
+/// The system's G(s) as num and den coefficients (descending powers), typed as in
+/// `tf(num, den)`: committing a pair replaces the poles, zeros and gain.
+fn coefficient_fields(ui: &mut Ui, session: &Session, system: &System, lang: Lang) -> Vec<Command> {
+    use crate::text::Localize;
+    let mut out = Vec::new();
+    let id = ui.make_persistent_id("typed coefficients");
+    let mut buffer: CoefficientBuffer = ui.data(|d| d.get_temp(id)).unwrap_or_default();
+    let current = session
+        .analysis
+        .tf
+        .as_ref()
+        .ok()
+        .map(|tf| (tf.num(), tf.den()));
+    if !buffer.editing && buffer.source != current {
+        if let Some((num, den)) = &current {
+            let list = |c: &[f64]| {
+                c.iter()
+                    .map(|x| lang.num(*x, 8))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            };
+            buffer.num = list(num);
+            buffer.den = list(den);
+        }
+        buffer.source = current;
+        buffer.error = None;
+    }
+    ui.label(crate::text::feedback::Loop::CoefficientsHelp.get(lang));
+    let mut commit = false;
+    for (label, text) in [("num", &mut buffer.num), ("den", &mut buffer.den)] {
+        ui.horizontal(|ui| {
+            let name = ui.label(label);
+            let response = ui
+                .add(egui::TextEdit::singleline(text).desired_width(180.0))
+                .labelled_by(name.id);
+            if response.has_focus() {
+                buffer.editing = true;
+            }
+            if response.lost_focus() {
+                commit = true;
+            }
+        });
+    }
+    if commit && buffer.editing {
+        buffer.editing = false;
+        let parsed = parse_coefficients(&buffer.num, lang)
+            .and_then(|n| parse_coefficients(&buffer.den, lang).map(|d| (n, d)));
+        match parsed {
+            Err(e) => buffer.error = Some(e.text(lang)),
+            Ok((num, den)) => match crate::lti::TransferFunction::from_coeffs(&num, &den) {
+                Err(e) => buffer.error = Some(e.text(lang)),
+                Ok(_) => match super::session::from_coefficients(system, &num, &den) {
+                    Some(s) if s.check().is_ok() && s.placement().is_ok() => {
+                        buffer.error = None;
+                        buffer.source = None;
+                        out.push(Command::SetCoefficients { num, den });
+                    }
+                    _ => {
+                        buffer.error = Some(
+                            crate::text::feedback::Loop::CoefficientsBeyond
+                                .get(lang)
+                                .to_string(),
+                        )
+                    }
+                },
+            },
+        }
+    }
+    if let Some(e) = &buffer.error {
+        ui.add(egui::Label::new(RichText::new(e).color(ui.visuals().error_fg_color)).wrap());
+    }
+    ui.data_mut(|d| d.insert_temp(id, buffer));
     out
 }
 

@@ -1,0 +1,230 @@
+//! The closed loop in the Design mode, through egui_kittest: G(s) typed as coefficients,
+//! the loop closed, a closed-loop pole dragged along its branch of the root locus (K and the
+//! closed-loop step follow), a spec region shaded, and K found for an overshoot.
+
+mod kit;
+
+use degrau::app::DegrauApp;
+use degrau::lti::locus::relative_residual;
+use eframe::egui::{self, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+
+/// A tall window, so the whole system panel (the loop's part is at its end) is on screen.
+fn harness() -> Harness<'static, DegrauApp> {
+    let mut h = Harness::builder()
+        .with_size([1500.0, 2600.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
+    h.run_steps(3);
+    h
+}
+
+fn click(h: &mut Harness<'_, DegrauApp>, label: &str) {
+    h.get_by_label(label).click();
+    h.run_steps(3);
+}
+
+/// Every closed-loop pole a root of den + Kp·num of the open loop.
+#[track_caller]
+fn assert_on_the_locus(h: &Harness<'_, DegrauApp>) {
+    let s = &h.state().design;
+    let kp = s.settings.kp;
+    let g = h.state().system().transfer_function().unwrap();
+    for p in &s.feedback.closed_poles {
+        let r = relative_residual(&g.num(), &g.den(), kp, *p);
+        assert!(r < 1e-9, "pole {p} at Kp {kp}: residual {r}");
+    }
+}
+
+#[test]
+fn dragging_a_closed_loop_pole_moves_k_and_the_closed_loop_step() {
+    let mut h = harness();
+    click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
+    let s = &h.state().design;
+    assert!(s.settings.closed);
+    assert_eq!(s.settings.kp, 1.0);
+    let den = s
+        .feedback
+        .closed
+        .as_ref()
+        .unwrap()
+        .tf
+        .as_ref()
+        .unwrap()
+        .den();
+    assert!((den[3] - 25.5).abs() < 1e-12, "the notes' FTMF: {den:?}");
+    let before = s.feedback.closed.as_ref().unwrap().curve.clone();
+    assert_on_the_locus(&h);
+    // The upper pole of the pair (−0.99 + 2.01j) is on branch 1: drag it up its branch.
+    let label = (1..=3)
+        .map(|i| format!("closed-loop pole {i}"))
+        .find(|l| {
+            h.get_all_by_label(l).next().is_some_and(|n| {
+                n.rect().center().y < h.get_by_label("s-plane").rect().center().y - 5.0
+            })
+        })
+        .expect("a closed-loop pole above the real axis");
+    kit::drag_by(&mut h, &label, Vec2::new(25.0, -60.0), 6);
+    let s = &h.state().design;
+    assert!(
+        s.settings.kp > 5.0,
+        "Kp followed the drag up the branch: {}",
+        s.settings.kp
+    );
+    assert_eq!(
+        h.state().system(),
+        &degrau::app::design::state::System::default(),
+        "the open loop stays"
+    );
+    assert_on_the_locus(&h);
+    let after = &s.feedback.closed.as_ref().unwrap().curve;
+    assert_ne!(&before, after, "the closed-loop step followed");
+    let info = s.feedback.closed.as_ref().unwrap().info.as_ref().unwrap();
+    let g = h.state().system().transfer_function().unwrap();
+    let dc = s.settings.kp * g.dc_gain() / (1.0 + s.settings.kp * g.dc_gain());
+    assert!(
+        (info.steady_state.unwrap() - 2.0 * dc).abs() < 1e-9,
+        "the closed loop's own final value"
+    );
+    // The Kp field shows the gain the drag set.
+    let kp_text = h
+        .get_all_by_role(egui::accesskit::Role::TextInput)
+        .find(|n| n.accesskit_node().label().as_deref() == Some("Kp"))
+        .and_then(|n| n.value())
+        .unwrap();
+    let shown: f64 = kp_text.parse().unwrap();
+    assert!(
+        (shown - s.settings.kp).abs() <= 1e-5 * s.settings.kp,
+        "{kp_text}"
+    );
+}
+
+#[test]
+fn an_overshoot_spec_shades_its_region() {
+    let mut h = harness();
+    let filled = |h: &Harness<'_, DegrauApp>| {
+        h.output()
+            .shapes
+            .iter()
+            .filter(|c| matches!(&c.shape, egui::Shape::Path(p) if p.closed && p.points.len() == 3 && p.fill != egui::Color32::TRANSPARENT))
+            .count()
+    };
+    let none = filled(&h);
+    click(&mut h, "Specs");
+    click(&mut h, "overshoot");
+    assert_eq!(h.state().design.settings.specs.overshoot, Some(10.0));
+    assert_eq!(filled(&h), none + 2, "two wedges where ζ < ζ(10 %)");
+    kit::type_number(&mut h, "Mp ≤", 0, "5");
+    assert_eq!(h.state().design.settings.specs.overshoot, Some(5.0));
+}
+
+#[test]
+fn typed_coefficients_and_k_found_for_an_overshoot() {
+    let mut h = harness();
+    kit::type_number(&mut h, "num", 0, "1");
+    kit::type_number(&mut h, "den", 0, "1 2 0");
+    let g = h.state().system().transfer_function().unwrap();
+    assert_eq!(
+        g.den(),
+        vec![1.0, 2.0, 0.0],
+        "K/(s(s+2)) typed as tf(num, den)"
+    );
+    // Switching what the gain means keeps the system.
+    let zpk = h.state().system().clone();
+    click(&mut h, "static G(0)");
+    click(&mut h, "k (MATLAB's zpk)");
+    assert_eq!(
+        h.state().system().transfer_function(),
+        zpk.transfer_function()
+    );
+    click(&mut h, "Specs");
+    click(&mut h, "overshoot");
+    click(&mut h, "Find K");
+    let s = &h.state().design;
+    assert_eq!(format!("{:.2}", s.settings.kp), "2.86");
+    assert!(s.settings.closed, "the answer's loop is shown");
+    h.get_by_label_contains("Kp = 2.8615");
+    let os = s
+        .feedback
+        .closed
+        .as_ref()
+        .unwrap()
+        .info
+        .as_ref()
+        .unwrap()
+        .overshoot
+        .unwrap();
+    assert!((os - 10.0).abs() < 1e-6, "{os}");
+    assert_on_the_locus(&h);
+}
+
+#[test]
+fn the_locus_is_drawn_on_request_and_reads_k() {
+    let mut h = harness();
+    assert!(
+        h.state().design.feedback.locus.is_none(),
+        "no locus until asked"
+    );
+    click(&mut h, "Root locus");
+    let s = &h.state().design;
+    let locus = s.feedback.locus.as_ref().expect("the locus");
+    assert!(
+        (locus.crossings[0].k - 160.0).abs() < 1e-8,
+        "Routh: K = 160"
+    );
+    assert_eq!(s.feedback.branches.len(), 3);
+    // Hovering the locus reads K there.
+    let plane = h.get_by_label("s-plane").rect();
+    let far = locus.points.iter().find(|p| p.k > 50.0).unwrap().clone();
+    let upper = *far.roots.iter().find(|r| r.im > 0.0).unwrap();
+    let center = plane.center();
+    let view = h.state().saved.design.splane.view.unwrap();
+    let at = egui::pos2(
+        center.x + ((upper.re - view.center_re) * view.pixels_per_unit) as f32,
+        center.y - ((upper.im - view.center_im) * view.pixels_per_unit) as f32,
+    );
+    h.hover_at(at);
+    h.run_steps(2);
+    let readout = h.state().design.readout.clone().unwrap_or_default();
+    assert!(readout.starts_with("K = "), "{readout}");
+    let k: f64 = readout[4..].split(' ').next().unwrap().parse().unwrap();
+    assert!((k - far.k).abs() < 0.2 * far.k, "{k} vs {}", far.k);
+    click(&mut h, "complementary (K < 0)");
+    assert!(!h.state().design.feedback.complementary_branches.is_empty());
+}
+
+#[test]
+fn the_formulas_sit_beside_the_exact_metrics_and_the_inverse_places_a_pair() {
+    let mut h = harness();
+    click(&mut h, "Second-order formulas vs the exact response");
+    // The notes' system: its dominant pair −1 ± 2j (ζ = 0.447, ωn = 2.236).
+    let f = h
+        .state()
+        .design
+        .feedback
+        .formulas
+        .clone()
+        .expect("a dominant pair");
+    assert!((f.pair.wn - 5f64.sqrt()).abs() < 1e-12);
+    h.get_by_label("t_s ≈ 4/(ζωn)");
+    // Mp = 10 % and t_s = 4 s (the defaults): ζ = 0.5912, ωn = 1.6918; placed in one click.
+    click(&mut h, "Place on the s-plane");
+    let g = h.state().system().transfer_function().unwrap();
+    let zeta = degrau::lti::feedback::SecondOrder::damping_for_overshoot(10.0).unwrap();
+    let wn = 4.0 / (zeta * 4.0);
+    let den = g.den();
+    assert!(
+        (den[1] - 2.0 * zeta * wn).abs() < 1e-12 && (den[2] - wn * wn).abs() < 1e-12,
+        "{den:?}"
+    );
+    // The exact overshoot of the canonical pair is the spec, to the formula's exactness.
+    let f = h.state().design.feedback.formulas.clone().unwrap();
+    assert!((f.overshoot.exact.unwrap() - 10.0).abs() < 1e-6);
+}
+
+#[test]
+fn a_dead_time_says_it_needs_an_approximant() {
+    let mut h = harness();
+    kit::type_number(&mut h, "Dead time θ", 0, "0.5");
+    h.get_by_label_contains("cannot be closed exactly");
+}
