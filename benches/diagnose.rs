@@ -88,9 +88,9 @@ fn extruder() {
         eprintln!("extruder record absent: skipped");
         return;
     };
-    let Some((data, s, guess)) = common::extruder(&path, "P1") else {
-        eprintln!("extruder record unreadable: skipped");
-        return;
+    let (data, s, guess) = match common::extruder(&path, "P1") {
+        Ok(prepared) => prepared,
+        Err(e) => return eprintln!("extruder record unreadable ({e}): skipped"),
     };
     let clock = Instant::now();
     let held = (!s.free_offset).then(|| guess);

@@ -131,16 +131,23 @@ pub fn extruder_path() -> Option<std::path::PathBuf> {
     path.exists().then_some(path)
 }
 
-/// A real record loaded and prepared as the CLI does (columns detected, driven by its
-/// measured input): its samples, the structure `code` and the automatic guess.
+/// The extruder record loaded and prepared as the CLI does with `--time Timestamp --output
+/// Data --input entrada` (driven by its measured input): its samples, the structure `code`
+/// and the automatic guess; a message when it cannot be read.
 #[allow(dead_code)]
-pub fn extruder(path: &std::path::Path, code: &str) -> Option<(FitData, Structure, Values)> {
+pub fn extruder(
+    path: &std::path::Path,
+    code: &str,
+) -> Result<(FitData, Structure, Values), String> {
     use degrau::ident::data::{LoadOptions, load_file};
     use degrau::ident::experiment::Experiment;
-    let test = load_file(path, &LoadOptions::default()).ok()?;
-    let experiment = Experiment::new(&test, None, None, None).ok()?;
-    let data = experiment.fit_data(&test).ok()?;
-    let s = experiment.structure(code, false, &data).ok()?;
+    let options = LoadOptions::from_text("Timestamp", "Data", "entrada", None, 0);
+    let test = load_file(path, &options).map_err(|e| e.to_string())?;
+    let experiment = Experiment::new(&test, None, None, None).map_err(|e| e.to_string())?;
+    let data = experiment.fit_data(&test).map_err(|e| e.to_string())?;
+    let s = experiment
+        .structure(code, false, &data)
+        .map_err(|e| e.to_string())?;
     let guess = experiment.guess(s, &data);
-    Some((data, s, guess))
+    Ok((data, s, guess))
 }

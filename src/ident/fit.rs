@@ -41,6 +41,10 @@ use super::stats::student_t_quantile;
 /// Samples per piece of the sums over the record.
 pub const CHUNK: usize = 8192;
 
+/// The longest record whose residuals a local search keeps between its cost and its
+/// Jacobian (two vectors of its length); a longer one computes them again, a piece at a time.
+const KEEP: usize = 16 * CHUNK;
+
 /// The measured test as the fit sees it (already windowed and filtered): the output at each
 /// instant and the input that drove it.
 #[derive(Debug, Clone, PartialEq)]
@@ -369,26 +373,17 @@ fn fit_on(
     let searched = search.as_ref().unwrap_or(&problem);
     let starts = searched.starts(&x0, options.starts.max(1), options.seed);
     let n = data.y.len() as f64;
-    let mut best: Option<Run> = None;
+    let mut runs: Vec<Run> = Vec::new();
     for (k, start) in starts.iter().enumerate() {
         if observer.cancelled() {
             break;
         }
-        let best_cost = best.as_ref().map_or(f64::INFINITY, |b| b.sse / n);
+        let best_cost = runs.iter().map(|r| r.sse / n).fold(f64::INFINITY, f64::min);
         let mut report = progress(&problem, observer, (k, starts.len()), best_cost);
-        let Some(mut run) = searched.run(options.method, start, options, &mut report) else {
-            continue;
-        };
-        // Only a run that could win needs the (costly) alias check: see [`Run::better_than`].
-        if best.as_ref().is_none_or(|b| run.sse < b.sse || b.aliased) {
-            run.aliased = problem.alias(&run.x).is_some();
-            if best.as_ref().is_none_or(|b| run.better_than(b)) {
-                best = Some(run);
-            }
-        }
+        runs.extend(searched.run(options.method, start, options, &mut report));
     }
     let cancelled = observer.cancelled();
-    let mut run = best.unwrap_or_else(|| Run {
+    let mut run = best_run(runs, &problem).unwrap_or_else(|| Run {
         x: x0.clone(),
         sse: problem.sse(&x0, None).unwrap_or(f64::INFINITY),
         iterations: 0,
@@ -400,7 +395,9 @@ fn fit_on(
         Samples::Reduced => searched,
         Samples::Every => &problem,
     };
-    if search.is_some() && end_on == Samples::Every && run.termination != Termination::Cancelled {
+    let refined =
+        search.is_some() && end_on == Samples::Every && run.termination != Termination::Cancelled;
+    if refined {
         let best_cost = run.sse / n;
         let last = starts.len().saturating_sub(1);
         let mut report = progress(&problem, observer, (last, starts.len()), best_cost);
@@ -408,10 +405,25 @@ fn fit_on(
     }
     if cancelled || observer.cancelled() {
         run.termination = Termination::Cancelled;
-    } else if options.method == Method::LevenbergMarquardt {
+    } else if options.method == Method::LevenbergMarquardt && !refined {
         ending.polish(&mut run);
     }
     ending.report(run, options, starts.len(), &problem)
+}
+
+/// The run of lowest cost that is not an alias, else the lowest: a run without alias beats
+/// any aliased one, since an alias can match the samples better than the true optimum (it
+/// does on the LECI data) while being wrong between them. The (costly) alias check runs on
+/// the runs in order of cost until one passes.
+fn best_run(mut runs: Vec<Run>, problem: &Problem) -> Option<Run> {
+    runs.sort_by(|a, b| a.sse.total_cmp(&b.sse));
+    let clean = runs.iter().position(|r| problem.alias(&r.x).is_none());
+    let chosen = clean.unwrap_or(0);
+    (chosen < runs.len()).then(|| {
+        let mut run = runs.swap_remove(chosen);
+        run.aliased = clean.is_none();
+        run
+    })
 }
 
 /// The progress callback of start `k` of `starts`: reports each iteration to `observer`
@@ -475,18 +487,6 @@ struct Run {
     path: Vec<Vec<f64>>,
     /// Whether the result oscillates faster than the sampling shows (see [`alias_warning`]).
     aliased: bool,
-}
-
-impl Run {
-    /// A run without alias beats any aliased one: an alias can match the samples better
-    /// than the true optimum (it does on the LECI data) while being wrong between them.
-    fn better_than(&self, other: &Run) -> bool {
-        match (self.aliased, other.aliased) {
-            (false, true) => true,
-            (true, false) => false,
-            _ => self.sse < other.sse,
-        }
-    }
 }
 
 /// When Levenberg–Marquardt stops.
@@ -766,8 +766,8 @@ impl Problem {
     ) -> Option<Run> {
         let n = self.data.y.len();
         let m = x.len();
-        // A record of one piece keeps its residuals between the cost and the Jacobian.
-        let keep = n <= CHUNK;
+        // A record of up to KEEP samples keeps its residuals between the cost and the Jacobian.
+        let keep = n <= KEEP;
         let mut r = vec![0.0; if keep { n } else { 0 }];
         let mut trial = r.clone();
         let mut x = x.to_vec();
@@ -884,15 +884,22 @@ impl Problem {
         }
     }
 
-    /// Continues `run` (found on a reduced record) on this problem's samples: its cost,
-    /// termination and path become this record's.
+    /// Continues `run` (found on a reduced record) on this problem's samples until its steps
+    /// are negligible (Levenberg–Marquardt: the polish included): its cost, termination and
+    /// path become this record's.
     fn refine(
         &self,
         run: &mut Run,
         options: &FitOptions,
         report: &mut dyn FnMut(usize, f64, &[f64]) -> bool,
     ) {
-        match self.run(options.method, &run.x, options, report) {
+        let fine = match options.method {
+            Method::LevenbergMarquardt => {
+                self.levenberg_marquardt(&run.x, options.max_iterations, Stop::StepsSettle, report)
+            }
+            Method::NelderMead => self.run(options.method, &run.x, options, report),
+        };
+        match fine {
             Some(fine) => {
                 run.iterations += fine.iterations;
                 run.path.extend(fine.path.into_iter().skip(1));

@@ -360,6 +360,10 @@ impl StepResponse {
         }
         let scale = 1.0 / self.amplitude;
         for c in &self.clusters {
+            if c.spread.is_none() && c.coeffs.len() == 1 {
+                superpose_simple(c, self.delay, scale, steps, times, out);
+                continue;
+            }
             let mut state = Superposition::new(c, self.delay, scale);
             for (o, &t) in out.iter_mut().zip(times) {
                 state.advance_to(t, steps);
@@ -681,6 +685,76 @@ impl<'a> Superposition<'a> {
             None => &self.cluster.coeffs,
         };
         self.cluster.weight * dot(d, &self.state).re
+    }
+}
+
+/// [`Superposition`] for a simple pole c (its contribution q·e^{cτ}), written out: the running
+/// sum is one complex number, advanced by e^{ch} from the cached advance (nothing for the
+/// pole at the origin of a step), so an instant costs a few multiplications.
+fn superpose_simple(
+    c: &Cluster,
+    delay: f64,
+    scale: f64,
+    steps: &[(f64, f64)],
+    times: &[f64],
+    out: &mut [f64],
+) {
+    let zero = C64::new(0.0, 0.0);
+    let d = c.coeffs[0] * c.weight;
+    let constant = c.center == zero;
+    let mut sum = zero;
+    let mut at = f64::NEG_INFINITY;
+    let mut added = 0;
+    let mut advance = Advance::new(c.center);
+    for (o, &t) in out.iter_mut().zip(times) {
+        while let Some(&(s, a)) = steps.get(added) {
+            let start = s + delay;
+            if start > t {
+                break;
+            }
+            if added > 0 && start > at && !constant {
+                sum *= advance.over(start - at);
+            }
+            at = at.max(start);
+            sum += a * scale;
+            added += 1;
+        }
+        if added == 0 {
+            continue;
+        }
+        if t > at && !constant {
+            sum *= advance.over(t - at);
+        }
+        at = at.max(t);
+        *o += (d * sum).re;
+    }
+}
+
+/// e^{ch} for the spacings h of a walk, kept for the last distinct one (see [`SAME_ADVANCE`]).
+struct Advance {
+    center: C64,
+    h: f64,
+    exp: C64,
+}
+
+impl Advance {
+    fn new(center: C64) -> Self {
+        Self {
+            center,
+            h: f64::NAN,
+            exp: C64::new(1.0, 0.0),
+        }
+    }
+
+    fn over(&mut self, h: f64) -> C64 {
+        let delta = h - self.h;
+        if delta.abs() <= SAME_ADVANCE * h {
+            let z = self.center * delta;
+            return self.exp * (C64::new(1.0, 0.0) + z * (1.0 + z * (0.5 + z / 6.0)));
+        }
+        self.h = h;
+        self.exp = (self.center * h).exp();
+        self.exp
     }
 }
 
