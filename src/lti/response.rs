@@ -748,9 +748,14 @@ impl Advance {
 
     fn over(&mut self, h: f64) -> C64 {
         let delta = h - self.h;
+        if delta == 0.0 {
+            return self.exp;
+        }
         if delta.abs() <= SAME_ADVANCE * h {
+            // e^{cδ} = 1 + z + z²/2 + O(z³), |z| ≤ 1e-9·|ch|: exact to rounding while e^{ch}
+            // is a normal number.
             let z = self.center * delta;
-            return self.exp * (C64::new(1.0, 0.0) + z * (1.0 + z * (0.5 + z / 6.0)));
+            return self.exp * (C64::new(1.0, 0.0) + z * (1.0 + z * 0.5));
         }
         self.h = h;
         self.exp = (self.center * h).exp();
