@@ -22,6 +22,13 @@
 //! A multi-start option (on by default) runs LM from the guess and from spread-out starts
 //! and keeps the best: the LECI notes show a single start landing on a spurious alias.
 //!
+//! On a long record (more than [`reduce::MIN_SAMPLES`] samples) the starts run on its
+//! reduction ([`reduce`]: every sample just after each input change, block means of doubling
+//! length as the response settles, weighted by the samples they stand for), and the best of
+//! them is refined on every sample, which the report and its intervals use: an 80,000-sample
+//! P1D costs about one local fit on the whole record. [`search_fit`] stops before that last
+//! stage, for comparing many candidates of one record (the diagnosis's extension search).
+//!
 //! The report follows MATLAB: MSE, RMSE, NRMSE fit % as `compare` (100·(1 − ‖y − ŷ‖/‖y − ȳ‖)),
 //! AIC as `aic` (N·ln MSE + 2p + N·(ln 2π + 1)), and 95 % intervals from the Jacobian at the
 //! optimum (s² (JᵀJ)⁻¹ with s² = SSE/(N − p), Student-t quantile), with warnings for a
