@@ -93,7 +93,7 @@ fn extruder() {
         Err(e) => return eprintln!("extruder record unreadable ({e}): skipped"),
     };
     let clock = Instant::now();
-    let held = (!s.free_offset).then(|| guess);
+    let held = (!s.free_offset).then_some(guess);
     match diagnose(&data, s, held, &DiagnoseOptions::default()) {
         Ok(report) => {
             let chain: Vec<&str> = report.steps.iter().map(|s| s.cause.id()).collect();
