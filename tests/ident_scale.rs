@@ -225,3 +225,63 @@ fn the_diagnosis_names_the_same_causes_at_any_scale() {
         assert!(relative(t, tp1) < 1e-6, "{scale:?}: Tp1 {t} vs {tp1}");
     }
 }
+
+/// A long record (12,000 samples, so the search runs on its reduction) driven by a measured
+/// input that steps four times, at output scale `ky`, time scale `kt` and input scale `kdu`:
+/// the P1D of [`record_of`] with ±0.02 noise.
+fn long_record((ky, kt, kdu): (f64, f64, f64)) -> FitData {
+    use degrau::ident::excitation::Hold;
+    let truth = values(&[
+        (Param::Kp, 1.5),
+        (Param::Tp1, 4.0),
+        (Param::Td, 1.2),
+        (Param::Y0, 30.0),
+    ]);
+    let times: Vec<f64> = (0..12_000).map(|k| 0.01 * k as f64).collect();
+    let u: Vec<f64> = times
+        .iter()
+        .map(|&t| match t {
+            t if t < 5.0 => 2.0,
+            t if t < 35.0 => 4.0,
+            t if t < 65.0 => 1.0,
+            t if t < 90.0 => 3.5,
+            _ => 2.5,
+        })
+        .collect();
+    let input = Excitation::measured(&times, &u, None, Hold::Zoh).unwrap();
+    let y = Model::new(Structure::parse("P1D").unwrap(), truth)
+        .simulate(&input, &times)
+        .unwrap();
+    let scaled_u: Vec<f64> = u.iter().map(|u| u * kdu).collect();
+    let scaled_t: Vec<f64> = times.iter().map(|t| t * kt).collect();
+    FitData {
+        input: Excitation::measured(&scaled_t, &scaled_u, None, Hold::Zoh).unwrap(),
+        times: scaled_t,
+        y: y.iter()
+            .zip(noise(times.len()))
+            .map(|(y, e)| (y + 0.02 * e) * ky)
+            .collect(),
+    }
+}
+
+#[test]
+fn a_long_record_searched_on_its_reduction_fits_the_same_at_any_scale() {
+    let unit_data = long_record(SCALES[0]);
+    assert!(degrau::ident::reduce::reduce(&unit_data.times, &unit_data.input).is_some());
+    let unit = fit_p1d(&unit_data);
+    for (p, x) in [(Param::Kp, 1.5), (Param::Tp1, 4.0), (Param::Td, 1.2)] {
+        let (lo, hi) = unit.interval(p).unwrap();
+        assert!(lo < x && x < hi, "{p:?}: [{lo}, {hi}] misses {x}");
+    }
+    assert_eq!(unit.n, 12_000);
+    for scale @ (ky, kt, kdu) in [SCALES[1], SCALES[4]] {
+        let r = fit_p1d(&long_record(scale));
+        for p in [Param::Tp1, Param::Td] {
+            let e = relative(r.model.get(p) / kt, unit.model.get(p));
+            assert!(e < 1e-7, "{p:?} off by {e:e} at {scale:?}");
+        }
+        let kp = r.model.get(Param::Kp) * kdu / ky;
+        assert!(relative(kp, unit.model.get(Param::Kp)) < 1e-7, "{scale:?}");
+        assert!((r.fit_percent - unit.fit_percent).abs() < 1e-6, "{scale:?}");
+    }
+}

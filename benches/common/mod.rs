@@ -35,3 +35,119 @@ pub fn noisy_800(
         input: setup,
     }
 }
+
+/// The record's true process (P1D): Kp, Tp1, Td, Y0.
+#[allow(dead_code)]
+pub const LOGGER_TRUTH: [(Param, f64); 4] = [
+    (Param::Kp, 1.5),
+    (Param::Tp1, 4.0),
+    (Param::Td, 0.75),
+    (Param::Y0, 30.0),
+];
+
+/// A 1 kHz logger for 80 s (80,000 samples): a measured input that steps 2 → 4 → 1 → 3.5 →
+/// 2.5 (at 5, 25, 45 and 62 s) into the P1D of [`LOGGER_TRUTH`], with ±0.02 uniform noise
+/// (about 1 % of the effect of a step).
+#[allow(dead_code)]
+pub fn logger_80k() -> FitData {
+    use degrau::ident::excitation::Hold;
+    let times: Vec<f64> = (0..80_000).map(|k| 1e-3 * k as f64).collect();
+    let levels = [(5.0, 4.0), (25.0, 1.0), (45.0, 3.5), (62.0, 2.5)];
+    let u: Vec<f64> = times
+        .iter()
+        .map(|&t| {
+            levels
+                .iter()
+                .take_while(|(s, _)| *s <= t)
+                .last()
+                .map_or(2.0, |l| l.1)
+        })
+        .collect();
+    let input = Excitation::measured(&times, &u, None, Hold::Zoh).expect("an input that steps");
+    let s = Structure::parse("P1D").expect("a valid code");
+    let mut v = Values::default();
+    for (p, x) in LOGGER_TRUTH {
+        v.set(p, x);
+    }
+    let mut y = Model::new(s, v)
+        .simulate(&input, &times)
+        .expect("a valid model");
+    let mut state = 2026u64;
+    for v in y.iter_mut() {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        *v += 0.04 * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
+    }
+    FitData { times, y, input }
+}
+
+/// The input column of a record driven by its measured input, rebuilt from its steps.
+#[allow(dead_code)]
+pub fn input_column(data: &FitData) -> Vec<f64> {
+    data.times
+        .iter()
+        .map(|&t| data.input.u0 + data.input.deviation_at(t))
+        .collect()
+}
+
+/// scipy's `least_squares` (one start, in-process) on `data` from `guess` (Kp, Tp1, Td,
+/// Y0), by `benches/scipy_p1d.py` on a CSV written under target/: its seconds and its
+/// parameters, or `None` when python3 with numpy and scipy is not there.
+#[allow(dead_code)]
+pub fn scipy_p1d(data: &FitData, guess: [f64; 4]) -> Option<(f64, String)> {
+    use std::fmt::Write as _;
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target");
+    let path = dir.join("bench_p1d_record.csv");
+    let mut text = String::from("t,u,y\n");
+    for ((t, u), y) in data.times.iter().zip(input_column(data)).zip(&data.y) {
+        let _ = writeln!(text, "{t},{u},{y}");
+    }
+    std::fs::write(&path, text).ok()?;
+    let script = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/scipy_p1d.py");
+    let mut command = std::process::Command::new("python3");
+    command.arg(script).arg(&path);
+    command.args(guess.iter().map(|g| g.to_string()));
+    let output = command.output().ok()?;
+    if !output.status.success() {
+        eprintln!(
+            "scipy comparison skipped: {}",
+            String::from_utf8_lossy(&output.stderr).trim()
+        );
+        return None;
+    }
+    let text = String::from_utf8_lossy(&output.stdout).into_owned();
+    let seconds = text
+        .lines()
+        .find_map(|l| l.strip_prefix("seconds ")?.trim().parse().ok())?;
+    Some((seconds, text))
+}
+
+/// The extruder record of `../shared/data/real`, when present.
+#[allow(dead_code)]
+pub fn extruder_path() -> Option<std::path::PathBuf> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/data/real/felypemaciel_temp_control_serial_output.csv");
+    path.exists().then_some(path)
+}
+
+/// The extruder record loaded and prepared as the CLI does with `--time Timestamp --output
+/// Data --input entrada` (driven by its measured input): its samples, the structure `code`
+/// and the automatic guess; a message when it cannot be read.
+#[allow(dead_code)]
+pub fn extruder(
+    path: &std::path::Path,
+    code: &str,
+) -> Result<(FitData, Structure, Values), String> {
+    use degrau::ident::data::{LoadOptions, load_file};
+    use degrau::ident::experiment::Experiment;
+    let options = LoadOptions::from_text("Timestamp", "Data", "entrada", None, 0);
+    let test = load_file(path, &options).map_err(|e| e.to_string())?;
+    let experiment = Experiment::new(&test, None, None, None).map_err(|e| e.to_string())?;
+    let data = experiment.fit_data(&test).map_err(|e| e.to_string())?;
+    let s = experiment
+        .structure(code, false, &data)
+        .map_err(|e| e.to_string())?;
+    let guess = experiment.guess(s, &data);
+    Ok((data, s, guess))
+}

@@ -21,7 +21,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::fit::{FitData, FitError, FitOptions, FitReport, fit};
+use super::fit::{FitData, FitError, FitOptions, FitReport, fit, search_fit};
 use super::guess::{auto_guess, features};
 use super::models::{Param, Structure, Values};
 use super::residuals::{self, ResidualAnalysis};
@@ -399,6 +399,26 @@ fn best_extension(data: &FitData, current: &FitReport) -> Option<(Extension, Fit
         })
         .filter(|(_, r)| bic(r).is_finite())
         .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
+        .and_then(|winner| on_every_sample(data, winner))
+}
+
+/// Scale (issue 10): on a long record the candidates are fitted on its reduction
+/// ([`search_fit`], statistics standing for the whole record's) and only the chosen one is
+/// refitted on every sample, from its optimum; a record [`super::reduce`] leaves as it is
+/// keeps its fit.
+fn on_every_sample(
+    data: &FitData,
+    (extension, r): (Extension, FitReport),
+) -> Option<(Extension, FitReport)> {
+    if super::reduce::reduce(&data.times, &data.input).is_none() {
+        return Some((extension, r));
+    }
+    let options = FitOptions {
+        starts: 1,
+        ..FitOptions::default()
+    };
+    let full = fit(data, r.model.structure, r.model.values, &options, &mut ()).ok()?;
+    Some((extension, full))
 }
 
 /// Fits the extended structure from a few warm starts and its automatic guess; the best
@@ -417,7 +437,7 @@ fn refit(
     starts.extend(fresh_starts(data, current, extension, s));
     starts
         .into_iter()
-        .filter_map(|g| fit(data, s, g, &options, &mut ()).ok())
+        .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
         .filter(|r| {
             !r.warnings
                 .iter()

@@ -22,21 +22,35 @@
 //! A multi-start option (on by default) runs LM from the guess and from spread-out starts
 //! and keeps the best: the LECI notes show a single start landing on a spurious alias.
 //!
+//! On a long record (more than [`reduce::MIN_SAMPLES`] samples) the starts run on its
+//! reduction ([`reduce`]: every sample just after each input change, block means of doubling
+//! length as the response settles, weighted by the samples they stand for), and the best of
+//! them is refined on every sample, which the report and its intervals use: an 80,000-sample
+//! P1D costs about one local fit on the whole record. [`search_fit`] stops before that last
+//! stage, for comparing many candidates of one record (the diagnosis's extension search).
+//!
 //! The report follows MATLAB: MSE, RMSE, NRMSE fit % as `compare` (100·(1 − ‖y − ŷ‖/‖y − ȳ‖)),
 //! AIC as `aic` (N·ln MSE + 2p + N·(ln 2π + 1)), and 95 % intervals from the Jacobian at the
 //! optimum (s² (JᵀJ)⁻¹ with s² = SSE/(N − p), Student-t quantile), with warnings for a
 //! parameter at a bound, Zeta ≥ 1 in an underdamped model, and an alias.
+
+use std::ops::Add;
 
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
 use super::excitation::Excitation;
 use super::models::{Model, ModelError, Param, Simulator, Structure, Values};
+use super::reduce::{self, Reduction};
 use super::scale::{Scale, Unrepresentable};
 use super::stats::student_t_quantile;
 
 /// Samples per piece of the sums over the record.
 pub const CHUNK: usize = 8192;
+
+/// The longest record whose residuals a local search keeps between its cost and its
+/// Jacobian (two vectors of its length); a longer one computes them again, a piece at a time.
+const KEEP: usize = 16 * CHUNK;
 
 /// The measured test as the fit sees it (already windowed and filtered): the output at each
 /// instant and the input that drove it.
@@ -304,6 +318,11 @@ fn bounds_with(p: Param, ts: f64, duration: f64, lead: f64) -> (f64, f64) {
 }
 
 /// Fits `structure` to `data` starting from `guess`.
+///
+/// On a long record the starts run on its reduction ([`reduce`]: every sample after each
+/// input change, fewer as the response settles, each weighted by the samples it stands
+/// for); the best of them is then refined on every sample, which the report, its
+/// statistics and its intervals use.
 pub fn fit(
     data: &FitData,
     structure: Structure,
@@ -311,8 +330,41 @@ pub fn fit(
     options: &FitOptions,
     observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
+    fit_on(data, structure, guess, options, observer, Samples::Every)
+}
+
+/// [`fit`] without its last stage on a long record: the best of the starts on the reduced
+/// record, its statistics (n, MSE, fit %, AIC, intervals) estimated from the weighted
+/// samples, which stand for the whole record's. For comparing many candidate fits of one
+/// record (the diagnosis's extension search) before fitting the chosen one on every
+/// sample; on a record [`reduce`] leaves as it is, the same as [`fit`].
+pub fn search_fit(
+    data: &FitData,
+    structure: Structure,
+    guess: Values,
+    options: &FitOptions,
+    observer: &mut dyn FitObserver,
+) -> Result<FitReport, FitError> {
+    fit_on(data, structure, guess, options, observer, Samples::Reduced)
+}
+
+/// Which samples a fit ends on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Samples {
+    Every,
+    Reduced,
+}
+
+fn fit_on(
+    data: &FitData,
+    structure: Structure,
+    guess: Values,
+    options: &FitOptions,
+    observer: &mut dyn FitObserver,
+    end_on: Samples,
+) -> Result<FitReport, FitError> {
     validate(data, &structure)?;
-    let problem = Problem::new(data, structure, guess)?;
+    let mut problem = Problem::new(data, structure, guess)?;
     let x0 = problem.clamp(problem.fixed.vector(&problem.params));
     if !problem.sse(&x0, None).is_ok_and(f64::is_finite) {
         return Err(match problem.model(&x0).transfer_function() {
@@ -320,49 +372,25 @@ pub fn fit(
             Ok(_) => FitError::NonFiniteCost,
         });
     }
-    let starts = problem.starts(&x0, options.starts.max(1), options.seed);
+    let reduction = reduce::reduce(&problem.data.times, &problem.data.input);
+    if reduction.is_some() {
+        problem.alias_span = Some(reduce::MIN_SAMPLES);
+    }
+    let search = reduction.as_ref().map(|r| problem.restricted(r));
+    let searched = search.as_ref().unwrap_or(&problem);
+    let starts = searched.starts(&x0, options.starts.max(1), options.seed);
     let n = data.y.len() as f64;
-    let mut best: Option<Run> = None;
+    let mut runs: Vec<Run> = Vec::new();
     for (k, start) in starts.iter().enumerate() {
         if observer.cancelled() {
             break;
         }
-        let best_cost = best.as_ref().map_or(f64::INFINITY, |b| b.sse / n);
-        let mut report = |iteration: usize, sse: f64, x: &[f64]| {
-            if let Ok(model) = problem.model_out(x) {
-                observer.progress(&Progress {
-                    start: k,
-                    starts: starts.len(),
-                    iteration,
-                    cost: problem.units.mse_out(sse / n),
-                    best_cost: problem.units.mse_out(best_cost.min(sse / n)),
-                    model,
-                });
-            }
-            observer.cancelled()
-        };
-        let run = match options.method {
-            Method::LevenbergMarquardt => problem.levenberg_marquardt(
-                start,
-                options.max_iterations,
-                Stop::CostSettles,
-                &mut report,
-            ),
-            Method::NelderMead => {
-                problem.nelder_mead(start, options.max_iterations * 10, &mut report)
-            }
-        };
-        let Some(mut run) = run else { continue };
-        // Only a run that could win needs the (costly) alias check: see [`Run::better_than`].
-        if best.as_ref().is_none_or(|b| run.sse < b.sse || b.aliased) {
-            run.aliased = problem.alias(&run.x).is_some();
-            if best.as_ref().is_none_or(|b| run.better_than(b)) {
-                best = Some(run);
-            }
-        }
+        let best_cost = runs.iter().map(|r| r.sse / n).fold(f64::INFINITY, f64::min);
+        let mut report = progress(&problem, observer, (k, starts.len()), best_cost);
+        runs.extend(searched.run(options.method, start, options, &mut report));
     }
     let cancelled = observer.cancelled();
-    let mut run = best.unwrap_or_else(|| Run {
+    let mut run = best_run(runs, &problem).unwrap_or_else(|| Run {
         x: x0.clone(),
         sse: problem.sse(&x0, None).unwrap_or(f64::INFINITY),
         iterations: 0,
@@ -370,12 +398,63 @@ pub fn fit(
         path: vec![x0.clone()],
         aliased: false,
     });
-    if cancelled {
-        run.termination = Termination::Cancelled;
-    } else if options.method == Method::LevenbergMarquardt {
-        problem.polish(&mut run);
+    let ending = match end_on {
+        Samples::Reduced => searched,
+        Samples::Every => &problem,
+    };
+    let refined =
+        search.is_some() && end_on == Samples::Every && run.termination != Termination::Cancelled;
+    if refined {
+        let best_cost = run.sse / n;
+        let last = starts.len().saturating_sub(1);
+        let mut report = progress(&problem, observer, (last, starts.len()), best_cost);
+        problem.refine(&mut run, options, &mut report);
     }
-    problem.report(run, options, starts.len())
+    if cancelled || observer.cancelled() {
+        run.termination = Termination::Cancelled;
+    } else if options.method == Method::LevenbergMarquardt && !refined {
+        ending.polish(&mut run);
+    }
+    ending.report(run, options, starts.len(), &problem)
+}
+
+/// The run of lowest cost that is not an alias, else the lowest: a run without alias beats
+/// any aliased one, since an alias can match the samples better than the true optimum (it
+/// does on the LECI data) while being wrong between them. The (costly) alias check runs on
+/// the runs in order of cost until one passes.
+fn best_run(mut runs: Vec<Run>, problem: &Problem) -> Option<Run> {
+    runs.sort_by(|a, b| a.sse.total_cmp(&b.sse));
+    let clean = runs.iter().position(|r| problem.alias(&r.x).is_none());
+    let chosen = clean.unwrap_or(0);
+    (chosen < runs.len()).then(|| {
+        let mut run = runs.swap_remove(chosen);
+        run.aliased = clean.is_none();
+        run
+    })
+}
+
+/// The progress callback of start `k` of `starts`: reports each iteration to `observer`
+/// (costs as MSE over the record's samples) and says whether to cancel.
+fn progress<'a>(
+    problem: &'a Problem,
+    observer: &'a mut dyn FitObserver,
+    (k, starts): (usize, usize),
+    best_cost: f64,
+) -> impl FnMut(usize, f64, &[f64]) -> bool + 'a {
+    let n = problem.data.y.len() as f64;
+    move |iteration: usize, sse: f64, x: &[f64]| {
+        if let Ok(model) = problem.model_out(x) {
+            observer.progress(&Progress {
+                start: k,
+                starts,
+                iteration,
+                cost: problem.units.mse_out(sse / n),
+                best_cost: problem.units.mse_out(best_cost.min(sse / n)),
+                model,
+            });
+        }
+        observer.cancelled()
+    }
 }
 
 fn validate(data: &FitData, structure: &Structure) -> Result<(), FitError> {
@@ -417,18 +496,6 @@ struct Run {
     aliased: bool,
 }
 
-impl Run {
-    /// A run without alias beats any aliased one: an alias can match the samples better
-    /// than the true optimum (it does on the LECI data) while being wrong between them.
-    fn better_than(&self, other: &Run) -> bool {
-        match (self.aliased, other.aliased) {
-            (false, true) => true,
-            (true, false) => false,
-            _ => self.sse < other.sse,
-        }
-    }
-}
-
 /// When Levenberg–Marquardt stops.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Stop {
@@ -461,6 +528,15 @@ struct Problem {
     /// The guess, with the values of the parameters that are not estimated (e.g. a fixed Y0),
     /// in internal units.
     fixed: Values,
+    /// √weight of each sample on a reduced record (a block mean: see [`reduce`]); `None`:
+    /// every sample counts once.
+    root_weights: Option<Vec<f64>>,
+    /// The record's scatter within the blocks of a reduced record ([`Reduction::within`]),
+    /// added to every sum of squares so that it is the record's; 0 otherwise.
+    within: f64,
+    /// On a long record, the alias check looks at this many samples after each input
+    /// change reaches the output (see [`alias_spans`]); `None`: the whole record.
+    alias_span: Option<usize>,
 }
 
 impl Problem {
@@ -503,7 +579,29 @@ impl Problem {
             lower,
             upper,
             typical,
+            root_weights: None,
+            within: 0.0,
+            alias_span: None,
         })
+    }
+
+    /// The same problem (units, bounds, fixed values) on the block means of `r`, each
+    /// weighted by the samples it stands for, its sums of squares the record's.
+    fn restricted(&self, r: &Reduction) -> Problem {
+        Problem {
+            data: r.apply(&self.data),
+            units: self.units,
+            ts: self.ts,
+            structure: self.structure,
+            params: self.params.clone(),
+            lower: self.lower.clone(),
+            upper: self.upper.clone(),
+            typical: self.typical.clone(),
+            fixed: self.fixed,
+            root_weights: Some(r.weights().iter().map(|w| w.sqrt()).collect()),
+            within: r.within(&self.data.times, &self.data.y),
+            alias_span: None,
+        }
     }
 
     /// The model at `x` (internal units).
@@ -531,8 +629,19 @@ impl Problem {
     fn piece(&self, s: &Simulator, range: std::ops::Range<usize>, out: &mut [f64]) {
         let out = &mut out[..range.len()];
         s.fill(&self.data.times[range.clone()], out);
-        for (r, y) in out.iter_mut().zip(&self.data.y[range]) {
+        for (r, y) in out.iter_mut().zip(&self.data.y[range.clone()]) {
             *r = y - *r;
+        }
+        if let Some(w) = &self.root_weights {
+            out.iter_mut().zip(&w[range]).for_each(|(r, w)| *r *= w);
+        }
+    }
+
+    /// The record's length: the samples, or on a reduced record the samples they stand for.
+    fn samples(&self) -> usize {
+        match &self.root_weights {
+            Some(w) => w.iter().map(|w| w * w).sum::<f64>().round() as usize,
+            None => self.data.y.len(),
         }
     }
 
@@ -561,6 +670,7 @@ impl Problem {
             self.piece(&s, range.clone(), out);
             sum += out[..range.len()].iter().map(|v| v * v).sum::<f64>();
         }
+        sum += self.within;
         if sum.is_finite() {
             Ok(sum)
         } else {
@@ -663,8 +773,8 @@ impl Problem {
     ) -> Option<Run> {
         let n = self.data.y.len();
         let m = x.len();
-        // A record of one piece keeps its residuals between the cost and the Jacobian.
-        let keep = n <= CHUNK;
+        // A record of up to KEEP samples keeps its residuals between the cost and the Jacobian.
+        let keep = n <= KEEP;
         let mut r = vec![0.0; if keep { n } else { 0 }];
         let mut trial = r.clone();
         let mut x = x.to_vec();
@@ -765,6 +875,53 @@ impl Problem {
             aliased: false,
         })
     }
+    /// One local search from `start` by `method`.
+    fn run(
+        &self,
+        method: Method,
+        start: &[f64],
+        options: &FitOptions,
+        report: &mut dyn FnMut(usize, f64, &[f64]) -> bool,
+    ) -> Option<Run> {
+        match method {
+            Method::LevenbergMarquardt => {
+                self.levenberg_marquardt(start, options.max_iterations, Stop::CostSettles, report)
+            }
+            Method::NelderMead => self.nelder_mead(start, options.max_iterations * 10, report),
+        }
+    }
+
+    /// Continues `run` (found on a reduced record) on this problem's samples until its steps
+    /// are negligible (Levenberg–Marquardt: the polish included): its cost, termination and
+    /// path become this record's.
+    fn refine(
+        &self,
+        run: &mut Run,
+        options: &FitOptions,
+        report: &mut dyn FnMut(usize, f64, &[f64]) -> bool,
+    ) {
+        let fine = match options.method {
+            Method::LevenbergMarquardt => {
+                self.levenberg_marquardt(&run.x, options.max_iterations, Stop::StepsSettle, report)
+            }
+            Method::NelderMead => self.run(options.method, &run.x, options, report),
+        };
+        match fine {
+            Some(fine) => {
+                run.iterations += fine.iterations;
+                run.path.extend(fine.path.into_iter().skip(1));
+                run.x = fine.x;
+                run.sse = fine.sse;
+                run.termination = match fine.termination {
+                    // The reduced record's optimum is already this record's.
+                    Termination::NoImprovement => run.termination,
+                    other => other,
+                };
+            }
+            None => run.sse = self.sse(&run.x, None).unwrap_or(f64::INFINITY),
+        }
+    }
+
     /// Refines a converged run until its steps are negligible, so that the optimum does not
     /// depend on where the cost test happened to stop it (a few iterations at most).
     fn polish(&self, run: &mut Run) {
@@ -902,14 +1059,37 @@ impl Problem {
         })
     }
 
-    fn report(&self, run: Run, options: &FitOptions, starts: usize) -> Result<FitReport, FitError> {
+    /// The report of `run` (on this problem's samples; the alias check on `checked`'s).
+    fn report(
+        &self,
+        run: Run,
+        options: &FitOptions,
+        starts: usize,
+        checked: &Problem,
+    ) -> Result<FitReport, FitError> {
         let units = &self.units;
         let model = self.model_out(&run.x)?;
-        let n = self.data.y.len();
+        let n = self.samples();
         let p = self.params.len();
         let mse = run.sse / n as f64;
-        let mean = self.data.y.iter().sum::<f64>() / n as f64;
-        let spread = dot_self(self.data.y.iter().map(|y| y - mean)).sqrt();
+        let weight = |i: usize| self.root_weights.as_ref().map_or(1.0, |w| w[i] * w[i]);
+        let mean = self
+            .data
+            .y
+            .iter()
+            .enumerate()
+            .map(|(i, y)| weight(i) * y)
+            .sum::<f64>()
+            / n as f64;
+        let spread = self
+            .data
+            .y
+            .iter()
+            .enumerate()
+            .map(|(i, y)| weight(i) * (y - mean) * (y - mean))
+            .sum::<f64>()
+            .add(self.within)
+            .sqrt();
         let fit_percent = if spread > 0.0 {
             100.0 * (1.0 - run.sse.sqrt() / spread)
         } else {
@@ -948,7 +1128,7 @@ impl Problem {
                 zeta: model.get(Param::Zeta),
             });
         }
-        if let Some(alias) = self.alias(&run.x) {
+        if let Some(alias) = checked.alias(&run.x) {
             warnings.push(alias);
         }
         match run.termination {
@@ -999,7 +1179,7 @@ impl Problem {
         sse: f64,
         warnings: &mut Vec<FitWarning>,
     ) -> Vec<Option<(f64, f64)>> {
-        let (n, p) = (self.data.y.len(), x.len());
+        let (n, p) = (self.samples(), x.len());
         let none = vec![None; p];
         if n <= p {
             return none;
@@ -1050,18 +1230,14 @@ impl Problem {
 
     /// The alias check of the model at `x`, its frequencies in the data's units.
     fn alias(&self, x: &[f64]) -> Option<FitWarning> {
-        alias_in(&self.model(x), &self.data, self.ts).map(|w| frequencies_out(w, &self.units))
+        alias_in(&self.model(x), &self.data, self.ts, self.alias_span)
+            .map(|w| frequencies_out(w, &self.units))
     }
 }
 
 /// Σ aᵢbᵢ.
 fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// Σ xᵢ².
-fn dot_self(x: impl Iterator<Item = f64>) -> f64 {
-    x.map(|v| v * v).sum()
 }
 
 /// The fall of the sum of squares that the linearised model predicts for the step from `x`
@@ -1092,31 +1268,63 @@ fn is_positive(x: f64) -> bool {
 
 /// The alias check: an oscillation faster than the sampling can show (ωd ≥ π/Ts), or a
 /// model that swings between samples by more than 10 % of the step's effect beyond what
-/// straight lines through its own samples show. Computed in the record's internal units.
+/// straight lines through its own samples show. Computed in the record's internal units;
+/// on a long record (one [`reduce`] shrinks) the swing is looked for in the
+/// [`reduce::MIN_SAMPLES`] samples after each change reaches the output, where a stable
+/// model's response moves fastest.
 pub fn alias_warning(model: &Model, data: &FitData) -> Option<FitWarning> {
     let ts = data.sampling_period();
     let units = Scale::of(data, ts)?;
+    let span = reduce::reduce(&data.times, &data.input).map(|_| reduce::MIN_SAMPLES);
     alias_in(
         &units.model_in(model),
         &units.data_in(data),
         ts / units.t_unit,
+        span,
     )
     .map(|w| frequencies_out(w, &units))
 }
 
-/// [`alias_warning`] on a record and model in the same units, sampled every `ts`.
-fn alias_in(model: &Model, data: &FitData, ts: f64) -> Option<FitWarning> {
+/// [`alias_warning`] on a record and model in the same units, sampled every `ts`, the swing
+/// looked for in `span` samples after each change (`None`: everywhere).
+fn alias_in(model: &Model, data: &FitData, ts: f64, span: Option<usize>) -> Option<FitWarning> {
     let nyquist = std::f64::consts::PI / ts;
     let omega_d = model.damped_frequency().unwrap_or(0.0);
     let effect = (model.get(Param::Kp) * data.input.du_scale())
         .abs()
         .max(f64::MIN_POSITIVE);
-    let between = between_sample_swing(model, data) / effect;
+    let n = data.times.len();
+    let spans = match span {
+        Some(len) => alias_spans(data, model.input_shift(), len),
+        None => vec![(0, n.saturating_sub(1))],
+    };
+    let between = spans
+        .iter()
+        .map(|&span| between_sample_swing(model, data, span))
+        .fold(0.0, f64::max)
+        / effect;
     (omega_d >= nyquist || between > 0.1).then_some(FitWarning::Alias {
         omega_d,
         nyquist,
         between_samples: between,
     })
+}
+
+/// The spans of sample indices (first, last) from the sample before each change reaches
+/// the output (its instant moved by `shift`) to `len` samples after, overlapping ones merged.
+fn alias_spans(data: &FitData, shift: f64, len: usize) -> Vec<(usize, usize)> {
+    let t = &data.times;
+    let last = t.len().saturating_sub(1);
+    let mut spans: Vec<(usize, usize)> = Vec::new();
+    for c in &data.input.changes {
+        let a = t.partition_point(|&s| s < c.t + shift).saturating_sub(1);
+        let b = (a + len).min(last);
+        match spans.last_mut() {
+            Some(prev) if a <= prev.1 => prev.1 = prev.1.max(b),
+            _ => spans.push((a, b)),
+        }
+    }
+    spans
 }
 
 /// An alias warning's frequencies (rad per internal time unit) in rad/s.
@@ -1136,19 +1344,19 @@ fn frequencies_out(w: FitWarning, units: &Scale) -> FitWarning {
 }
 
 /// The largest distance between the model on a 16× finer grid and the straight lines
-/// through the model's values at the sample instants, over the windows that end after the
-/// step; evaluated a piece of the record at a time.
-fn between_sample_swing(model: &Model, data: &FitData) -> f64 {
+/// through the model's values at the sample instants, over the windows between samples
+/// `first` and `last` that end after the step; evaluated a piece of the record at a time.
+fn between_sample_swing(model: &Model, data: &FitData, (first, last): (usize, usize)) -> f64 {
     const REFINE: usize = 16;
     let t = &data.times;
     let Ok(simulator) = model.simulator(&data.input) else {
         return 0.0;
     };
-    let windows = t.len().saturating_sub(1);
+    let windows = last.min(t.len().saturating_sub(1));
     let per_piece = CHUNK / REFINE;
     let (mut fine, mut values) = (Vec::new(), Vec::new());
     let mut worst: f64 = 0.0;
-    for start in (0..windows).step_by(per_piece) {
+    for start in (first..windows).step_by(per_piece) {
         let end = (start + per_piece).min(windows);
         fine.clear();
         if let Some((a, b)) = super::models::uniform_grid(&t[start..=end]) {

@@ -13,6 +13,7 @@ pub mod landscape;
 pub mod models;
 pub mod per_step;
 pub mod prepare;
+pub mod reduce;
 pub mod residuals;
 pub mod rest;
 pub mod scale;

@@ -562,7 +562,8 @@ pub struct Simulator {
 impl Simulator {
     /// The output at each instant of `times` (ascending) into `out` (both cut to the
     /// shorter). One ideal step on a uniform grid uses the step response's own recurrence;
-    /// anything else the exact superposition of [`StepResponse::superpose`].
+    /// anything else the exact superposition of [`StepResponse::superpose`], which advances
+    /// a running state from instant to instant (one exponential per distinct spacing).
     pub fn fill(&self, times: &[f64], out: &mut [f64]) {
         let n = times.len().min(out.len());
         let (times, out) = (&times[..n], &mut out[..n]);
@@ -602,9 +603,8 @@ impl Simulator {
                 *o = a * v;
             }
         } else {
-            for (o, &t) in out[first..].iter_mut().zip(after) {
-                *o = a * self.response.value(t - s);
-            }
+            // Advances a running state: no exponential per instant.
+            self.response.superpose(&[(s, a)], after, &mut out[first..]);
         }
     }
 }

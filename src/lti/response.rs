@@ -360,6 +360,10 @@ impl StepResponse {
         }
         let scale = 1.0 / self.amplitude;
         for c in &self.clusters {
+            if c.spread.is_none() && c.coeffs.len() == 1 {
+                superpose_simple(c, self.delay, scale, steps, times, out);
+                continue;
+            }
             let mut state = Superposition::new(c, self.delay, scale);
             for (o, &t) in out.iter_mut().zip(times) {
                 state.advance_to(t, steps);
@@ -537,7 +541,11 @@ impl StepResponse {
 }
 
 /// The running sum V(t) = Σ_{sₖ+θ ≤ t} aₖ·e^{c(t−sₖ−θ)}·b(t − sₖ − θ) of one cluster over
-/// the steps seen so far (see [`StepResponse::superpose`]).
+/// the steps seen so far (see [`StepResponse::superpose`]). It walks forward through the
+/// steps' instants and the requested instants in order: each step is added where it
+/// starts (τ = 0, no exponential), and the state advances between consecutive instants by
+/// e^{ch}·M(h), with e^{ch} and M(h) kept for the last distinct h, so a uniform grid or a
+/// clocked input costs a few multiplications per instant.
 struct Superposition<'a> {
     cluster: &'a Cluster,
     delay: f64,
@@ -545,7 +553,9 @@ struct Superposition<'a> {
     scale: f64,
     state: Vec<C64>,
     next: Vec<C64>,
-    /// The instant the state is at (−∞ before the first call).
+    /// b(0): what a unit step adds where it starts.
+    start_row: Vec<C64>,
+    /// The instant the state is at (−∞ before the first step).
     t: f64,
     /// Steps already added.
     added: usize,
@@ -555,18 +565,39 @@ struct Superposition<'a> {
     cached_matrix: Option<divided::Lower>,
 }
 
+/// Relative distance within which an advance reuses the cached e^{ch} (times the exact
+/// correction e^{cδ} by its series), so that instants on a grid, whose spacings differ by
+/// rounding, share one exponential.
+const SAME_ADVANCE: f64 = 1e-9;
+
 impl<'a> Superposition<'a> {
     fn new(cluster: &'a Cluster, delay: f64, scale: f64) -> Self {
-        let m = match &cluster.spread {
-            Some(s) => s.offsets.len(),
-            None => cluster.coeffs.len(),
+        let start_row = match &cluster.spread {
+            Some(_) => {
+                let row = cluster.basis(0.0).row;
+                if row.is_empty() {
+                    let m = cluster.spread.as_ref().map_or(0, |s| s.offsets.len());
+                    vec![C64::new(0.0, 0.0); m]
+                } else {
+                    row
+                }
+            }
+            None => {
+                let mut row = vec![C64::new(0.0, 0.0); cluster.coeffs.len()];
+                if let Some(first) = row.first_mut() {
+                    *first = C64::new(1.0, 0.0);
+                }
+                row
+            }
         };
+        let m = start_row.len();
         Self {
             cluster,
             delay,
             scale,
             state: vec![C64::new(0.0, 0.0); m],
             next: vec![C64::new(0.0, 0.0); m],
+            start_row,
             t: f64::NEG_INFINITY,
             added: 0,
             cached_h: f64::NAN,
@@ -575,34 +606,53 @@ impl<'a> Superposition<'a> {
         }
     }
 
-    /// Moves the state to instant `t` (≥ the last one) and adds the steps that start by then.
+    /// Moves the state to instant `t` (≥ the last one), adding on the way each step that
+    /// starts by then, at its own instant.
     fn advance_to(&mut self, t: f64, steps: &[(f64, f64)]) {
+        while let Some(&(s, a)) = steps.get(self.added) {
+            let start = s + self.delay;
+            if start > t {
+                break;
+            }
+            self.move_to(start);
+            let a = a * self.scale;
+            for (v, r) in self.state.iter_mut().zip(&self.start_row) {
+                *v += r * a;
+            }
+            self.added += 1;
+        }
+        self.move_to(t);
+    }
+
+    /// V ← V(t): propagates from the current instant (nothing to do before the first step).
+    fn move_to(&mut self, t: f64) {
         if self.added > 0 && t > self.t {
             self.propagate(t - self.t);
         }
-        self.t = t;
-        while let Some(&(s, a)) = steps.get(self.added) {
-            let tau = t - (s + self.delay);
-            if tau < 0.0 {
-                break;
-            }
-            self.add(a * self.scale, tau);
-            self.added += 1;
+        self.t = self.t.max(t);
+    }
+
+    /// e^{ch}, from the cached advance when h is within [`SAME_ADVANCE`] of it.
+    fn exponential(&mut self, h: f64) -> C64 {
+        let c = self.cluster;
+        let delta = h - self.cached_h;
+        let matrix_ok = c.spread.is_none() || delta.abs() <= 1e-12 * h;
+        if delta.abs() <= SAME_ADVANCE * h && matrix_ok {
+            let z = c.center * delta;
+            return self.cached_exp * (C64::new(1.0, 0.0) + z * (1.0 + z * (0.5 + z / 6.0)));
         }
+        self.cached_h = h;
+        self.cached_exp = (c.center * h).exp();
+        self.cached_matrix = c
+            .spread
+            .as_ref()
+            .map(|s| divided::exp_matrix(&s.offsets, s.radius, h));
+        self.cached_exp
     }
 
     /// V ← e^{ch}·M(h)·V.
     fn propagate(&mut self, h: f64) {
-        let c = self.cluster;
-        if self.cached_h.is_nan() || (h - self.cached_h).abs() > 1e-12 * h {
-            self.cached_h = h;
-            self.cached_exp = (c.center * h).exp();
-            self.cached_matrix = c
-                .spread
-                .as_ref()
-                .map(|s| divided::exp_matrix(&s.offsets, s.radius, h));
-        }
-        let e = self.cached_exp;
+        let e = self.exponential(h);
         match &self.cached_matrix {
             Some(matrix) => {
                 matrix.row_times(&self.state, &mut self.next);
@@ -628,27 +678,6 @@ impl<'a> Superposition<'a> {
         self.state.iter_mut().for_each(|v| *v *= e);
     }
 
-    /// V += a·e^{cτ}·b(τ).
-    fn add(&mut self, a: f64, tau: f64) {
-        let c = self.cluster;
-        let basis = c.basis(tau);
-        let scaled = basis.exp_ct * a;
-        match &c.spread {
-            Some(_) => {
-                for (v, r) in self.state.iter_mut().zip(&basis.row) {
-                    *v += scaled * r;
-                }
-            }
-            None => {
-                let mut power = 1.0;
-                for v in self.state.iter_mut() {
-                    *v += scaled * power;
-                    power *= tau;
-                }
-            }
-        }
-    }
-
     /// weight·Re(d·V).
     fn value(&self) -> f64 {
         let d = match &self.cluster.spread {
@@ -656,6 +685,81 @@ impl<'a> Superposition<'a> {
             None => &self.cluster.coeffs,
         };
         self.cluster.weight * dot(d, &self.state).re
+    }
+}
+
+/// [`Superposition`] for a simple pole c (its contribution q·e^{cτ}), written out: the running
+/// sum is one complex number, advanced by e^{ch} from the cached advance (nothing for the
+/// pole at the origin of a step), so an instant costs a few multiplications.
+fn superpose_simple(
+    c: &Cluster,
+    delay: f64,
+    scale: f64,
+    steps: &[(f64, f64)],
+    times: &[f64],
+    out: &mut [f64],
+) {
+    let zero = C64::new(0.0, 0.0);
+    let d = c.coeffs[0] * c.weight;
+    let constant = c.center == zero;
+    let mut sum = zero;
+    let mut at = f64::NEG_INFINITY;
+    let mut added = 0;
+    let mut advance = Advance::new(c.center);
+    for (o, &t) in out.iter_mut().zip(times) {
+        while let Some(&(s, a)) = steps.get(added) {
+            let start = s + delay;
+            if start > t {
+                break;
+            }
+            if added > 0 && start > at && !constant {
+                sum *= advance.over(start - at);
+            }
+            at = at.max(start);
+            sum += a * scale;
+            added += 1;
+        }
+        if added == 0 {
+            continue;
+        }
+        if t > at && !constant {
+            sum *= advance.over(t - at);
+        }
+        at = at.max(t);
+        *o += (d * sum).re;
+    }
+}
+
+/// e^{ch} for the spacings h of a walk, kept for the last distinct one (see [`SAME_ADVANCE`]).
+struct Advance {
+    center: C64,
+    h: f64,
+    exp: C64,
+}
+
+impl Advance {
+    fn new(center: C64) -> Self {
+        Self {
+            center,
+            h: f64::NAN,
+            exp: C64::new(1.0, 0.0),
+        }
+    }
+
+    fn over(&mut self, h: f64) -> C64 {
+        let delta = h - self.h;
+        if delta == 0.0 {
+            return self.exp;
+        }
+        if delta.abs() <= SAME_ADVANCE * h {
+            // e^{cδ} = 1 + z + z²/2 + O(z³), |z| ≤ 1e-9·|ch|: exact to rounding while e^{ch}
+            // is a normal number.
+            let z = self.center * delta;
+            return self.exp * (C64::new(1.0, 0.0) + z * (1.0 + z * 0.5));
+        }
+        self.h = h;
+        self.exp = (self.center * h).exp();
+        self.exp
     }
 }
 
