@@ -116,15 +116,26 @@ fn the_per_step_table_sits_beside_the_joint_fit() {
     wait_for(&mut h, |h| h.query_by_label("joint fit").is_some());
     h.get_by_label("Fitted P1D");
     h.get_by_label("Each step on its own");
-    for head in ["Change", "t (s)", "Δu", "from", "Kp", "Tp1 (s)", "Td (s)"] {
+    for head in ["Change", "t (s)", "Tp1 (s)", "Td (s)"] {
         h.get_by_label(head);
+    }
+    // Kp heads the fit's parameter table too; Δu and "from" are said elsewhere as well.
+    for head in ["Kp", "Δu", "from"] {
+        assert!(h.query_all_by_label(head).next().is_some(), "{head}");
     }
     let app = h.state();
     let joint = app.ident.report.clone().unwrap();
     let fits = app.ident.per_step.fits.clone().unwrap();
     assert_eq!(fits.len(), 4);
     for (k, (f, &(t, du, from))) in fits.iter().zip(&CHANGES).enumerate() {
-        h.get_by_label(&format!("step {}", k + 1));
+        // The table's row (which says when the output still moved before the change: the
+        // previous step's response is in its window) and the output plot's legend entry
+        // for the step's window.
+        let name = format!("step {}", k + 1);
+        let moving = format!("step {} (output still moving)", k + 1);
+        let rows = h.query_all_by_label(&moving).count();
+        assert_eq!(rows, usize::from(f.not_at_rest), "{moving}");
+        assert_eq!(h.query_all_by_label(&name).count() + rows, 2, "{name}");
         assert_eq!(f.change.t, t);
         assert!(h.query_all_by_label(du).next().is_some(), "{du}");
         assert_eq!(f.change.u_before, from);
@@ -145,8 +156,9 @@ fn the_per_step_table_sits_beside_the_joint_fit() {
         fmt(hi)
     ));
     h.get_by_label(
-        "Every step agrees with the joint fit within the 95 % intervals: nothing here says the \
-         process is not linear.",
+        "Every step agrees with the joint fit, within the 95 % intervals or within what the \
+         record resolves (5 %, and a sampling period for Td): nothing here says the process is \
+         not linear.",
     );
 }
 
@@ -167,7 +179,7 @@ fn the_per_step_fits_can_be_cancelled_and_run_again() {
     h.run_steps(2);
     h.get_by_label("The per-step fits were cancelled.");
     assert!(h.query_by_label("joint fit").is_none());
-    h.get_by_label("Fit each step").click();
+    h.get_by_label("Fit each step").click_accesskit();
     wait_for(&mut h, |h| h.query_by_label("joint fit").is_some());
     // A new choice on the test drops them with the fit.
     h.get_by_label("one ideal step").click();

@@ -238,12 +238,12 @@ crate::phrases! {
         StepRowMoving => ("step {} (output still moving)", "degrau {} (saída ainda em movimento)"),
         NoStepFit => ("no fit: {}", "sem ajuste: {}"),
         StepDiffers => (
-            "Step {} (t = {} s) gives {} = {}, beyond the joint fit's {} (their 95 % intervals do not overlap): a first hint that the process is not linear.",
-            "O degrau {} (t = {} s) dá {} = {}, além do {} do ajuste conjunto (os intervalos de 95 % não se sobrepõem): um primeiro indício de que o processo não é linear."
+            "Step {} (t = {} s) gives {} = {}, beyond the joint fit's {}: beyond both 95 % intervals and what the record resolves. A first hint that the process is not linear.",
+            "O degrau {} (t = {} s) dá {} = {}, além do {} do ajuste conjunto: além dos dois intervalos de 95 % e do que o registro resolve. Um primeiro indício de que o processo não é linear."
         ),
         StepsAgree => (
-            "Every step agrees with the joint fit within the 95 % intervals: nothing here says the process is not linear.",
-            "Todos os degraus concordam com o ajuste conjunto dentro dos intervalos de 95 %: nada aqui indica que o processo não é linear."
+            "Every step agrees with the joint fit, within the 95 % intervals or within what the record resolves (5 %, and a sampling period for Td): nothing here says the process is not linear.",
+            "Todos os degraus concordam com o ajuste conjunto, dentro dos intervalos de 95 % ou do que o registro resolve (5 %, e um período de amostragem para Td): nada aqui indica que o processo não é linear."
         ),
         StepsUnknown => (
             "Some values have no interval: whether the steps agree cannot be said from them.",

@@ -619,7 +619,11 @@ fn per_step_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<C
                     }
                 });
         });
-    for line in words::agreement_lines(report, fits, lang) {
+    let instant_step = session
+        .fitted
+        .as_ref()
+        .map_or(0.0, |(_, d)| d.sampling_period());
+    for line in words::agreement_lines(report, fits, instant_step, lang) {
         ui.label(line);
     }
 }

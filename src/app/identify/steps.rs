@@ -252,15 +252,22 @@ pub fn compared_params(structure: &Structure) -> Vec<Param> {
         .collect()
 }
 
+/// Relative difference below which a step's value is not called different from the joint
+/// fit's, whatever its interval: a fit of a real record does not resolve values closer than
+/// this (the issue's own tolerance for parameters), and a narrow interval on a quiet record
+/// says nothing about how well the model's form fits each window.
+pub const RESOLVED_SHARE: f64 = 0.05;
+
 /// How a step's values stand against the joint fit's.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Agreement {
-    /// Every value's 95 % interval overlaps the joint fit's.
+    /// No value differs from the joint fit's beyond both their 95 % intervals and what the
+    /// record resolves.
     Agree,
-    /// A value or an interval is missing: nothing can be said from them.
+    /// A fit, a value or an interval is missing, and nothing else differs: nothing can be
+    /// said.
     Unknown,
-    /// These values' intervals do not overlap the joint fit's: (step index, parameter, the
-    /// step's value, the joint fit's interval).
+    /// These values differ (see [`agreement`]).
     Differ(Vec<Difference>),
 }
 
@@ -276,8 +283,12 @@ pub struct Difference {
     pub joint: (f64, f64),
 }
 
-/// Compares every step's own values with the joint fit's, parameter by parameter.
-pub fn agreement(joint: &FitReport, fits: &[StepFit]) -> Agreement {
+/// Compares every step's own values with the joint fit's, parameter by parameter: a value
+/// differs when its 95 % interval and the joint fit's do not overlap, and it is more than
+/// [`RESOLVED_SHARE`] away from the joint fit's, or, for the dead time, more than
+/// `instant_step` seconds (each change's instant is only known to within a sampling
+/// period, and each step has its own).
+pub fn agreement(joint: &FitReport, fits: &[StepFit], instant_step: f64) -> Agreement {
     let params = compared_params(&joint.model.structure);
     let mut differ = Vec::new();
     let mut unknown = false;
@@ -287,14 +298,23 @@ pub fn agreement(joint: &FitReport, fits: &[StepFit]) -> Agreement {
             continue;
         };
         for &p in &params {
+            let (value, reference) = (own.model.get(p), joint.model.get(p));
+            let resolved = match p {
+                Param::Td => instant_step,
+                _ => RESOLVED_SHARE * reference.abs(),
+            };
             match (own.interval(p), joint.interval(p)) {
-                (Some(a), Some(b)) if a.1 < b.0 || b.1 < a.0 => differ.push(Difference {
-                    step: k,
-                    t: f.change.t,
-                    param: p,
-                    value: own.model.get(p),
-                    joint: b,
-                }),
+                (Some(a), Some(b))
+                    if (a.1 < b.0 || b.1 < a.0) && (value - reference).abs() > resolved =>
+                {
+                    differ.push(Difference {
+                        step: k,
+                        t: f.change.t,
+                        param: p,
+                        value,
+                        joint: b,
+                    })
+                }
                 (Some(_), Some(_)) => {}
                 _ => unknown = true,
             }
@@ -357,6 +377,53 @@ mod tests {
                 "{a:?} {b:?}"
             );
         }
+    }
+
+    /// A heater whose gain grows with its level (0.5 per unit at first, 1.5 at the top):
+    /// the per-step fits disagree with the joint one, a linear one agrees.
+    fn stepped(gain_of_level: impl Fn(f64) -> f64) -> (FitReport, Vec<StepFit>, f64) {
+        use crate::ident::models::{Model, Values};
+        let times: Vec<f64> = (0..400).map(|k| 0.5 * k as f64).collect();
+        let levels = [(0.0, 1.0), (20.0, 3.0), (70.0, 5.0), (120.0, 2.0)];
+        let u: Vec<f64> = times
+            .iter()
+            .map(|&t| levels.iter().rev().find(|l| l.0 <= t).map_or(1.0, |l| l.1))
+            .collect();
+        let input = Excitation::measured(&times, &u, None, Hold::Zoh).unwrap();
+        let structure = Structure::parse("P1").unwrap();
+        // Each change's response with the gain of the level it goes to.
+        let mut y = vec![10.0; times.len()];
+        for c in &input.changes {
+            let mut v = Values::default();
+            v.set(Param::Kp, gain_of_level(c.u_before + c.du));
+            v.set(Param::Tp1, 6.0);
+            let one = Model::new(structure, v);
+            let part = one.simulate(&Excitation::step(c.t, c.du), &times).unwrap();
+            y.iter_mut().zip(part).for_each(|(y, p)| *y += p);
+        }
+        let data = FitData { times, y, input };
+        let options = FitOptions::default();
+        let joint = fit(
+            &data,
+            structure,
+            auto_guess(&data, structure, None),
+            &options,
+            &mut (),
+        )
+        .unwrap();
+        let fits = crate::ident::per_step::per_step_fits(&data, structure, &options);
+        (joint, fits, data.sampling_period())
+    }
+
+    #[test]
+    fn a_gain_that_changes_with_the_level_is_named_a_linear_one_is_not() {
+        let (joint, fits, ts) = stepped(|_| 0.8);
+        assert_eq!(agreement(&joint, &fits, ts), Agreement::Agree);
+        let (joint, fits, ts) = stepped(|level| 0.5 + 0.2 * level);
+        let Agreement::Differ(list) = agreement(&joint, &fits, ts) else {
+            panic!("a nonlinear gain agrees");
+        };
+        assert!(list.iter().any(|d| d.param == Param::Kp), "{list:?}");
     }
 
     #[test]

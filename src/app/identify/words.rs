@@ -397,8 +397,13 @@ pub struct PerStepTable {
 
 /// What a student reads under the per-step table: which values differ beyond their
 /// intervals (a first hint of nonlinearity), or that every step agrees.
-pub fn agreement_lines(joint: &FitReport, fits: &[StepFit], lang: Lang) -> Vec<String> {
-    match agreement(joint, fits) {
+pub fn agreement_lines(
+    joint: &FitReport,
+    fits: &[StepFit],
+    instant_step: f64,
+    lang: Lang,
+) -> Vec<String> {
+    match agreement(joint, fits, instant_step) {
         Agreement::Agree => vec![Phrase::StepsAgree.get(lang).to_string()],
         Agreement::Unknown => vec![Phrase::StepsUnknown.get(lang).to_string()],
         Agreement::Differ(list) => list
