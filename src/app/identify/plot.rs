@@ -583,7 +583,9 @@ fn input_curve(plot: &mut PlotUi<'_>, input: &InputPlot, top: f64, look: &Look) 
     plot.line(
         Line::new(Phrase::InputCurve.get(lang), input.curve.clone())
             .color(palette.main)
-            .width(1.6),
+            .width(1.6)
+            // A staircase is not a dense curve: drawn as bands, its jumps would be filled.
+            .allow_band(false),
     );
     let labelled = input.changes.len() <= LABELLED_CHANGES;
     for (k, c) in input.changes.iter().enumerate() {
