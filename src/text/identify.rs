@@ -231,7 +231,6 @@ crate::phrases! {
         PerStepRunning => ("Fitting step {} of {}…", "Ajustando o degrau {} de {}…"),
         PerStepCancelled => ("The per-step fits were cancelled.", "Os ajustes por degrau foram cancelados."),
         ChangeHeader => ("Change", "Mudança"),
-        InstantHeader => ("t (s)", "t (s)"),
         FromHeader => ("from", "a partir de"),
         JointFit => ("joint fit", "ajuste conjunto"),
         StepRow => ("step {}", "degrau {}"),

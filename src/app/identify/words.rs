@@ -348,7 +348,8 @@ pub fn per_step_rows(joint: &FitReport, fits: &[StepFit], lang: Lang) -> PerStep
     let params = compared_params(&joint.model.structure);
     let mut header = vec![
         Phrase::ChangeHeader.get(lang).to_string(),
-        Phrase::InstantHeader.get(lang).to_string(),
+        // Symbols, the same in every language.
+        "t (s)".to_string(),
         "Δu".to_string(),
         Phrase::FromHeader.get(lang).to_string(),
     ];
