@@ -191,6 +191,68 @@ crate::phrases! {
         ),
         StepLine => ("step time line", "linha do instante do degrau"),
         StepLineHelp => ("Drag left or right: the step time t0.", "Arraste para os lados: o instante do degrau t0."),
+        Drive => ("Input that drove the test", "Entrada que excitou o ensaio"),
+        DriveMeasured => ("measured input", "entrada medida"),
+        DriveStep => ("one ideal step", "um degrau ideal"),
+        DriveHelp => (
+            "The measured input: the model is driven by the input column, every change of it used. One ideal step: Δu at t0, typed (the model of a single step test).",
+            "Entrada medida: o modelo é excitado pela coluna de entrada, com todas as suas mudanças. Um degrau ideal: Δu em t0, digitados (o modelo de um único ensaio ao degrau)."
+        ),
+        BetweenSamples => ("Between samples", "Entre amostras"),
+        HoldZoh => ("held (zero-order hold)", "mantida (segurador de ordem zero)"),
+        HoldFoh => ("straight line (first-order hold)", "reta (segurador de primeira ordem)"),
+        HoldHelp => (
+            "Held: a logged actuator command, constant until the next sample. Straight line: an analog input that was sampled.",
+            "Mantida: um comando de atuador registrado, constante até a próxima amostra. Reta: uma entrada analógica que foi amostrada."
+        ),
+        NoInputToUse => (
+            "The file has no input that changes: one ideal step is the only choice.",
+            "O arquivo não tem entrada que muda: um degrau ideal é a única escolha."
+        ),
+        ChangesUsed => ("{} input changes used.", "{} mudanças da entrada usadas."),
+        OneChangeUsed => ("1 input change used.", "1 mudança da entrada usada."),
+        ChangeLead => (
+            "Each change may have come up to {} s before the sample that first shows it: the fit estimates when (Ta, or Td down to −{} s).",
+            "Cada mudança pode ter ocorrido até {} s antes da amostra que primeiro a mostra: o ajuste estima quando (Ta, ou Td até −{} s)."
+        ),
+        InputPlot => ("Input u(t) as the model sees it", "Entrada u(t) como o modelo a vê"),
+        InputCurve => ("input", "entrada"),
+        ChangeMark => ("change {} at t = {} s (Δu = {})", "mudança {} em t = {} s (Δu = {})"),
+        ChangeSpan => ("change {} happened in ({} s, {} s]", "a mudança {} ocorreu em ({} s, {} s]"),
+        ChangeInstantExact => ("change {} at t = {} s, an exact instant", "mudança {} em t = {} s, um instante exato"),
+        StepWindow => ("step {}", "degrau {}"),
+        StepWindowLabel => ("step {} window, {} s to {} s", "janela do degrau {}, de {} s a {} s"),
+        PerStep => ("Each step on its own", "Cada degrau isolado"),
+        PerStepHelp => (
+            "Each input change fitted on its own window, beside the joint fit: a linear process gives the same values within their intervals.",
+            "Cada mudança da entrada ajustada na sua própria janela, ao lado do ajuste conjunto: um processo linear dá os mesmos valores dentro dos seus intervalos."
+        ),
+        FitEachStep => ("Fit each step", "Ajustar cada degrau"),
+        PerStepRunning => ("Fitting step {} of {}…", "Ajustando o degrau {} de {}…"),
+        PerStepCancelled => ("The per-step fits were cancelled.", "Os ajustes por degrau foram cancelados."),
+        ChangeHeader => ("Change", "Mudança"),
+        FromHeader => ("from", "a partir de"),
+        JointFit => ("joint fit", "ajuste conjunto"),
+        StepRow => ("step {}", "degrau {}"),
+        StepRowMoving => ("step {} (output still moving)", "degrau {} (saída ainda em movimento)"),
+        NoStepFit => ("no fit: {}", "sem ajuste: {}"),
+        StepDiffers => (
+            "Step {} (t = {} s) gives {} = {}, beyond the joint fit's {}: beyond both 95 % intervals and what the record resolves. A first hint that the process is not linear.",
+            "O degrau {} (t = {} s) dá {} = {}, além do {} do ajuste conjunto: além dos dois intervalos de 95 % e do que o registro resolve. Um primeiro indício de que o processo não é linear."
+        ),
+        StepsAgree => (
+            "Every step agrees with the joint fit, within the 95 % intervals or within what the record resolves (5 %, and a sampling period for Td): nothing here says the process is not linear.",
+            "Todos os degraus concordam com o ajuste conjunto, dentro dos intervalos de 95 % ou do que o registro resolve (5 %, e um período de amostragem para Td): nada aqui indica que o processo não é linear."
+        ),
+        StepsUnknown => (
+            "Some values have no interval: whether the steps agree cannot be said from them.",
+            "Alguns valores não têm intervalo: não dá para dizer por eles se os degraus concordam."
+        ),
+        HandlesOnLargest => (
+            "The handles act on the largest change (step {}, t = {} s), as if it were one step from where the model stands then.",
+            "As alças agem sobre a maior mudança (degrau {}, t = {} s), como se fosse um degrau a partir de onde o modelo está nesse instante."
+        ),
+        DiagnosisCancelled => ("The diagnosis was cancelled.", "O diagnóstico foi cancelado."),
         LandscapeTitle => ("Cost landscape", "Mapa da função de custo"),
         FitFirst => (
             "Fit a model first: the landscape is drawn around the fit.",

@@ -88,6 +88,8 @@ pub enum Command {
     /// The step size Δu.
     SetStepSize(f64),
     SetOffset(OffsetChoice),
+    /// What drove the test: the measured input (with its hold) or one ideal step.
+    SetDrive(crate::ident::experiment::Drive),
     /// The time window kept (s), none for the whole record.
     SetWindow(Option<(f64, f64)>),
     /// The low-pass filter's cut-off (Hz), none for no filter.
@@ -103,6 +105,11 @@ pub enum Command {
     SetStarts(usize),
     Fit,
     CancelFit,
+    /// Fit each input change on its own window again.
+    FitEachStep,
+    CancelPerStep,
+    /// Stop waiting for the running diagnosis.
+    CancelDiagnosis,
     /// The whole loop (`whole`) or one step of the diagnosis.
     Diagnose {
         whole: bool,

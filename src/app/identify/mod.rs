@@ -15,6 +15,7 @@ pub mod landscape;
 pub mod panel;
 pub mod plot;
 pub mod session;
+pub mod steps;
 pub mod words;
 
 use eframe::egui;

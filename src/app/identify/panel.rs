@@ -6,8 +6,10 @@ use eframe::egui::{self, DragValue, RichText, Ui};
 
 use crate::app::field::{Limits, NumberField};
 use crate::app::look::Look;
-use crate::ident::experiment::Offset;
+use crate::ident::excitation::Hold;
+use crate::ident::experiment::{Drive, EstimateReason, Offset, OperatingPoint};
 use crate::ident::fit::{MAX_STARTS, Method, bounds};
+use crate::ident::models::Param;
 use crate::text::Localize;
 use crate::text::identify::Phrase;
 
@@ -30,6 +32,7 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>)
     fit_section(ui, session, look, out);
     if session.report.is_some() {
         results(ui, session, look, out);
+        per_step_section(ui, session, look, out);
         ui.separator();
         diagnose_section(ui, session, look, out);
     }
@@ -193,14 +196,17 @@ fn step_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Comma
         max: last,
         why: None,
     };
-    if let Some(t0) = NumberField::new(Phrase::StepTime.get(lang), e.t0)
-        .limits(within)
-        .show(ui, lang)
-    {
-        out.push(Command::SetStepTime(t0));
-    }
-    if let Some(du) = NumberField::new(Phrase::StepSize.get(lang), e.du).show(ui, lang) {
-        out.push(Command::SetStepSize(du));
+    drive_choices(ui, session, look, out);
+    if e.drive == Drive::Step {
+        if let Some(t0) = NumberField::new(Phrase::StepTime.get(lang), e.t0)
+            .limits(within)
+            .show(ui, lang)
+        {
+            out.push(Command::SetStepTime(t0));
+        }
+        if let Some(du) = NumberField::new(Phrase::StepSize.get(lang), e.du).show(ui, lang) {
+            out.push(Command::SetStepSize(du));
+        }
     }
     operating_point(ui, session, look, out);
     ui.horizontal_wrapped(|ui| {
@@ -253,6 +259,62 @@ fn step_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Comma
     }
 }
 
+/// What drove the test (the measured input, with its hold, or one ideal step), and the facts
+/// of the input used: how many changes, how early each may have come, which change the
+/// handles act on.
+fn drive_choices(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
+    let Some(loaded) = session.loaded.as_ref() else {
+        return;
+    };
+    let lang = look.lang;
+    let drive = loaded.experiment.drive;
+    let measurable = session.has_measured_input();
+    ui.horizontal_wrapped(|ui| {
+        ui.label(Phrase::Drive.get(lang))
+            .on_hover_text(Phrase::DriveHelp.get(lang));
+        let hold = match drive {
+            Drive::Measured { hold } => hold,
+            Drive::Step => Hold::Zoh,
+        };
+        let measured = matches!(drive, Drive::Measured { .. });
+        if ui
+            .add_enabled(
+                measurable,
+                egui::RadioButton::new(measured, Phrase::DriveMeasured.get(lang)),
+            )
+            .clicked()
+            && !measured
+        {
+            out.push(Command::SetDrive(Drive::Measured { hold }));
+        }
+        if ui.radio(!measured, Phrase::DriveStep.get(lang)).clicked() && measured {
+            out.push(Command::SetDrive(Drive::Step));
+        }
+    });
+    if !measurable {
+        ui.weak(Phrase::NoInputToUse.get(lang));
+    }
+    if let Drive::Measured { hold } = drive {
+        ui.horizontal_wrapped(|ui| {
+            ui.label(Phrase::BetweenSamples.get(lang))
+                .on_hover_text(Phrase::HoldHelp.get(lang));
+            for (h, phrase) in [(Hold::Zoh, Phrase::HoldZoh), (Hold::Foh, Phrase::HoldFoh)] {
+                if ui.radio(hold == h, phrase.get(lang)).clicked() && hold != h {
+                    out.push(Command::SetDrive(Drive::Measured { hold: h }));
+                }
+            }
+        });
+    }
+    let Ok(data) = &loaded.data else { return };
+    ui.label(words::changes_used(data.input.changes.len(), lang));
+    if let Some(lead) = words::change_lead(data.input.lead_range, lang) {
+        ui.weak(lead);
+    }
+    if let Some(s) = session.handle_frame().and_then(|f| f.segment) {
+        ui.weak(words::handles_on_largest(s.index, s.change.t, lang));
+    }
+}
+
 /// The operating point: held at the level before the step, estimated, or typed; the value
 /// held is said beside the choice.
 fn operating_point(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
@@ -296,9 +358,16 @@ fn operating_point(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Co
                 ui.label(Phrase::HeldAt.with(lang, &[held]));
             }
             None => {
-                ui.label(
-                    RichText::new(Phrase::NoSampleBefore.get(lang)).color(look.palette.warning),
-                );
+                // Why it is estimated: no sample before the step, or the output still moved.
+                let text = match session.operating_point_fact() {
+                    Some(
+                        fact @ OperatingPoint::Estimated {
+                            reason: EstimateReason::NotAtRest,
+                        },
+                    ) => capitalised(&fact.text(lang)),
+                    _ => Phrase::NoSampleBefore.get(lang).to_string(),
+                };
+                ui.label(RichText::new(text).color(look.palette.warning));
             }
         },
         Offset::Free => {
@@ -451,6 +520,12 @@ fn results(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) 
                 ui.end_row();
             }
         });
+    // What the parameters of a measured input mean, said where a student reads them.
+    for p in report.model.structure.params() {
+        if matches!(p, Param::Ta | Param::X1 | Param::X2 | Param::X3) {
+            ui.weak(format!("{}: {}", p.name(), words::param_help(p, lang)));
+        }
+    }
     for line in words::derived(&report.model, lang) {
         ui.label(line);
     }
@@ -484,12 +559,93 @@ fn results(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) 
     });
 }
 
+/// Each step fitted on its own beside the joint fit: the job's progress and cancel button,
+/// the table, and what it says about linearity.
+fn per_step_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
+    let Some(report) = session.report.as_ref() else {
+        return;
+    };
+    let multi = session.input_plot().changes.len() > 1;
+    if !multi {
+        return;
+    }
+    let lang = look.lang;
+    ui.separator();
+    ui.strong(Phrase::PerStep.get(lang))
+        .on_hover_text(Phrase::PerStepHelp.get(lang));
+    let state = &session.per_step;
+    if let Some(progress) = state.progress() {
+        ui.horizontal_wrapped(|ui| {
+            if ui.button(Phrase::Cancel.get(lang)).clicked() {
+                out.push(Command::CancelPerStep);
+            }
+            ui.spinner();
+            ui.label(words::per_step_progress(progress, lang));
+        });
+        return;
+    }
+    let Some(fits) = &state.fits else {
+        if state.cancelled {
+            ui.weak(Phrase::PerStepCancelled.get(lang));
+        }
+        if ui
+            .add_enabled(
+                !session.is_fitting(),
+                egui::Button::new(Phrase::FitEachStep.get(lang)),
+            )
+            .clicked()
+        {
+            out.push(Command::FitEachStep);
+        }
+        return;
+    };
+    let table = words::per_step_rows(report, fits, lang);
+    egui::ScrollArea::horizontal()
+        .id_salt("per-step table")
+        .show(ui, |ui| {
+            egui::Grid::new("per-step")
+                .striped(true)
+                .num_columns(table.header.len())
+                .show(ui, |ui| {
+                    for head in &table.header {
+                        ui.strong(head);
+                    }
+                    ui.end_row();
+                    for row in &table.rows {
+                        for cell in row {
+                            ui.label(cell);
+                        }
+                        ui.end_row();
+                    }
+                });
+        });
+    let instant_step = session
+        .fitted
+        .as_ref()
+        .map_or(0.0, |(_, d)| d.sampling_period());
+    for line in words::agreement_lines(report, fits, instant_step, lang) {
+        ui.label(line);
+    }
+}
+
+/// `text` with its first letter upper-case (a fact said mid-sentence elsewhere, here alone).
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    match chars.next() {
+        Some(first) => first.to_uppercase().chain(chars).collect::<String>() + ".",
+        None => String::new(),
+    }
+}
+
 /// "What does the model get wrong?": the cause in words, the buttons, the chain table.
 fn diagnose_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     let lang = look.lang;
     ui.heading(Phrase::WhatIsWrong.get(lang));
     ui.horizontal_wrapped(|ui| {
         if session.is_diagnosing() {
+            if ui.button(Phrase::Cancel.get(lang)).clicked() {
+                out.push(Command::CancelDiagnosis);
+            }
             ui.spinner();
             return;
         }

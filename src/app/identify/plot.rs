@@ -11,17 +11,18 @@
 use eframe::egui::{self, Align2, Id, Pos2, Rect, Sense, Stroke, TextStyle, Ui, Vec2};
 use egui_plot::{
     HLine, Legend, Line, LineStyle, MarkerShape, Plot, PlotBounds, PlotPoint, PlotTransform,
-    PlotUi, Points, Span, VLine,
+    PlotUi, Points, Span, Text, VLine,
 };
 
 use crate::app::look::Look;
-use crate::ident::handles::{self, Handle};
+use crate::ident::handles::Handle;
 use crate::lti::{StepInfo, StepInfoOptions};
 use crate::text::identify::Phrase;
 use crate::text::step::Metric;
 
 use super::commands::{Command, Gesture};
 use super::session::{Frozen, MeasuredMarkers, Session, Shown};
+use super::steps::InputPlot;
 use super::words;
 
 /// Pixels around a handle that grab it.
@@ -32,6 +33,13 @@ pub const MIN_PLOT_HEIGHT: f32 = 200.0;
 
 /// The smallest height of the residual plot (px).
 const MIN_RESIDUAL_HEIGHT: f32 = 140.0;
+
+/// The smallest and largest height of the input plot (px).
+const INPUT_HEIGHT: (f32, f32) = (80.0, 170.0);
+
+/// At most this many changes are labelled on the plots (more are drawn, unlabelled; each
+/// still has its accessible mark).
+const LABELLED_CHANGES: usize = 12;
 
 /// How near (px) the pointer must be to a curve for its value to be read.
 const READ_DISTANCE: f32 = 24.0;
@@ -44,6 +52,11 @@ pub fn main_plot_id() -> Id {
 /// The residual plot's id.
 pub fn residual_plot_id() -> Id {
     Id::unique("identification residual plot")
+}
+
+/// The input plot's id.
+pub fn input_plot_id() -> Id {
+    Id::unique("identification input plot")
 }
 
 /// Draws the marker toggles and both plots into `ui`.
@@ -59,7 +72,10 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>)
         ui.label(Phrase::NothingToShow.get(lang));
         return;
     }
-    marker_controls(ui, session.markers, look, out);
+    // The measured curve's step characteristics belong to one step.
+    if session.input_plot().changes.len() <= 1 {
+        marker_controls(ui, session.markers, look, out);
+    }
     egui::ScrollArea::vertical()
         .auto_shrink(false)
         .show(ui, |ui| plots(ui, session, look, out));
@@ -81,14 +97,16 @@ fn marker_controls(ui: &mut Ui, markers: MeasuredMarkers, look: &Look, out: &mut
     });
 }
 
-/// The heights of the main and residual plots in `available` px (with two titles of
-/// `title` px above them): the main plot gets about 62 %, never less than
-/// [`MIN_PLOT_HEIGHT`].
-pub fn heights(available: f32, title: f32) -> (f32, f32) {
-    let room = (available - 2.0 * title).max(0.0);
-    let main = (0.62 * room).max(MIN_PLOT_HEIGHT);
-    let residual = (room - main).max(MIN_RESIDUAL_HEIGHT);
-    (main, residual)
+/// The heights of the main, input and residual plots in `available` px (with three titles
+/// of `title` px above them): the input plot gets about 18 % (within [`INPUT_HEIGHT`]), the
+/// main plot about 62 % of the rest, never less than [`MIN_PLOT_HEIGHT`].
+pub fn heights(available: f32, title: f32) -> (f32, f32, f32) {
+    let room = (available - 3.0 * title).max(0.0);
+    let input = (0.18 * room).clamp(INPUT_HEIGHT.0, INPUT_HEIGHT.1);
+    let rest = (room - input).max(0.0);
+    let main = (0.62 * rest).max(MIN_PLOT_HEIGHT);
+    let residual = (rest - main).max(MIN_RESIDUAL_HEIGHT);
+    (main, input, residual)
 }
 
 fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
@@ -97,7 +115,12 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     let plots = session.plots();
     let frame = session.plot_frame();
     let title = ui.text_style_height(&TextStyle::Body) + 2.0 * ui.spacing().item_spacing.y;
-    let (main_height, residual_height) = heights(ui.available_height() - 8.0, title);
+    let (main_height, input_height, residual_height) = heights(ui.available_height() - 8.0, title);
+    let input = session.input_plot();
+    let measured_drive = session
+        .loaded
+        .as_ref()
+        .is_some_and(|l| l.experiment.drive != crate::ident::experiment::Drive::Step);
     let shown = session.shown();
     let setup = session.setup();
     let evidence = session.evidence_interval();
@@ -120,7 +143,10 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                     .color(palette.data)
                     .radius(2.5),
             );
-            if let Some(setup) = &setup {
+            if input.changes.len() > 1 {
+                step_windows(plot, input, frame.y.1, look);
+            }
+            if let Some(setup) = setup.as_ref().filter(|_| !measured_drive) {
                 let t0 = lang.num(setup.t0(), 4);
                 plot.vline(
                     VLine::new(Phrase::StepAt.with(lang, &[t0]), setup.t0())
@@ -149,7 +175,9 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                     plot.span(Span::new(Phrase::Evidence.get(lang), a..=b).fill(palette.evidence));
                 }
             }
-            if let (Some(info), Some(setup)) = (&plots.info, &setup) {
+            if let (Some(info), Some(setup)) = (&plots.info, &setup)
+                && input.changes.len() <= 1
+            {
                 draw_markers(
                     plot,
                     info,
@@ -178,7 +206,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
             transform: &transform,
             look,
         };
-        let mut grabbed = step_line(ui, &over, out);
+        let mut grabbed = !measured_drive && step_line(ui, &over, out);
         grabbed |= guess_handles(ui, &over, out);
         if session.frozen.is_some() && !grabbed {
             out.push(Command::Handle(Gesture::Release));
@@ -190,6 +218,25 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
         && ui.ctx().dragged_id().is_none()
     {
         read_main(ui, session, &transform, pointer, look);
+    }
+    if input.changes.len() > 1 {
+        window_marks(ui, input, &transform, look);
+    }
+
+    ui.label(Phrase::InputPlot.get(lang));
+    let input_response = base_plot(input_plot_id(), input_height)
+        .y_axis_label("u")
+        .show(ui, |plot| {
+            let (lo, hi) = padded(input.range);
+            plot.set_plot_bounds(PlotBounds::from_min_max([frame.t.0, lo], [frame.t.1, hi]));
+            input_curve(plot, input, hi, look);
+        });
+    change_marks(ui, input, &input_response.transform, look);
+    if let Some(pointer) = input_response.response.hover_pos() {
+        let t = input_response.transform.value_from_position(pointer).x;
+        if let Some(p) = nearest_point(&input.curve, t) {
+            readout(ui, &input_response.transform, p, pointer, "u", look);
+        }
     }
 
     ui.label(Phrase::Residuals.get(lang));
@@ -446,15 +493,13 @@ fn grab_area(
 /// while one is held.
 fn guess_handles(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> bool {
     let (session, transform, look) = (over.session, over.transform, over.look);
-    let (Some(model), Some(setup), Some(t_end)) =
-        (session.shown_model(), session.setup(), session.t_end())
-    else {
+    let Some(handles) = session.handle_frame() else {
         return false;
     };
     let frame: Rect = *transform.frame();
     let mut held = false;
-    for handle in handles::handles(&model) {
-        let Some((t, y)) = handles::position(&model, &setup, t_end, handle) else {
+    for handle in handles.handles() {
+        let Some((t, y)) = handles.position(handle) else {
             continue;
         };
         let id = Id::unique(("identification handle", handle_key(handle)));
@@ -531,6 +576,124 @@ fn step_line(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> bool {
     response.dragged() && !response.drag_stopped()
 }
 
+/// The input curve, each change's instant (a vertical line) and the interval it may have
+/// happened in (a shaded span), labelled when there are few enough.
+fn input_curve(plot: &mut PlotUi<'_>, input: &InputPlot, top: f64, look: &Look) {
+    let (lang, palette) = (look.lang, &look.palette);
+    plot.line(
+        Line::new(Phrase::InputCurve.get(lang), input.curve.clone())
+            .color(palette.main)
+            .width(1.6)
+            // A staircase is not a dense curve: drawn as bands, its jumps would be filled.
+            .allow_band(false),
+    );
+    let labelled = input.changes.len() <= LABELLED_CHANGES;
+    for (k, c) in input.changes.iter().enumerate() {
+        plot.vline(
+            VLine::new(words::change_mark(k, c, lang), c.t)
+                .color(palette.marker.gamma_multiply(0.7))
+                .style(LineStyle::dashed_dense()),
+        );
+        if c.earliest < c.t {
+            plot.span(Span::new("", c.earliest..=c.t).fill(palette.marker.gamma_multiply(0.25)));
+        }
+        if labelled {
+            plot.text(
+                Text::new(
+                    "",
+                    PlotPoint::new(c.t, top),
+                    egui::RichText::new(words::change_short(k, c, lang))
+                        .text_style(TextStyle::Small),
+                )
+                .anchor(Align2::LEFT_TOP)
+                .color(palette.marker),
+            );
+        }
+    }
+}
+
+/// Each change's response span on the output plot, shaded in turn and labelled "step k".
+fn step_windows(plot: &mut PlotUi<'_>, input: &InputPlot, top: f64, look: &Look) {
+    let labelled = input.spans.len() <= LABELLED_CHANGES;
+    for (k, &(a, b)) in input.spans.iter().enumerate() {
+        let fill = look
+            .palette
+            .marker
+            .gamma_multiply(if k % 2 == 0 { 0.07 } else { 0.14 });
+        if labelled {
+            crate::app::plot_span::labelled_span(
+                plot,
+                words::step_window(k, look.lang),
+                a..=b,
+                fill,
+                [a, top],
+                Align2::LEFT_TOP,
+                look.palette.marker,
+            );
+        } else {
+            plot.span(Span::new("", a..=b).fill(fill));
+        }
+    }
+}
+
+/// An accessible mark over each change's line on the input plot (its label says the
+/// change, its tooltip the interval it may have happened in).
+fn change_marks(ui: &mut Ui, input: &InputPlot, transform: &PlotTransform, look: &Look) {
+    let frame: Rect = *transform.frame();
+    for (k, c) in input.changes.iter().enumerate() {
+        let x = transform.position_from_point(&PlotPoint::new(c.t, 0.0)).x;
+        if !(frame.left()..=frame.right()).contains(&x) {
+            continue;
+        }
+        let rect = Rect::from_x_y_ranges(x - 3.0..=x + 3.0, frame.y_range());
+        let id = Id::unique(("identification input change", k));
+        let label = words::change_mark(k, c, look.lang);
+        let response = ui.interact(rect, id, Sense::hover());
+        response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Label, true, &label));
+        response.on_hover_text(words::change_span(k, c, look.lang));
+    }
+}
+
+/// An accessible mark over each step's window on the output plot, a strip at its top.
+fn window_marks(ui: &mut Ui, input: &InputPlot, transform: &PlotTransform, look: &Look) {
+    let frame: Rect = *transform.frame();
+    for (k, &(a, b)) in input.spans.iter().enumerate() {
+        let x = |t: f64| transform.position_from_point(&PlotPoint::new(t, 0.0)).x;
+        let (left, right) = (x(a).max(frame.left()), x(b).min(frame.right()));
+        if right <= left {
+            continue;
+        }
+        let rect = Rect::from_x_y_ranges(left..=right, frame.top()..=frame.top() + 16.0);
+        let id = Id::unique(("identification step window", k));
+        let label = words::step_window_label(k, (a, b), look.lang);
+        let response = ui.interact(rect, id, Sense::hover());
+        response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Label, true, &label));
+    }
+}
+
+/// The point of a polyline nearest in time to `t` (the last of equal times: the level after
+/// a jump).
+fn nearest_point(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
+    let k = points.partition_point(|p| p[0] <= t);
+    [k.checked_sub(1), Some(k)]
+        .into_iter()
+        .flatten()
+        .filter_map(|i| points.get(i))
+        .min_by(|a, b| (a[0] - t).abs().total_cmp(&(b[0] - t).abs()))
+        .copied()
+}
+
+/// A range with 8 % room on each side (a flat range gets room of its own size).
+fn padded((lo, hi): (f64, f64)) -> (f64, f64) {
+    let span = hi - lo;
+    let room = if span > 0.0 {
+        0.08 * span
+    } else {
+        0.08 * lo.abs().max(1.0)
+    };
+    (lo - room, hi + room)
+}
+
 fn handle_key(h: Handle) -> u8 {
     match h {
         Handle::FinalValue => 0,
@@ -547,11 +710,17 @@ mod tests {
     #[test]
     fn the_main_plot_keeps_its_height() {
         // 1000×650 leaves about 520 px below the menu and the marker bar.
-        let (main, residual) = heights(520.0, 20.0);
+        let (main, input, residual) = heights(520.0, 20.0);
         assert!(main >= MIN_PLOT_HEIGHT && residual >= MIN_RESIDUAL_HEIGHT);
+        assert!(input >= INPUT_HEIGHT.0 && main + input + residual <= 460.0 + 1e-3);
         // A tiny window: the plots keep their minimum and the area scrolls.
-        assert_eq!(heights(100.0, 20.0), (MIN_PLOT_HEIGHT, MIN_RESIDUAL_HEIGHT));
-        let (main, residual) = heights(1000.0, 20.0);
-        assert!((main - 0.62 * 960.0).abs() < 1e-3 && (residual - 0.38 * 960.0).abs() < 1e-3);
+        assert_eq!(
+            heights(100.0, 20.0),
+            (MIN_PLOT_HEIGHT, INPUT_HEIGHT.0, MIN_RESIDUAL_HEIGHT)
+        );
+        let (main, input, residual) = heights(1000.0, 20.0);
+        let rest = 940.0 - input;
+        assert!((input - 0.18 * 940.0).abs() < 1e-3);
+        assert!((main - 0.62 * rest).abs() < 1e-3 && (residual - 0.38 * rest).abs() < 1e-3);
     }
 }

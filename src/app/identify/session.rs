@@ -16,11 +16,13 @@ use serde::{Deserialize, Serialize};
 
 use super::commands::{Choice, Command, Gesture, LandscapeCommand, OffsetChoice, Outcome};
 use super::cost::LandscapeState;
+use super::steps::{InputPlot, PerStepState, input_plot};
 use crate::app::field::{FieldError, parse_number};
 use crate::app::job::{self, Job, Waker};
 use crate::ident::data::{self, DataError, LoadOptions, StepTest};
 use crate::ident::diagnose::{self, Cause, DiagnoseOptions, DiagnoseReport, Step};
-use crate::ident::experiment::{Experiment, ExperimentError, Offset};
+use crate::ident::excitation::{Hold, InputChange};
+use crate::ident::experiment::{Drive, Experiment, ExperimentError, Offset, OperatingPoint};
 use crate::ident::fit::{
     FitData, FitError, FitObserver, FitOptions, FitReport, Method, Progress, Termination, fit,
 };
@@ -213,6 +215,8 @@ pub enum DiagnoseNote {
     Cause(Cause),
     /// No extension pays for itself.
     Adequate,
+    /// The student cancelled it.
+    Cancelled,
 }
 
 /// What the model curve shows.
@@ -274,6 +278,8 @@ pub struct Session {
     pub fitted: Option<(Structure, FitData)>,
     pub status: Status,
     pub landscape: LandscapeState,
+    /// Each input change fitted on its own window (after a fit of a multi-step record).
+    pub per_step: PerStepState,
     pub markers: MeasuredMarkers,
     /// The chain of the diagnosis: start fit, then one step per extension.
     pub diagnosis: Option<DiagnoseReport>,
@@ -288,6 +294,8 @@ pub struct Session {
     /// Bumped whenever the fit data are rebuilt.
     data_revision: u64,
     plots: Plots,
+    /// The input plot, rebuilt with the fit data.
+    input_plot: InputPlot,
     plots_key: Option<(u64, Option<Model>, Option<f64>)>,
     waker: Option<Waker>,
 }
@@ -524,6 +532,7 @@ impl Session {
         self.status = Status::Idle;
         self.clear_diagnosis();
         self.landscape.forget();
+        self.per_step.forget();
     }
 
     fn clear_diagnosis(&mut self) {
@@ -539,6 +548,7 @@ impl Session {
         };
         l.data = l.experiment.fit_data(&l.test);
         self.data_revision += 1;
+        self.input_plot = l.data.as_ref().map(input_plot).unwrap_or_default();
         let Ok(d) = &l.data else {
             return;
         };
@@ -573,6 +583,7 @@ impl Session {
             && t0 != l.experiment.t0
         {
             l.experiment.t0 = t0;
+            l.experiment.drive = Drive::Step;
             self.experiment_changed(false);
         }
     }
@@ -691,6 +702,11 @@ impl Session {
             .copied()
     }
 
+    /// The input plot's data (rebuilt with the fit data).
+    pub fn input_plot(&self) -> &InputPlot {
+        &self.input_plot
+    }
+
     /// The plots' data (recomputed by [`Session::apply`] and [`Session::poll`] when an input
     /// changed).
     pub fn plots(&self) -> &Plots {
@@ -729,8 +745,12 @@ impl Session {
         self.poll_fit();
         self.poll_diagnosis();
         self.landscape.poll();
+        self.per_step.poll();
         self.refresh_plots();
-        self.job.is_some() || self.diagnose_job.is_some() || self.landscape.is_computing()
+        self.job.is_some()
+            || self.diagnose_job.is_some()
+            || self.landscape.is_computing()
+            || self.per_step.is_running()
     }
 
     /// Carries out a command from a view.
@@ -751,7 +771,14 @@ impl Session {
             Command::LoadExample => self.load_example(),
             Command::SetChoice(choice, text) => self.set_choice(choice, text),
             Command::SetStepTime(t0) => self.set_step_time(t0),
-            Command::SetStepSize(du) => self.edit_experiment(false, |e| e.du = du),
+            Command::SetStepSize(du) => self.edit_experiment(false, |e| {
+                e.du = du;
+                e.drive = Drive::Step;
+            }),
+            Command::SetDrive(drive) => self.set_drive(drive),
+            Command::FitEachStep => self.start_per_step(),
+            Command::CancelPerStep => self.per_step.cancel(),
+            Command::CancelDiagnosis => self.cancel_diagnosis(),
             Command::SetOffset(choice) => self.set_offset(choice),
             Command::SetWindow(window) => self.edit_experiment(false, |e| e.window = window),
             Command::SetFilter(fc) => self.edit_experiment(false, |e| e.filter_hz = fc),
@@ -835,15 +862,94 @@ impl Session {
     /// Moves a guess handle to (t, y) on the plot.
     pub fn drag_handle(&mut self, handle: Handle, to: (f64, f64)) {
         // The handle moves the model that is shown.
-        let (Some(model), Some(setup), Some(t_end)) =
-            (self.shown_model(), self.setup(), self.t_end())
-        else {
+        let Some(frame) = self.handle_frame() else {
             return;
         };
         if self.is_fitting() || !(to.0.is_finite() && to.1.is_finite()) {
             return;
         }
-        self.set_guess(handles::drag(&model, &setup, t_end, handle, to));
+        self.set_guess(frame.drag(handle, to));
+    }
+
+    /// What the guess handles act on: the shown model on the whole input, or, on a
+    /// multi-step record, on the largest change's segment (see [`HandleFrame`]).
+    pub fn handle_frame(&self) -> Option<HandleFrame> {
+        let (model, input, t_end) = (self.shown_model()?, self.setup()?, self.t_end()?);
+        let segment = largest_segment(&model, &input, &self.input_plot);
+        Some(HandleFrame {
+            model,
+            input,
+            t_end,
+            segment,
+        })
+    }
+
+    /// Chooses what drove the test: the measured input (with its hold) or one ideal step
+    /// (at the input's largest change, or where it was typed).
+    fn set_drive(&mut self, drive: Drive) {
+        let Some(l) = self.loaded.as_ref() else {
+            return;
+        };
+        if l.experiment.drive == drive {
+            return;
+        }
+        let (test, initial) = (&l.test, l.experiment.initial_input);
+        let (t0, du) = match drive {
+            Drive::Step => Experiment::single_step(test, None, None, initial)
+                .map(|e| (e.t0, e.du))
+                .unwrap_or((l.experiment.t0, l.experiment.du)),
+            Drive::Measured { hold } => test
+                .input
+                .as_deref()
+                .and_then(|u| Excitation::measured(&test.time, u, initial, hold))
+                .map_or((l.experiment.t0, l.experiment.du), |x| (x.t0(), x.du())),
+        };
+        self.edit_experiment(true, |e| {
+            e.drive = drive;
+            e.t0 = t0;
+            e.du = du;
+        });
+    }
+
+    /// Whether the loaded test has an input that changes (the measured drive can be chosen).
+    pub fn has_measured_input(&self) -> bool {
+        self.loaded.as_ref().is_some_and(|l| {
+            l.test.input.as_deref().is_some_and(|u| {
+                Excitation::measured(&l.test.time, u, l.experiment.initial_input, Hold::Zoh)
+                    .is_some()
+            })
+        })
+    }
+
+    /// What the operating-point choice does with Y0 on the data shown.
+    pub fn operating_point_fact(&self) -> Option<OperatingPoint> {
+        let l = self.loaded.as_ref()?;
+        Some(l.experiment.operating_point_fact(l.data.as_ref().ok()?))
+    }
+
+    /// Starts the per-step fits of the current fit's data and structure (nothing for a
+    /// record with one change).
+    fn start_per_step(&mut self) {
+        let (Some(report), Some((_, data))) = (&self.report, &self.fitted) else {
+            return;
+        };
+        let options = FitOptions {
+            method: self.settings.method,
+            ..FitOptions::default()
+        };
+        self.per_step.start(
+            data.clone(),
+            report.model.structure,
+            options,
+            self.waker.clone(),
+        );
+    }
+
+    /// Stops waiting for a diagnosis (what it finds is not used).
+    fn cancel_diagnosis(&mut self) {
+        if self.diagnose_job.take().is_some() {
+            self.diagnose_note = DiagnoseNote::Cancelled;
+        }
     }
 
     fn select_step(&mut self, k: usize) {
@@ -938,6 +1044,7 @@ impl Session {
         };
         self.report = Some(fit.clone());
         self.landscape.forget();
+        self.start_per_step();
     }
 
     /// Starts a fit from the current guess.
@@ -990,6 +1097,7 @@ impl Session {
                 self.report = Some(report);
                 self.job = None;
                 self.clear_diagnosis();
+                self.start_per_step();
             }
             Some(Err(e)) => {
                 self.status = Status::FitFailed(e);
@@ -1034,6 +1142,100 @@ impl Session {
             _ => Plots::default(),
         };
     }
+}
+
+/// What the guess handles act on. On a record with one change, the shown model on the whole
+/// input. On a multi-step record, the handles apply to the largest change's segment (from
+/// it to the next change): the final-value handle sits at the segment's end on the whole
+/// model (Kp scales every change alike, so it is exact), the dead-time, time-constant and
+/// peak handles read and set the model as one step of that change from the level the model
+/// stands at when it comes (exact when the earlier changes have settled by then).
+#[derive(Debug, Clone)]
+pub struct HandleFrame {
+    pub model: Model,
+    pub input: Excitation,
+    pub t_end: f64,
+    pub segment: Option<Segment>,
+}
+
+/// The largest change's segment, as one step.
+#[derive(Debug, Clone)]
+pub struct Segment {
+    /// Index (0-based) of the change.
+    pub index: usize,
+    pub change: InputChange,
+    /// The shown model as one step of the change: Y0 at the model's level at the change,
+    /// no drift or initial transient.
+    pub model: Model,
+    pub input: Excitation,
+    /// The segment's end (s).
+    pub t_end: f64,
+}
+
+/// Parameters that belong to the whole record, not to one change's step.
+const RECORD_PARAMS: [Param; 5] = [Param::Y0, Param::Drift, Param::X1, Param::X2, Param::X3];
+
+impl HandleFrame {
+    /// The handles offered.
+    pub fn handles(&self) -> Vec<Handle> {
+        handles::handles(&self.model)
+    }
+
+    /// Where `handle` sits (t, y).
+    pub fn position(&self, handle: Handle) -> Option<(f64, f64)> {
+        match (&self.segment, handle) {
+            (None, _) => handles::position(&self.model, &self.input, self.t_end, handle),
+            (Some(s), Handle::FinalValue) => {
+                handles::position(&self.model, &self.input, s.t_end, handle)
+            }
+            (Some(s), _) => handles::position(&s.model, &s.input, s.t_end, handle),
+        }
+    }
+
+    /// The shown model after dragging `handle` to `to`.
+    pub fn drag(&self, handle: Handle, to: (f64, f64)) -> Model {
+        match (&self.segment, handle) {
+            (None, _) => handles::drag(&self.model, &self.input, self.t_end, handle, to),
+            (Some(s), Handle::FinalValue) => {
+                handles::drag(&self.model, &self.input, s.t_end, handle, to)
+            }
+            (Some(s), _) => {
+                let moved = handles::drag(&s.model, &s.input, s.t_end, handle, to);
+                let mut m = self.model;
+                for p in m.structure.params() {
+                    if !RECORD_PARAMS.contains(&p) {
+                        m.values.set(p, moved.get(p));
+                    }
+                }
+                m
+            }
+        }
+    }
+}
+
+/// The largest change's segment of a multi-step input (none for one change).
+fn largest_segment(model: &Model, input: &Excitation, plot: &InputPlot) -> Option<Segment> {
+    if !input.is_multi_step() {
+        return None;
+    }
+    let change = *input.largest_change()?;
+    let index = input.changes.iter().position(|c| *c == change)?;
+    let t_end = plot.spans.get(index)?.1;
+    let level = *model.simulate(input, &[change.t]).ok()?.first()?;
+    let mut one = *model;
+    for p in RECORD_PARAMS {
+        one.values.set(p, 0.0);
+    }
+    one.values.set(Param::Y0, level);
+    let mut step = Excitation::step(change.t, change.du);
+    step.u0 = change.u_before;
+    Some(Segment {
+        index,
+        change,
+        model: one,
+        input: step,
+        t_end,
+    })
 }
 
 /// The source named by a load message (the example when there is none).

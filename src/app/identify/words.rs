@@ -15,6 +15,9 @@ use crate::text::{Lang, Localize};
 
 use super::commands::Choice;
 use super::session::{DiagnoseNote, LoadError, LoadMessage, Source, Status};
+use super::steps::{Agreement, agreement, compared_params};
+use crate::ident::excitation::InputChange;
+use crate::ident::per_step::StepFit;
 
 /// A number for running text in `lang`.
 fn num(lang: Lang, x: f64, digits: i32) -> String {
@@ -179,6 +182,7 @@ pub fn diagnose_note(note: &DiagnoseNote, lang: Lang) -> String {
         DiagnoseNote::Verdict(v) => v.map_or(String::new(), |v| v.text(lang)),
         DiagnoseNote::Cause(c) => format!("{}: {}", c.id(), c.text(lang)),
         DiagnoseNote::Adequate => format!("none: {}", Cause::None.text(lang)),
+        DiagnoseNote::Cancelled => Phrase::DiagnosisCancelled.get(lang).to_string(),
     }
 }
 
@@ -248,4 +252,186 @@ pub fn chain_text(d: &DiagnoseReport, lang: Lang) -> String {
 /// ωn, σ, ωd and the poles of a model, in words.
 pub fn derived(model: &Model, lang: Lang) -> Vec<String> {
     crate::text::report::derived(model, lang)
+}
+
+/// "N input changes used."
+pub fn changes_used(n: usize, lang: Lang) -> String {
+    match n {
+        1 => Phrase::OneChangeUsed.get(lang).to_string(),
+        n => Phrase::ChangesUsed.with(lang, &[n.to_string()]),
+    }
+}
+
+/// How early each change may have come (the step-instant lead), when it is not exact.
+pub fn change_lead(lead: f64, lang: Lang) -> Option<String> {
+    (lead > 0.0).then(|| {
+        let s = num(lang, lead, 4);
+        Phrase::ChangeLead.with(lang, &[s.clone(), s])
+    })
+}
+
+/// A signed number (+2, −1,5).
+fn signed(lang: Lang, x: f64, digits: i32) -> String {
+    let n = num(lang, x.abs(), digits);
+    if x < 0.0 {
+        format!("−{n}")
+    } else {
+        format!("+{n}")
+    }
+}
+
+/// A change mark's accessible label: "change 2 at t = 201 s (Δu = +20)".
+pub fn change_mark(k: usize, c: &InputChange, lang: Lang) -> String {
+    Phrase::ChangeMark.with(
+        lang,
+        &[
+            (k + 1).to_string(),
+            num(lang, c.t, 5),
+            signed(lang, c.du, 4),
+        ],
+    )
+}
+
+/// A change's short label on the input plot: "1: +20".
+pub fn change_short(k: usize, c: &InputChange, lang: Lang) -> String {
+    format!("{}: {}", k + 1, signed(lang, c.du, 3))
+}
+
+/// The interval a change may have happened in, or that its instant is exact.
+pub fn change_span(k: usize, c: &InputChange, lang: Lang) -> String {
+    if c.earliest < c.t {
+        Phrase::ChangeSpan.with(
+            lang,
+            &[
+                (k + 1).to_string(),
+                num(lang, c.earliest, 5),
+                num(lang, c.t, 5),
+            ],
+        )
+    } else {
+        Phrase::ChangeInstantExact.with(lang, &[(k + 1).to_string(), num(lang, c.t, 5)])
+    }
+}
+
+/// A step window's label on the output plot: "step 2".
+pub fn step_window(k: usize, lang: Lang) -> String {
+    Phrase::StepWindow.with(lang, &[(k + 1).to_string()])
+}
+
+/// A step window's accessible label: "step 2 window, 201 s to 350 s".
+pub fn step_window_label(k: usize, (a, b): (f64, f64), lang: Lang) -> String {
+    Phrase::StepWindowLabel.with(
+        lang,
+        &[(k + 1).to_string(), num(lang, a, 5), num(lang, b, 5)],
+    )
+}
+
+/// An interval as the parameter table writes it: "[0,79; 0,81]" (a semicolon between the
+/// ends where the decimal mark is a comma).
+fn interval(lang: Lang, (lo, hi): (f64, f64)) -> String {
+    let sep = lang.pick(", ", "; ");
+    format!("[{}{sep}{}]", num(lang, lo, 4), num(lang, hi, 4))
+}
+
+/// A value with its 95 % interval, for a cell of the per-step table: "0,8 [0,79; 0,81]".
+fn value_cell(report: &FitReport, p: Param, lang: Lang) -> String {
+    let value = num(lang, report.model.get(p), 4);
+    match report.interval(p) {
+        Some(ci) => format!("{value} {}", interval(lang, ci)),
+        None => format!("{value} [{}]", Phrase::NoInterval.get(lang)),
+    }
+}
+
+/// The per-step table: its header (change, t, Δu, from, then each compared parameter) and
+/// one row for the joint fit and one per step.
+pub fn per_step_rows(joint: &FitReport, fits: &[StepFit], lang: Lang) -> PerStepTable {
+    let params = compared_params(&joint.model.structure);
+    let mut header = vec![
+        Phrase::ChangeHeader.get(lang).to_string(),
+        // Symbols, the same in every language.
+        "t (s)".to_string(),
+        "Δu".to_string(),
+        Phrase::FromHeader.get(lang).to_string(),
+    ];
+    header.extend(params.iter().map(|p| {
+        let unit = p.unit().trim();
+        if unit.is_empty() {
+            p.name().to_string()
+        } else {
+            format!("{} ({unit})", p.name())
+        }
+    }));
+    let mut joint_row = vec![
+        Phrase::JointFit.get(lang).to_string(),
+        String::new(),
+        String::new(),
+        String::new(),
+    ];
+    joint_row.extend(params.iter().map(|&p| value_cell(joint, p, lang)));
+    let mut rows = vec![joint_row];
+    for (k, f) in fits.iter().enumerate() {
+        let name = if f.not_at_rest {
+            Phrase::StepRowMoving
+        } else {
+            Phrase::StepRow
+        };
+        let mut row = vec![
+            name.with(lang, &[(k + 1).to_string()]),
+            num(lang, f.change.t, 5),
+            signed(lang, f.change.du, 4),
+            num(lang, f.change.u_before, 4),
+        ];
+        match &f.fit {
+            Ok(r) => row.extend(params.iter().map(|&p| value_cell(r, p, lang))),
+            Err(e) => row.push(Phrase::NoStepFit.with(lang, &[e.text(lang)])),
+        }
+        rows.push(row);
+    }
+    PerStepTable { header, rows }
+}
+
+/// The per-step table's text.
+pub struct PerStepTable {
+    pub header: Vec<String>,
+    pub rows: Vec<Vec<String>>,
+}
+
+/// What a student reads under the per-step table: which values differ beyond their
+/// intervals (a first hint of nonlinearity), or that every step agrees.
+pub fn agreement_lines(
+    joint: &FitReport,
+    fits: &[StepFit],
+    instant_step: f64,
+    lang: Lang,
+) -> Vec<String> {
+    match agreement(joint, fits, instant_step) {
+        Agreement::Agree => vec![Phrase::StepsAgree.get(lang).to_string()],
+        Agreement::Unknown => vec![Phrase::StepsUnknown.get(lang).to_string()],
+        Agreement::Differ(list) => list
+            .iter()
+            .map(|d| {
+                let joint = interval(lang, d.joint);
+                Phrase::StepDiffers.with(
+                    lang,
+                    &[
+                        (d.step + 1).to_string(),
+                        num(lang, d.t, 5),
+                        d.param.name().to_string(),
+                        num(lang, d.value, 4),
+                        joint,
+                    ],
+                )
+            })
+            .collect(),
+    }
+}
+
+/// The per-step job's progress: "Fitting step 2 of 4…".
+pub fn per_step_progress((k, n): (usize, usize), lang: Lang) -> String {
+    Phrase::PerStepRunning.with(lang, &[(k + 1).to_string(), n.max(1).to_string()])
+}
+
+/// Which change the handles act on, on a multi-step record.
+pub fn handles_on_largest(index: usize, t: f64, lang: Lang) -> String {
+    Phrase::HandlesOnLargest.with(lang, &[(index + 1).to_string(), num(lang, t, 5)])
 }

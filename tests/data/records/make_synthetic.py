@@ -143,12 +143,40 @@ def rc_ladder():
     return "\n".join(rows) + "\n"
 
 
+def multistep_heater():
+    """A heater driven through four steps of its power (20 -> 40 -> 60 -> 30 -> 45 %), each
+    switched between two samples of a 1 s logger that logs the command it last saw: the
+    first-order plant 0.8 e^{-4 s}/(40 s + 1) from 25 degC at rest, 0.05 degC white noise,
+    600 rows `time (s),heater (%),temperature (degC)`."""
+    rng = random.Random(4)
+    kp, tau, td, y0 = 0.8, 40.0, 4.0, 25.0
+    switches = [(0.0, 20.0), (50.4, 40.0), (200.7, 60.0), (350.2, 30.0), (480.5, 45.0)]
+
+    def command(t):
+        return [u for (ts, u) in switches if ts <= t][-1]
+
+    def temperature(t):
+        y = y0
+        for (ts, u), (_, before) in zip(switches[1:], switches[:-1]):
+            s = t - ts - td
+            if s > 0:
+                y += kp * (u - before) * (1 - math.exp(-s / tau))
+        return y
+
+    rows = ["time (s),heater (%),temperature (degC)"]
+    for k in range(600):
+        t = float(k)
+        rows.append(f"{t:.0f},{command(t):.1f},{temperature(t) + rng.gauss(0, 0.05):.3f}")
+    return "\n".join(rows) + "\n"
+
+
 FILES = {
     "tclab_step_q1_50_synthetic.csv": tclab_step,
     "tclab_step_q1_50_dropouts_synthetic.csv": tclab_dropouts,
     "pendulum_aprbs_synthetic.txt": pendulum,
     "rlc_step_underdamped_synthetic.csv": rlc,
     "rc2_square_wave_adc_synthetic.csv": rc_ladder,
+    "multistep_heater_synthetic.csv": multistep_heater,
 }
 
 if __name__ == "__main__":
