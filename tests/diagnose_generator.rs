@@ -353,7 +353,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
     let mut truth_structure = structure(truth_code, true);
     truth_structure.drift = drift;
     let start = structure(start_code, false);
-    let start_y0 = y0_held.unwrap_or(y0);
+    let mut start_y0 = y0_held.unwrap_or(y0);
 
     // The record: t0 + 6–10 × the slowest time constant + the dead time after the step.
     let after = rng.range(SETTLING_MULTIPLE) * slowest + v.get(Param::Td);
@@ -398,6 +398,11 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
         v.set(Param::Td, v.get(Param::Td) - lead);
     } else {
         v.set(Param::Ta, lead);
+    }
+    if drift {
+        // The drift's origin is the first change's instant: the logged one, `lead` later.
+        v.set(Param::Y0, y0 + v.get(Param::Drift) * lead);
+        start_y0 = v.get(Param::Y0);
     }
     let truth = Model::new(truth_structure, v);
     let noise_sd = rng.range(NOISE_FRACTION) * effect;
