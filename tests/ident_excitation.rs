@@ -51,7 +51,9 @@ const TOLERANCE: f64 = 0.05;
 /// Records per kind of excitation.
 const CASES_PER_KIND: usize = 12;
 /// Clean first-order steps diagnosed.
-const CLEAN_CASES: usize = 40;
+const CLEAN_CASES: usize = 60;
+/// Clean first-order multi-step, pulse and doublet records diagnosed.
+const CLEAN_MULTI_CASES: usize = 15;
 
 /// The seeded generator of the project, with a few shapes on top.
 struct Draw(Lcg);
@@ -178,10 +180,17 @@ fn schedule(kind: Kind, n: usize, span: f64, g: &mut Draw) -> Vec<(usize, f64)> 
 
 /// The logged input and its true steps: each level change shown at sample k came at
 /// t_k − lead, the lead in [0, Ts) (one phase for a clocked actuator, one per change else).
-fn input(kind: Kind, times: &[f64], u0: f64, span: f64, g: &mut Draw) -> (Input, f64) {
+fn input(
+    kind: Kind,
+    shared_phase: bool,
+    times: &[f64],
+    u0: f64,
+    span: f64,
+    g: &mut Draw,
+) -> (Input, f64) {
     let n = times.len();
     let ts = times[1] - times[0];
-    let clocked = matches!(kind, Kind::Prbs | Kind::RampedStep);
+    let clocked = shared_phase || matches!(kind, Kind::Prbs | Kind::RampedStep);
     let phase = g.0.unit() * ts;
     let mut logged = vec![u0; n];
     let mut steps = Vec::new();
@@ -224,9 +233,9 @@ fn truth(code: &str, ts: f64, record: f64, g: &mut Draw) -> Values {
     v
 }
 
-/// The effect's noise: white or AR(1), of standard deviation `sd`.
-fn noise(n: usize, sd: f64, g: &mut Draw) -> (Vec<f64>, String) {
-    if g.0.unit() < 0.5 {
+/// The effect's noise: white or AR(1) (white only when `white`), of standard deviation `sd`.
+fn noise(n: usize, sd: f64, white: bool, g: &mut Draw) -> (Vec<f64>, String) {
+    if g.0.unit() < 0.5 || white {
         ((0..n).map(|_| sd * g.gaussian()).collect(), "white".into())
     } else {
         let phi = g.range((0.5, 0.9));
@@ -244,6 +253,18 @@ fn noise(n: usize, sd: f64, g: &mut Draw) -> (Vec<f64>, String) {
 
 /// A record of `kind` driving the truth `code`, with seed `seed`.
 fn generate(kind: Kind, code: &'static str, seed: u64) -> Case {
+    generate_with(kind, false, false, code, seed)
+}
+
+/// [`generate`], every change sharing one phase against the logger when `shared_phase`,
+/// the noise white when `white`.
+fn generate_with(
+    kind: Kind,
+    shared_phase: bool,
+    white: bool,
+    code: &'static str,
+    seed: u64,
+) -> Case {
     let mut g = Draw::new(seed);
     let n = g.count((400, 1500));
     let ts = [0.1, 0.5, 1.0, 2.0][g.0.below(4)];
@@ -254,7 +275,7 @@ fn generate(kind: Kind, code: &'static str, seed: u64) -> Case {
     let span = g.range((5.0, 20.0));
     let mut values = truth(code, ts, record, &mut g);
     values.set(Param::Y0, y0);
-    let (input, first_lead) = input(kind, &times, u0, span, &mut g);
+    let (input, first_lead) = input(kind, shared_phase, &times, u0, span, &mut g);
     // The truth's excitation: the logged changes (for t0 and the plot), the true instants.
     let logged = Excitation::measured(&times, &input.logged, None, Hold::Zoh)
         .expect("the generated input changes");
@@ -267,7 +288,7 @@ fn generate(kind: Kind, code: &'static str, seed: u64) -> Case {
     let clean = Model::new(s, values).simulate(&exact, &times).unwrap();
     let effect = values.get(Param::Kp).abs() * exact.du_scale();
     let sd = g.range((0.002, 0.02)) * effect;
-    let (e, colour) = noise(n, sd, &mut g);
+    let (e, colour) = noise(n, sd, white, &mut g);
     let quantum = (g.0.unit() < 0.5).then(|| g.range((0.2, 1.0)) * sd);
     let output = clean
         .iter()
@@ -483,25 +504,60 @@ fn clean_step(seed: u64) -> Case {
     }
 }
 
+/// The first cause `diagnose` names on a case from `P1`, as the CLI runs it, and its chain.
+fn first_cause(case: &Case) -> (Cause, Vec<&'static str>) {
+    let experiment = Experiment::new(&case.test, None, None, None).unwrap();
+    let data = experiment.fit_data(&case.test).unwrap();
+    let start = experiment.structure("P1", false, &data).unwrap();
+    let start_values = experiment.operating_point(&data).map(|y0| {
+        let mut v = Values::default();
+        v.set(Param::Y0, y0);
+        v
+    });
+    let report = diagnose(&data, start, start_values, &DiagnoseOptions::default()).unwrap();
+    let chain = report.steps.iter().map(|s| s.cause.id()).collect();
+    (report.steps.first().map_or(Cause::None, |s| s.cause), chain)
+}
+
+/// Clean first-order multi-step, pulse and doublet records (white noise, each change at its
+/// own instant inside its sampling period) diagnosed from `P1` come out `none`.
+///
+/// Known gap, measured on branch h-ident (`cargo test --test ident_excitation -- --ignored
+/// --nocapture`): 13/15 `none`; the two misses are doublets named `offset` / `drift`: one
+/// step-instant lead `Ta` cannot put every change at its own instant, and the misfit left at
+/// each change is what a free Y0 or a drift takes up (with one shared phase: 14/15; with
+/// AR(1) noise 9/15, BIC taking coloured noise for evidence). Needs a lead per change in
+/// the model (models.rs, fit.rs).
+#[test]
+#[ignore = "known gap: one step-instant lead for every change (see the doc comment)"]
+fn clean_first_order_multi_step_records_come_out_none() {
+    let kinds = [Kind::MultiStep, Kind::Pulse, Kind::Doublet];
+    let mut none = 0;
+    for i in 0..CLEAN_MULTI_CASES {
+        let case = generate_with(kinds[i % kinds.len()], false, true, "P1", 5000 + i as u64);
+        let (first, chain) = first_cause(&case);
+        if first == Cause::None {
+            none += 1;
+        } else {
+            println!("NOT NONE {} → {chain:?}", case.label);
+        }
+    }
+    println!("clean multi-step records: {none}/{CLEAN_MULTI_CASES} none");
+    assert!(
+        none as f64 >= MIN_CLEAN_NONE * CLEAN_MULTI_CASES as f64,
+        "{none}/{CLEAN_MULTI_CASES} none"
+    );
+}
+
 #[test]
 fn clean_first_order_steps_between_samples_come_out_none() {
     let mut none = 0;
     for seed in 0..CLEAN_CASES as u64 {
         let case = clean_step(seed);
-        let experiment = Experiment::new(&case.test, None, None, None).unwrap();
-        let data = experiment.fit_data(&case.test).unwrap();
-        let start = experiment.structure("P1", false, &data).unwrap();
-        let start_values = experiment.operating_point(&data).map(|y0| {
-            let mut v = Values::default();
-            v.set(Param::Y0, y0);
-            v
-        });
-        let report = diagnose(&data, start, start_values, &DiagnoseOptions::default()).unwrap();
-        let first = report.steps.first().map_or(Cause::None, |s| s.cause);
+        let (first, chain) = first_cause(&case);
         if first == Cause::None {
             none += 1;
         } else {
-            let chain: Vec<_> = report.steps.iter().map(|s| s.cause.id()).collect();
             println!("NOT NONE {} → {chain:?}", case.label);
         }
     }

@@ -532,15 +532,17 @@ fn least_squares(columns: &[Vec<f64>], target: &[f64]) -> Option<Vec<f64>> {
     let scale = (0..m).map(|i| a[i][i].abs()).fold(0.0, f64::max);
     for col in 0..m {
         let pivot = (col..m).max_by(|&x, &y| a[x][col].abs().total_cmp(&a[y][col].abs()))?;
-        if !(a[pivot][col].abs() > 1e-12 * scale) {
+        let size = a[pivot][col].abs();
+        if size.is_nan() || size <= 1e-12 * scale {
             return None;
         }
         a.swap(col, pivot);
-        for row in 0..m {
+        let pivot_row = a[col].clone();
+        for (row, r) in a.iter_mut().enumerate() {
             if row != col {
-                let f = a[row][col] / a[col][col];
-                for k in col..=m {
-                    a[row][k] -= f * a[col][k];
+                let f = r[col] / pivot_row[col];
+                for (x, p) in r[col..].iter_mut().zip(&pivot_row[col..]) {
+                    *x -= f * p;
                 }
             }
         }
