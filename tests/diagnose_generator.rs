@@ -10,6 +10,15 @@
 //! time constant (+ the dead time), uniform or Gaussian noise of standard deviation 0.2–2 % of
 //! the step's effect |Kp·Δu| (of the ramp's rise for an integrator).
 //!
+//! The step comes between two samples, as in a real test (an operator's switch, a logger not
+//! synchronised with the actuator): the true change is at t0, the logged input column shows
+//! it at the first sample at or after t0, and the diagnosis sees only that column
+//! (`Excitation::measured`, zero-order hold, so each start model may move the change up to
+//! one sampling period earlier: `Ta`, or a `Td` down to −Ts). The truth is written as the
+//! record sees it: its lead inside the sampling period is `Ta` (or comes off `Td`), so that
+//! it reproduces the exact response on the logged input and the dead time compared is the
+//! delay after the sample that shows the step. The offset cases start at the step itself.
+//!
 //! Recovery: Kp and every true time constant (the real poles as a set, since their order is
 //! arbitrary; Tw for an underdamped pair; Tz; Td) within 10 %, except the drift cases (Kp and
 //! Tp1 only); Y0 and Drift are never compared. A case that misses also prints what the true
@@ -19,7 +28,7 @@
 //! Run with `cargo test --test diagnose_generator -- --nocapture` to see the figures, with
 //! `DEGRAU_DIAGNOSE_CASES=40` for more cases per effect.
 
-use degrau::ident::excitation::Excitation;
+use degrau::ident::excitation::{Excitation, Hold};
 use std::sync::OnceLock;
 use std::time::Instant;
 
@@ -199,6 +208,8 @@ struct Case {
     index: usize,
     seed: u64,
     truth: Model,
+    /// The true instant of the step (s); the record shows it at the next sample.
+    t_change: f64,
     data: FitData,
     start: Structure,
     /// The value Y0 is held at in the start model.
@@ -228,10 +239,11 @@ impl Case {
             s += &format!("{}={:.4} ", p.name(), v.get(p));
         }
         s += &format!(
-            "| start {} (Y0 held at {:.3}) | t0={:.2} du={:.3} N={} Ts={:.4} | noise {} sd={:.4} ({:.2} % of effect {:.3})",
+            "| start {} (Y0 held at {:.3}) | t0={:.2} (true {:.4}) du={:.3} N={} Ts={:.4} | noise {} sd={:.4} ({:.2} % of effect {:.3})",
             self.start.code(),
             self.start_y0,
             self.data.input.t0(),
+            self.t_change,
             self.data.input.du(),
             self.data.times.len(),
             self.data.sampling_period(),
@@ -244,9 +256,11 @@ impl Case {
     }
 }
 
+/// The structure of `code` on a record whose step came between samples (`lead`).
 fn structure(code: &str, free_offset: bool) -> Structure {
     let mut s = Structure::parse(code).unwrap();
     s.free_offset = free_offset;
+    s.lead = true;
     s
 }
 
@@ -339,7 +353,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
     let mut truth_structure = structure(truth_code, true);
     truth_structure.drift = drift;
     let start = structure(start_code, false);
-    let start_y0 = y0_held.unwrap_or(y0);
+    let mut start_y0 = y0_held.unwrap_or(y0);
 
     // The record: t0 + 6–10 × the slowest time constant + the dead time after the step.
     let after = rng.range(SETTLING_MULTIPLE) * slowest + v.get(Param::Td);
@@ -370,9 +384,27 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
         v.set(Param::Drift, total / record);
     }
 
+    // The exact response to the step at t0, sampled; the record logs the input at the
+    // first sample at or after t0, and the truth is written as that record sees it.
+    let clean = Model::new(truth_structure, v)
+        .simulate(&Excitation::step(t0, du), &times)
+        .unwrap();
+    let k = times.partition_point(|&t| t < t0);
+    let lead = times[k] - t0;
+    let logged: Vec<f64> = (0..n).map(|i| if i < k { 0.0 } else { du }).collect();
+    let before_record = (k == 0).then_some(0.0);
+    let setup = Excitation::measured(&times, &logged, before_record, Hold::Zoh).unwrap();
+    if truth_structure.delay {
+        v.set(Param::Td, v.get(Param::Td) - lead);
+    } else {
+        v.set(Param::Ta, lead);
+    }
+    if drift {
+        // The drift's origin is the first change's instant: the logged one, `lead` later.
+        v.set(Param::Y0, y0 + v.get(Param::Drift) * lead);
+        start_y0 = v.get(Param::Y0);
+    }
     let truth = Model::new(truth_structure, v);
-    let setup = Excitation::step(t0, du);
-    let clean = truth.simulate(&setup, &times).unwrap();
     let noise_sd = rng.range(NOISE_FRACTION) * effect;
     let gaussian = rng.unit() < 0.5;
     let y = clean
@@ -391,6 +423,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
         index,
         seed,
         truth,
+        t_change: t0,
         data: FitData {
             times,
             y,
@@ -878,7 +911,13 @@ fn the_generator_keeps_its_ranges() {
             let du = d.input.du().abs();
             assert!(du >= DU.0 && du <= DU.1, "{}", case.describe());
             let record = d.times[n - 1] - d.times[0];
-            let t0_share = (d.input.t0() - d.times[0]) / record;
+            let t0_share = (case.t_change - d.times[0]) / record;
+            let lead = d.input.t0() - case.t_change;
+            assert!(
+                lead >= 0.0 && lead < d.input.lead_range,
+                "{}: the step must come inside the sampling period before the sample showing it",
+                case.describe()
+            );
             let sd_share = case.noise_sd / case.effect;
             assert!(
                 sd_share >= NOISE_FRACTION.0 && sd_share <= NOISE_FRACTION.1,

@@ -606,7 +606,8 @@ fn explain(
     let t0 = data.input.t0();
     let t_first = data.times.first().copied().unwrap_or(t0);
     let t_last = data.times.last().copied().unwrap_or(t0);
-    let effect = (extended.model.get(Param::Kp) * data.input.du()).abs();
+    // The effect of the input's largest excursion from u0 (the step's, for one step).
+    let effect = (extended.model.get(Param::Kp) * data.input.du_scale()).abs();
     let region = |kind: residuals::RegionKind| {
         analysis
             .as_ref()

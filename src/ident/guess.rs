@@ -258,8 +258,26 @@ pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
         .unwrap_or_else(|| guess_as_given(data, structure, y0))
 }
 
-/// [`auto_guess`] in the record's units as they are.
+/// [`auto_guess`] in the record's units as they are: read off the curve for one step
+/// from rest, by least squares on the whole record otherwise ([`regression_guess`]).
 fn guess_as_given(data: &FitData, structure: Structure, y0: Option<f64>) -> Values {
+    if needs_regression(data, structure) {
+        let start = curve_guess(data, structure, y0);
+        return regression_guess(data, structure, y0, start).unwrap_or(start);
+    }
+    curve_guess(data, structure, y0)
+}
+
+/// Whether the curve's features cannot be read as one step's response from rest: the input
+/// moves more than once (several changes, a ramped step, a first-order hold) or the output
+/// was not at rest (an initial transient to start).
+fn needs_regression(data: &FitData, structure: Structure) -> bool {
+    let input = &data.input;
+    input.is_multi_step() || input.steps.len() > 1 || !input.ramps.is_empty() || structure.transient
+}
+
+/// The guess read off the curve of the first change (the notes' methods).
+fn curve_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Values {
     let f = features_as_given(data, y0);
     let duration = data.duration();
     let ts = data.sampling_period();
@@ -326,6 +344,211 @@ fn guess_as_given(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
         }
     }
     v
+}
+
+/// Lags tried by [`regression_guess`], as multiples of the sampling period up to half the
+/// record (log-spaced).
+const REGRESSION_LAGS: usize = 12;
+/// Dead time's share of the total lag tried by [`regression_guess`].
+const DELAY_SHARES: [f64; 4] = [0.05, 0.2, 0.4, 0.7];
+/// Damping ratios tried by [`regression_guess`] for an underdamped pair.
+const ZETAS: [f64; 3] = [0.2, 0.45, 0.75];
+
+/// A least-squares guess from the whole record, driven by the measured input: the output is
+/// linear in Kp, Y0, the initial transient's X1… and the drift once the lags are chosen, so
+/// a small grid over the total lag (and the dead time's share of it, and ζ) solves those by
+/// linear least squares at each point and keeps the point of least squared error, then
+/// refines the lag about it. Cheap (a few dozen simulations) and robust on any input: multi-
+/// step, pulse, doublet, PRBS, ramped steps. `start` gives the values the grid does not
+/// choose (Tz's sign, a third pole's share). `None` when no point can be solved.
+fn regression_guess(
+    data: &FitData,
+    structure: Structure,
+    y0: Option<f64>,
+    start: Values,
+) -> Option<Values> {
+    let ts = data.sampling_period();
+    let duration = data.duration();
+    if !(ts > 0.0 && duration > ts) {
+        return None;
+    }
+    let mut base = start;
+    base.set(Param::Ta, 0.5 * data.input.lead_range);
+    let shape = |lag: f64, share: f64, zeta: f64| {
+        let mut v = base;
+        let td = if structure.delay { share * lag } else { 0.0 };
+        let own = lag - td;
+        set_lags(&mut v, structure, own);
+        if structure.underdamped {
+            v.set(Param::Zeta, zeta);
+            v.set(
+                Param::Tw,
+                natural_period(own / (2.0 * zeta.max(0.3)), ts, duration),
+            );
+        }
+        if structure.zero {
+            let tp = v.get(Param::Tp1).max(v.get(Param::Tw));
+            let sign = if start.get(Param::Tz) < 0.0 {
+                -1.0
+            } else {
+                1.0
+            };
+            v.set(Param::Tz, sign * 0.3 * tp);
+        }
+        v.set(Param::Td, td);
+        v
+    };
+    let lo = (2.0 * ts).ln();
+    let hi = (0.5 * duration).ln().max(lo);
+    let step = (hi - lo) / (REGRESSION_LAGS - 1) as f64;
+    let mid_share = if structure.delay {
+        DELAY_SHARES[1]
+    } else {
+        0.0
+    };
+    let mid_zeta = ZETAS[1];
+    let solve = |v: Values| linear_part(data, structure, y0, v);
+    // 1. The total lag, at middle shapes.
+    let mut best = (0..REGRESSION_LAGS)
+        .filter_map(|i| {
+            let lag = (lo + step * i as f64).exp();
+            solve(shape(lag, mid_share, mid_zeta)).map(|(v, e)| (lag, mid_share, mid_zeta, v, e))
+        })
+        .min_by(|a, b| a.4.total_cmp(&b.4))?;
+    // 2. The shape at that lag.
+    let shares: &[f64] = if structure.delay {
+        &DELAY_SHARES
+    } else {
+        &[0.0]
+    };
+    let zetas: &[f64] = if structure.underdamped {
+        &ZETAS
+    } else {
+        &[ZETAS[1]]
+    };
+    for &share in shares {
+        for &zeta in zetas {
+            if let Some((v, e)) = solve(shape(best.0, share, zeta))
+                && e < best.4
+            {
+                best = (best.0, share, zeta, v, e);
+            }
+        }
+    }
+    // 3. The lag again, on a finer grid about the best.
+    for k in [-3.0, -2.0, -1.0, 1.0, 2.0, 3.0] {
+        let lag = best.0 * (k * step / 4.0).exp();
+        if let Some((v, e)) = solve(shape(lag, best.1, best.2))
+            && e < best.4
+        {
+            best = (lag, best.1, best.2, v, e);
+        }
+    }
+    Some(best.3)
+}
+
+/// The parameters the output is linear in, for the lags of `v`: Kp always, Y0 when not
+/// held (`y0`), X1… with an initial transient, the drift; solved by least squares on every
+/// sample. The values with them set and the sum of squared errors, or `None` when the
+/// model cannot be simulated or the regressors are degenerate.
+fn linear_part(
+    data: &FitData,
+    structure: Structure,
+    y0: Option<f64>,
+    v: Values,
+) -> Option<(Values, f64)> {
+    let mut linear = vec![Param::Kp];
+    if structure.transient {
+        linear.extend(
+            [Param::X1, Param::X2, Param::X3]
+                .into_iter()
+                .take(structure.poles as usize),
+        );
+    }
+    if structure.drift {
+        linear.push(Param::Drift);
+    }
+    let mut base = v;
+    for &p in &linear {
+        base.set(p, 0.0);
+    }
+    base.set(Param::Kp, 1.0);
+    base.set(Param::Y0, 0.0);
+    let simulate = |values: Values| {
+        Model::new(structure, values)
+            .simulate(&data.input, &data.times)
+            .ok()
+    };
+    let kp_response = simulate(base)?;
+    let mut columns = vec![kp_response.clone()];
+    for &p in &linear[1..] {
+        let mut with = base;
+        with.set(p, 1.0);
+        let r = simulate(with)?;
+        columns.push(r.iter().zip(&kp_response).map(|(a, b)| a - b).collect());
+    }
+    let target: Vec<f64> = match y0 {
+        Some(level) => data.y.iter().map(|y| y - level).collect(),
+        None => {
+            columns.push(vec![1.0; data.y.len()]);
+            linear.push(Param::Y0);
+            data.y.clone()
+        }
+    };
+    let coefficients = least_squares(&columns, &target)?;
+    let mut out = v;
+    for (&p, &c) in linear.iter().zip(&coefficients) {
+        out.set(p, c);
+    }
+    if let Some(level) = y0 {
+        out.set(Param::Y0, level);
+    }
+    let sse = target
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let fit: f64 = columns
+                .iter()
+                .zip(&coefficients)
+                .map(|(c, a)| c[i] * a)
+                .sum();
+            (t - fit).powi(2)
+        })
+        .sum::<f64>();
+    sse.is_finite().then_some((out, sse))
+}
+
+/// Linear least squares by the normal equations (a handful of columns), with partial
+/// pivoting; `None` when they are singular or not finite.
+fn least_squares(columns: &[Vec<f64>], target: &[f64]) -> Option<Vec<f64>> {
+    let m = columns.len();
+    let mut a = vec![vec![0.0; m + 1]; m];
+    for i in 0..m {
+        for j in 0..m {
+            a[i][j] = columns[i].iter().zip(&columns[j]).map(|(x, y)| x * y).sum();
+        }
+        a[i][m] = columns[i].iter().zip(target).map(|(x, y)| x * y).sum();
+    }
+    let scale = (0..m).map(|i| a[i][i].abs()).fold(0.0, f64::max);
+    for col in 0..m {
+        let pivot = (col..m).max_by(|&x, &y| a[x][col].abs().total_cmp(&a[y][col].abs()))?;
+        let size = a[pivot][col].abs();
+        if size.is_nan() || size <= 1e-12 * scale {
+            return None;
+        }
+        a.swap(col, pivot);
+        let pivot_row = a[col].clone();
+        for (row, r) in a.iter_mut().enumerate() {
+            if row != col {
+                let f = r[col] / pivot_row[col];
+                for (x, p) in r[col..].iter_mut().zip(&pivot_row[col..]) {
+                    *x -= f * p;
+                }
+            }
+        }
+    }
+    let x: Vec<f64> = (0..m).map(|i| a[i][m] / a[i][i]).collect();
+    x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
 /// Tz from the curve: a dip first gives a right-half-plane zero (Tz < 0); an overshoot

@@ -190,7 +190,8 @@ fn clamp(x: f64, lo: f64, hi: f64) -> f64 {
 ///
 /// - response_start = t0 + Td (Td = 0 without a dead time): the first instant the model's
 ///   output can differ from Y0.
-/// - settled = t0 + the model's 2 % settling time, from the exact step response of
+/// - settled = the last input change + the model's 2 % settling time (t0 + it for one step),
+///   from the exact step response of
 ///   G(s) (dead time included, as `stepinfo` counts it). A model that does not settle
 ///   (integrator) or is invalid has settled = the last sample time (no tail).
 ///
@@ -217,8 +218,10 @@ pub fn boundaries(model: &Model, data: &FitData) -> Boundaries {
         .and_then(|tf| StepResponse::new(&tf, 1.0).ok())
         .and_then(|r| StepInfo::of_response(&r, &StepInfoOptions::default()).settling_time);
     let response_start = clamp(t0 + td, first, last);
+    // With several changes the response settles after the last one's transient.
+    let last_change = data.input.changes.last().map_or(t0, |c| c.t.max(t0));
     let settled = match settling {
-        Some(ts) => clamp(t0 + ts, response_start, last),
+        Some(ts) => clamp(last_change + ts, response_start, last),
         None => last,
     };
     Boundaries {
