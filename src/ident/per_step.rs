@@ -4,16 +4,17 @@
 //! against another differing beyond them is a nonlinearity (the notes' "repetir o teste
 //! várias vezes (subida e descida)").
 //!
-//! Change k's window runs from the sample after the previous change's response began (the
-//! previous change itself, or the record's start) to the last sample before the next change,
-//! so it holds the level the change left from and the response it caused. On it the change
+//! Change k's window runs from the last third of the stretch since the previous change (or
+//! the record's start) to the last sample before the next change, so it holds the level the
+//! change left from, where the previous response had most nearly settled, and the response
+//! it caused. On it the change
 //! is one step from that level: Y0 estimated (the level before it is not the record's
 //! operating point), an initial transient estimated when the output still moved before it
 //! (the previous step had not settled, [`super::rest`]), the same step-instant lead as the
 //! joint fit.
 
 use super::excitation::{Excitation, InputChange};
-use super::fit::{FitData, FitError, FitOptions, FitReport, fit};
+use super::fit::{FitData, FitError, FitObserver, FitOptions, FitReport, fit};
 use super::guess::auto_guess;
 use super::models::Structure;
 
@@ -28,14 +29,16 @@ pub struct StepFit {
     pub fit: Result<FitReport, FitError>,
 }
 
+/// The share of the stretch since the previous change a window keeps before its change.
+pub const BEFORE_SHARE: f64 = 1.0 / 3.0;
+
 /// The data of change `k`'s window, as one step from the level before it.
 pub fn window_data(data: &FitData, k: usize) -> Option<FitData> {
     let changes = &data.input.changes;
     let change = *changes.get(k)?;
-    let start = match k {
-        0 => data.times.first().copied()?,
-        _ => changes[k - 1].t,
-    };
+    let first = data.times.first().copied()?;
+    let since = if k == 0 { first } else { changes[k - 1].t };
+    let start = change.t - BEFORE_SHARE * (change.t - since).max(0.0);
     let end = changes.get(k + 1).map_or(f64::INFINITY, |next| next.t);
     let keep: Vec<usize> = (0..data.times.len())
         .filter(|&i| data.times[i] >= start && data.times[i] < end)
@@ -51,6 +54,38 @@ pub fn window_data(data: &FitData, k: usize) -> Option<FitData> {
     })
 }
 
+/// Change `k` of `data` fitted on its own window with `structure`'s process model (see the
+/// module docs), reporting to `observer` (which may cancel it); `None` when there is no
+/// change `k`.
+pub fn fit_change(
+    data: &FitData,
+    k: usize,
+    structure: Structure,
+    options: &FitOptions,
+    observer: &mut dyn FitObserver,
+) -> Option<StepFit> {
+    let window = window_data(data, k)?;
+    let not_at_rest = super::rest::rest_before(&window).is_not_at_rest();
+    let s = Structure {
+        free_offset: true,
+        drift: false,
+        lead: window.input.lead_range > 0.0,
+        transient: not_at_rest,
+        ..structure
+    };
+    let guess = auto_guess(&window, s, None);
+    let span = (
+        window.times.first().copied().unwrap_or(f64::NAN),
+        window.times.last().copied().unwrap_or(f64::NAN),
+    );
+    Some(StepFit {
+        change: *data.input.changes.get(k)?,
+        window: span,
+        not_at_rest,
+        fit: fit(&window, s, guess, options, observer),
+    })
+}
+
 /// Every change of `data` fitted on its own window with `structure`'s process model (see
 /// the module docs); empty for a record with one change (the joint fit is that change's).
 pub fn per_step_fits(data: &FitData, structure: Structure, options: &FitOptions) -> Vec<StepFit> {
@@ -58,28 +93,7 @@ pub fn per_step_fits(data: &FitData, structure: Structure, options: &FitOptions)
         return Vec::new();
     }
     (0..data.input.changes.len())
-        .filter_map(|k| {
-            let window = window_data(data, k)?;
-            let not_at_rest = super::rest::rest_before(&window).is_not_at_rest();
-            let s = Structure {
-                free_offset: true,
-                drift: false,
-                lead: window.input.lead_range > 0.0,
-                transient: not_at_rest,
-                ..structure
-            };
-            let guess = auto_guess(&window, s, None);
-            let span = (
-                window.times.first().copied().unwrap_or(f64::NAN),
-                window.times.last().copied().unwrap_or(f64::NAN),
-            );
-            Some(StepFit {
-                change: data.input.changes[k],
-                window: span,
-                not_at_rest,
-                fit: fit(&window, s, guess, options, &mut ()),
-            })
-        })
+        .filter_map(|k| fit_change(data, k, structure, options, &mut ()))
         .collect()
 }
 
@@ -117,6 +131,6 @@ mod tests {
             assert!((r.model.get(Param::Kp) - 1.7).abs() < 1e-4, "{f:?}");
             assert!((r.model.get(Param::Tp1) - 9.0).abs() < 1e-3, "{f:?}");
         }
-        assert!(!fits[0].not_at_rest && fits[1].window.0 == 20.0);
+        assert!(!fits[0].not_at_rest && fits[1].window.0 == 100.0 - 80.0 / 3.0);
     }
 }

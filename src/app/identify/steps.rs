@@ -6,11 +6,9 @@
 
 use crate::app::job::{Context, Job, Waker};
 use crate::ident::excitation::{Excitation, InputChange};
-use crate::ident::fit::{FitData, FitObserver, FitOptions, FitReport, Progress, fit};
-use crate::ident::guess::auto_guess;
+use crate::ident::fit::{FitData, FitObserver, FitOptions, FitReport, Progress};
 use crate::ident::models::{Param, Structure};
-use crate::ident::per_step::{StepFit, window_data};
-use crate::ident::rest::rest_before;
+use crate::ident::per_step::{StepFit, fit_change};
 
 /// The input plot's data, derived from the fit data (rebuilt with them, never per frame).
 #[derive(Debug, Clone, Default)]
@@ -192,38 +190,6 @@ impl PerStepState {
         let job = self.job.as_ref()?;
         Some(job.progress.unwrap_or((0, 0)))
     }
-}
-
-/// Change `k` fitted on its own window, as [`crate::ident::per_step::per_step_fits`] fits
-/// each (the same window, structure and guess), one change at a time so that the job can
-/// report progress and stop between and inside the fits.
-fn fit_change(
-    data: &FitData,
-    k: usize,
-    structure: Structure,
-    options: &FitOptions,
-    observer: &mut dyn FitObserver,
-) -> Option<StepFit> {
-    let window = window_data(data, k)?;
-    let not_at_rest = rest_before(&window).is_not_at_rest();
-    let s = Structure {
-        free_offset: true,
-        drift: false,
-        lead: window.input.lead_range > 0.0,
-        transient: not_at_rest,
-        ..structure
-    };
-    let guess = auto_guess(&window, s, None);
-    let span = (
-        window.times.first().copied().unwrap_or(f64::NAN),
-        window.times.last().copied().unwrap_or(f64::NAN),
-    );
-    Some(StepFit {
-        change: *data.input.changes.get(k)?,
-        window: span,
-        not_at_rest,
-        fit: fit(&window, s, guess, options, observer),
-    })
 }
 
 /// Stops a per-step fit when its job is cancelled.
