@@ -28,7 +28,7 @@ fn click(h: &mut Harness<'_, DegrauApp>, label: &str) {
 #[track_caller]
 fn assert_on_the_locus(h: &Harness<'_, DegrauApp>) {
     let s = &h.state().design;
-    let kp = s.settings.kp;
+    let kp = h.state().saved.design.feedback.kp;
     let g = h.state().system().transfer_function().unwrap();
     for p in &s.feedback.closed_poles {
         let r = relative_residual(&g.num(), &g.den(), kp, *p);
@@ -41,8 +41,8 @@ fn dragging_a_closed_loop_pole_moves_k_and_the_closed_loop_step() {
     let mut h = harness();
     click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
     let s = &h.state().design;
-    assert!(s.settings.closed);
-    assert_eq!(s.settings.kp, 1.0);
+    assert!(h.state().saved.design.feedback.closed);
+    assert_eq!(h.state().saved.design.feedback.kp, 1.0);
     let den = s
         .feedback
         .closed
@@ -67,9 +67,9 @@ fn dragging_a_closed_loop_pole_moves_k_and_the_closed_loop_step() {
     kit::drag_by(&mut h, &label, Vec2::new(25.0, -60.0), 6);
     let s = &h.state().design;
     assert!(
-        s.settings.kp > 5.0,
+        h.state().saved.design.feedback.kp > 5.0,
         "Kp followed the drag up the branch: {}",
-        s.settings.kp
+        h.state().saved.design.feedback.kp
     );
     assert_eq!(
         h.state().system(),
@@ -81,7 +81,8 @@ fn dragging_a_closed_loop_pole_moves_k_and_the_closed_loop_step() {
     assert_ne!(&before, after, "the closed-loop step followed");
     let info = s.feedback.closed.as_ref().unwrap().info.as_ref().unwrap();
     let g = h.state().system().transfer_function().unwrap();
-    let dc = s.settings.kp * g.dc_gain() / (1.0 + s.settings.kp * g.dc_gain());
+    let dc = h.state().saved.design.feedback.kp * g.dc_gain()
+        / (1.0 + h.state().saved.design.feedback.kp * g.dc_gain());
     assert!(
         (info.steady_state.unwrap() - 2.0 * dc).abs() < 1e-9,
         "the closed loop's own final value"
@@ -94,7 +95,8 @@ fn dragging_a_closed_loop_pole_moves_k_and_the_closed_loop_step() {
         .unwrap();
     let shown: f64 = kp_text.parse().unwrap();
     assert!(
-        (shown - s.settings.kp).abs() <= 1e-5 * s.settings.kp,
+        (shown - h.state().saved.design.feedback.kp).abs()
+            <= 1e-5 * h.state().saved.design.feedback.kp,
         "{kp_text}"
     );
 }
@@ -112,10 +114,10 @@ fn an_overshoot_spec_shades_its_region() {
     let none = filled(&h);
     click(&mut h, "Specs");
     click(&mut h, "overshoot");
-    assert_eq!(h.state().design.settings.specs.overshoot, Some(10.0));
+    assert_eq!(h.state().saved.design.feedback.specs.overshoot, Some(10.0));
     assert_eq!(filled(&h), none + 2, "two wedges where ζ < ζ(10 %)");
     kit::type_number(&mut h, "Mp ≤", 0, "5");
-    assert_eq!(h.state().design.settings.specs.overshoot, Some(5.0));
+    assert_eq!(h.state().saved.design.feedback.specs.overshoot, Some(5.0));
 }
 
 #[test]
@@ -141,8 +143,11 @@ fn typed_coefficients_and_k_found_for_an_overshoot() {
     click(&mut h, "overshoot");
     click(&mut h, "Find K");
     let s = &h.state().design;
-    assert_eq!(format!("{:.2}", s.settings.kp), "2.86");
-    assert!(s.settings.closed, "the answer's loop is shown");
+    assert_eq!(format!("{:.2}", h.state().saved.design.feedback.kp), "2.86");
+    assert!(
+        h.state().saved.design.feedback.closed,
+        "the answer's loop is shown"
+    );
     h.get_by_label_contains("Kp = 2.8615");
     let os = s
         .feedback
@@ -223,8 +228,120 @@ fn the_formulas_sit_beside_the_exact_metrics_and_the_inverse_places_a_pair() {
 }
 
 #[test]
-fn a_dead_time_says_it_needs_an_approximant() {
+fn a_dead_time_is_closed_through_its_pade_approximant_said_approximate() {
     let mut h = harness();
     kit::type_number(&mut h, "Dead time θ", 0, "0.5");
-    h.get_by_label_contains("cannot be closed exactly");
+    click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
+    h.get_by_label_contains(
+        "replaced by its Padé (3, 3) approximant: the closed loop is approximate",
+    );
+    h.get_by_label_contains(
+        "Root locus of the loop with the dead time replaced by its Padé approximant: approximate.",
+    );
+    h.get_by_label("closed loop y(t), Padé approximate");
+    let s = &h.state().design;
+    assert_eq!(s.feedback.approximant.map(|a| (a.m, a.n)), Some((3, 3)));
+    // Three poles of G and three of the approximant.
+    assert_eq!(s.feedback.closed_poles.len(), 6);
+    // Each is a root of 1 + Kp·G·Padé (3, 3), built here from G and the notes' formula.
+    let g = h.state().system().transfer_function().unwrap();
+    let (pn, pd) = degrau::lti::approx::pade_coefficients(0.5, 3, 3).unwrap();
+    let mul = |a: &[f64], b: &[f64]| {
+        let mut out = vec![0.0; a.len() + b.len() - 1];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] += x * y;
+            }
+        }
+        out
+    };
+    let (num, den) = (mul(&g.num(), &pn), mul(&g.den(), &pd));
+    for p in &s.feedback.closed_poles {
+        let r = relative_residual(&num, &den, 1.0, *p);
+        assert!(r < 1e-9, "pole {p}: residual {r}");
+    }
+    // Another order from the choice.
+    click(&mut h, "Padé order (m, n) of the dead time");
+    click(&mut h, "(1, 1)");
+    assert_eq!(
+        h.state().saved.design.feedback.pade,
+        degrau::lti::feedback::PadeOrder { m: 1, n: 1 }
+    );
+    assert_eq!(h.state().design.feedback.closed_poles.len(), 4);
+    h.get_by_label_contains("Padé (1, 1) approximant: the closed loop is approximate");
+    // And in Portuguese.
+    h.state_mut().saved.lang = degrau::text::Lang::Pt;
+    h.run_steps(3);
+    h.get_by_label_contains(
+        "substituído pela sua aproximação de Padé (1, 1): a malha fechada é aproximada",
+    );
+}
+
+#[test]
+fn the_loop_is_still_closed_with_its_gain_after_a_restart() {
+    use degrau::app::persist::FILE_NAME;
+    let dir = std::env::temp_dir().join(format!("degrau-app-loop-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(FILE_NAME);
+    let mut h = Harness::builder()
+        .with_size([1500.0, 2600.0])
+        .build_ui_state(
+            |ui, app: &mut DegrauApp| app.show(ui),
+            DegrauApp::with_state_file(path.clone()),
+        );
+    h.run_steps(3);
+    click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
+    kit::type_number(&mut h, "Kp", 0, "4");
+    click(&mut h, "Specs");
+    click(&mut h, "overshoot");
+    let kept = h.state().saved.design.feedback.clone();
+    assert!(kept.closed && kept.kp == 4.0 && kept.specs.overshoot == Some(10.0));
+    // The saver thread writes it; poll the file for up to 2 s.
+    let start = std::time::Instant::now();
+    loop {
+        let on_disk = std::fs::read_to_string(&path)
+            .ok()
+            .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok());
+        if on_disk.is_some_and(|v| v["feedback"]["kp"] == 4.0 && v["feedback"]["closed"] == true) {
+            break;
+        }
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(2),
+            "not saved"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    drop(h);
+    let restored = DegrauApp::with_state_file(path.clone());
+    assert!(restored.notices.is_empty(), "{:?}", restored.notices);
+    assert_eq!(restored.saved.design.feedback, kept);
+    // The restored session shows the closed loop at once: 0.5·4 added to 25.
+    let den = restored
+        .design
+        .feedback
+        .closed
+        .as_ref()
+        .expect("closed")
+        .tf
+        .as_ref()
+        .unwrap()
+        .den();
+    assert!((den[3] - 27.0).abs() < 1e-12, "{den:?}");
+    // A gain beyond the limits in the file falls back to the defaults, named.
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    v["feedback"]["kp"] = serde_json::json!(1e300);
+    std::fs::write(&path, v.to_string()).unwrap();
+    let bad = DegrauApp::with_state_file(path.clone());
+    assert_eq!(bad.saved.design.feedback, Default::default());
+    assert!(
+        bad.notices
+            .iter()
+            .any(|n| format!("{n:?}").contains("feedback")),
+        "{:?}",
+        bad.notices
+    );
+    drop((restored, bad));
+    std::fs::remove_dir_all(&dir).ok();
 }

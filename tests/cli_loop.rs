@@ -60,6 +60,11 @@ fn the_notes_loop_with_unit_gain() {
     assert!((num(&v["crossing_frequency"]) - 15f64.sqrt()).abs() < 1e-10);
     assert!(v["breakaway"].is_array());
     assert!(v.get("locus").is_none());
+    assert_eq!(
+        v["approximant"],
+        Value::Null,
+        "no dead time, no approximant"
+    );
 }
 
 #[test]
@@ -152,17 +157,128 @@ fn horner(p: &[f64], s: C) -> C {
     })
 }
 
+fn poles(v: &Value) -> Vec<C> {
+    v["closed_loop"]["poles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| (num(&p[0]), num(&p[1])))
+        .collect()
+}
+
 #[test]
-fn a_dead_time_in_the_loop_is_refused_in_both_languages() {
+fn a_dead_time_is_closed_through_its_default_pade_3_3() {
+    let v = json(&[
+        "loop", "--num", "1", "--den", "10,1", "--delay", "2", "--kp", "3", "--json",
+    ]);
+    assert_eq!(v["approximant"]["kind"], "pade");
+    assert_eq!(v["approximant"]["m"], 3);
+    assert_eq!(v["approximant"]["n"], 3);
+    assert_eq!(num(&v["approximant"]["delay"]), 2.0);
+    // Padé (3, 3) of e^{−2s}: (−8s³ + 48s² − 120s + 120)/(8s³ + 48s² + 120s + 120), so
+    // 1 + 3G = 0 ⇔ (10s + 1)(8s³ + 48s² + 120s + 120) + 3(−8s³ + 48s² − 120s + 120) = 0.
+    let d = [8.0, 48.0, 120.0, 120.0];
+    let n = [-8.0, 48.0, -120.0, 120.0];
+    let mut characteristic = [0.0; 5];
+    for (i, c) in d.iter().enumerate() {
+        characteristic[i] += 10.0 * c;
+        characteristic[i + 1] += c;
+    }
+    for (i, c) in n.iter().enumerate() {
+        characteristic[i + 1] += 3.0 * c;
+    }
+    let roots = poles(&v);
+    assert_eq!(roots.len(), 4);
+    for s in roots {
+        let value = horner(&characteristic, s);
+        let r = s.0.hypot(s.1);
+        let size: f64 = characteristic
+            .iter()
+            .enumerate()
+            .map(|(i, c)| c.abs() * r.powi(4 - i as i32))
+            .sum();
+        assert!(value.0.hypot(value.1) <= 1e-10 * size, "{s:?}");
+    }
+    // Every approximant is 1 at s = 0: the steady state is the exact loop's 3/(1 + 3).
+    assert!((num(&v["steady_state"]) - 0.75).abs() < 1e-12);
+    let out = degrau(&["loop", "--num", "1", "--den", "10,1", "--json"]);
+    let exact: Value = serde_json::from_str(&stdout(&out)).unwrap();
+    assert_eq!(exact["approximant"], Value::Null);
+}
+
+#[test]
+fn the_pade_1_1_loop_has_its_closed_form_poles() {
+    let v = json(&[
+        "loop", "--num", "1", "--den", "10,1", "--delay", "2", "--kp", "3", "--pade", "1,1",
+        "--json",
+    ]);
+    assert_eq!(
+        (v["approximant"]["m"].clone(), v["approximant"]["n"].clone()),
+        (1.into(), 1.into())
+    );
+    // e^{−2s} ≈ (1 − s)/(1 + s): (10s + 1)(s + 1) + 3(1 − s) = 10s² + 8s + 4,
+    // s = −0.4 ± j√0.24.
+    let mut roots = poles(&v);
+    roots.sort_by(|a, b| a.1.total_cmp(&b.1));
+    assert_eq!(roots.len(), 2);
+    for (s, sign) in roots.iter().zip([-1.0, 1.0]) {
+        assert!((s.0 + 0.4).abs() < 1e-12, "{s:?}");
+        assert!((s.1 - sign * 0.24f64.sqrt()).abs() < 1e-12, "{s:?}");
+    }
+    let den: Vec<f64> = v["closed_loop"]["den"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(num)
+        .collect();
+    let scale = den[0] / 10.0;
+    for (a, b) in den.iter().zip([10.0, 8.0, 4.0]) {
+        assert!((a / scale - b).abs() < 1e-12, "{den:?}");
+    }
+}
+
+#[test]
+fn the_text_says_the_loop_is_approximate_in_both_languages() {
     for (lang, words) in [
-        ("en", "rational approximant"),
-        ("pt", "aproximação racional"),
+        (
+            "en",
+            "Padé (2, 2) approximant: the closed loop is approximate",
+        ),
+        (
+            "pt",
+            "aproximação de Padé (2, 2): a malha fechada é aproximada",
+        ),
     ] {
         let out = degrau(&[
-            "--lang", lang, "loop", "--num", "1", "--den", "1,1", "--delay", "0.5",
+            "--lang", lang, "loop", "--num", "1", "--den", "1,1", "--delay", "0.5", "--pade",
+            "2,2", "--locus",
         ]);
-        assert_eq!(out.status.code(), Some(2));
-        assert!(stderr(&out).contains(words), "{}", stderr(&out));
+        assert!(out.status.success(), "{}", stderr(&out));
+        assert!(stdout(&out).contains(words), "{}", stdout(&out));
+        assert!(
+            stdout(&out).contains(if lang == "en" {
+                "Padé-approximated loop, approximate"
+            } else {
+                "aproximada por Padé, aproximado"
+            }),
+            "{}",
+            stdout(&out)
+        );
+    }
+}
+
+#[test]
+fn a_bad_pade_order_and_a_bad_spec_are_refused() {
+    for order in ["4,2", "0,0", "3", "a,b", "9,9"] {
+        let out = degrau(&[
+            "loop", "--num", "1", "--den", "1,1", "--delay", "0.5", "--pade", order,
+        ]);
+        assert_eq!(out.status.code(), Some(2), "{order}");
+        assert!(
+            stderr(&out).contains("not a Padé order"),
+            "{}",
+            stderr(&out)
+        );
     }
     let out = degrau(&["loop", "--num", "1", "--den", "1,1", "--find", "mp=3"]);
     assert_eq!(out.status.code(), Some(2));

@@ -200,6 +200,7 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
         markers: f.take("markers", d.design.markers),
         options: f.checked("options", d.design.options, |o| o.validate()),
         phase_form: f.take("phase_form", d.design.phase_form),
+        feedback: f.checked("feedback", d.design.feedback, |l| l.validate()),
         system,
     };
     let mut saved = Saved {

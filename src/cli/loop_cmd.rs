@@ -3,6 +3,11 @@
 //! (`--find "overshoot<=10"`, …), its exact step metrics, the error constants and
 //! steady-state errors, the critical gain and crossing frequency, the breakaway points and,
 //! with `--locus`, the root locus's points. Text, or one JSON object with stable keys.
+//!
+//! A system with a dead time is closed through the Padé (m, n) approximant of its delay
+//! (`--pade m,n`, default [`PadeOrder::default`]): everything after is of the approximated
+//! loop, the text says so and the JSON names the approximant (`approximant`, null when G has
+//! no delay).
 
 use std::io::{self, Write};
 use std::process::ExitCode;
@@ -10,7 +15,11 @@ use std::process::ExitCode;
 use clap::Args;
 use serde::Serialize;
 
-use crate::lti::feedback::{ErrorConstants, GainSearch, Limit, Spec, SteadyStateErrors, find_gain};
+use crate::lti::approx::ApproxError;
+use crate::lti::feedback::{
+    ErrorConstants, GainSearch, Limit, LoopApproximant, PadeOrder, RationalLoop, Spec,
+    SteadyStateErrors, find_gain,
+};
 use crate::lti::locus::{Breakaway, Locus, Side};
 use crate::lti::{LtiError, StepInfoOptions, StepResponse, TransferFunction, analyse};
 use crate::text::cli::StepPhrase;
@@ -23,7 +32,8 @@ const LOOP_EXAMPLES: &str = "\
 Examples:
   degrau loop --num 0.5 --den 1,7,15,25 --kp 1
   degrau loop --num 1 --den 1,2,0 --find \"overshoot<=10\" --json
-  degrau loop --poles \"-1+2j,-1-2j,-5\" --zeros -10 --gain 0.5 --locus --json";
+  degrau loop --poles \"-1+2j,-1-2j,-5\" --zeros -10 --gain 0.5 --locus --json
+  degrau loop --num 1 --den 10,1 --delay 2 --kp 3 --pade 3,3 --json";
 
 /// `degrau loop` options: the system as for `degrau step`, then the gain or the specs.
 #[derive(Debug, Default, Args)]
@@ -47,7 +57,8 @@ pub struct LoopArgs {
     /// Scale k so that G(0) is K.
     #[arg(long, value_name = "K", allow_hyphen_values = true, value_parser = finite_f64)]
     pub dc_gain: Option<f64>,
-    /// Transport delay θ of G in seconds (a loop around it cannot be closed exactly).
+    /// Transport delay θ of G in seconds (a loop around it is closed through its Padé
+    /// approximant, see --pade: the result is approximate).
     #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = finite_f64)]
     pub delay: Option<f64>,
     /// The proportional gain Kp of the loop (default 1).
@@ -58,6 +69,11 @@ pub struct LoopArgs {
     /// commas or given again.
     #[arg(long, value_name = "SPEC")]
     pub find: Vec<String>,
+    /// The Padé order "m,n" (m zeros, n poles, m ≤ n, 1 ≤ n ≤ 8) standing in for the dead
+    /// time in the loop (default 3,3: its phase follows the delay's within about 1° up to
+    /// ωθ = π). Ignored without --delay.
+    #[arg(long, value_name = "M,N")]
+    pub pade: Option<String>,
     /// Add the root locus's points (K from 0 to ∞) to the report.
     #[arg(long)]
     pub locus: bool,
@@ -74,8 +90,10 @@ pub struct LoopArgs {
 #[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
 pub enum LoopError {
     Cli(#[from] CliError),
-    /// G has a dead time: the loop is not rational.
-    DelayInLoop,
+    /// The delay's approximant could not be built.
+    Approx(ApproxError),
+    /// A `--pade` value that is not `m,n` with an order offered.
+    BadPade(String),
     /// A `--find` item that is not `name<=number` with a known name.
     BadSpec(String),
     /// No gain K > 0 meets the specs.
@@ -84,10 +102,7 @@ pub enum LoopError {
 
 impl From<LtiError> for LoopError {
     fn from(e: LtiError) -> Self {
-        match e {
-            LtiError::DelayInLoop => LoopError::DelayInLoop,
-            e => LoopError::Cli(CliError::Lti(e)),
-        }
+        LoopError::Cli(CliError::Lti(e))
     }
 }
 
@@ -95,7 +110,8 @@ impl Localize for LoopError {
     fn text(&self, lang: Lang) -> String {
         match self {
             LoopError::Cli(e) => e.text(lang),
-            LoopError::DelayInLoop => P::DelayNeedsApproximant.get(lang).to_string(),
+            LoopError::Approx(e) => e.text(lang),
+            LoopError::BadPade(item) => LoopErrorText::BadPade(item.clone()).text(lang),
             LoopError::BadSpec(item) => LoopErrorText::BadSpec(item.clone()).text(lang),
             LoopError::NoGain => LoopErrorText::NoGain.text(lang),
         }
@@ -105,6 +121,10 @@ impl Localize for LoopError {
 /// The JSON report of `degrau loop`.
 #[derive(Debug, Serialize)]
 pub struct LoopReport {
+    /// The Padé approximant standing in for G's dead time (`{"kind": "pade", "m", "n",
+    /// "delay"}`), null when G has none: when set, every other key is of the approximated
+    /// loop.
+    pub approximant: Option<LoopApproximant>,
     pub kp: f64,
     /// [lo, hi] of the gains meeting `--find` (hi null when unbounded), null without it.
     pub kp_range: Option<[Option<f64>; 2]>,
@@ -155,7 +175,10 @@ pub struct LocusKeys {
 
 /// Everything `degrau loop` found.
 pub struct LoopAnalysis {
-    pub open_loop: TransferFunction,
+    /// G as given (with its dead time, if any).
+    pub system: TransferFunction,
+    /// G made rational (the loop's open loop) and the approximant used, if any.
+    pub rational: RationalLoop,
     pub kp: f64,
     pub search: Option<GainSearch>,
     pub closed: Analysis,
@@ -177,6 +200,24 @@ impl LoopArgs {
             ..Default::default()
         };
         step.spec()
+    }
+
+    /// The Padé order of `--pade` (the default without it).
+    pub fn pade_order(&self) -> Result<PadeOrder, LoopError> {
+        let Some(text) = &self.pade else {
+            return Ok(PadeOrder::default());
+        };
+        let bad = || LoopError::BadPade(text.clone());
+        let (m, n) = text.split_once(',').ok_or_else(bad)?;
+        let order = PadeOrder {
+            m: m.trim().parse().map_err(|_| bad())?,
+            n: n.trim().parse().map_err(|_| bad())?,
+        };
+        if order.is_valid() {
+            Ok(order)
+        } else {
+            Err(bad())
+        }
     }
 
     /// The specs of `--find`.
@@ -204,10 +245,9 @@ pub fn parse_spec(item: &str) -> Result<Spec, LoopError> {
 
 /// The loop of the flags: the gain (given or found), the closed loop and its analysis.
 pub fn analyse_loop(args: &LoopArgs) -> Result<LoopAnalysis, LoopError> {
-    let g = args.spec()?.transfer_function()?;
-    if g.delay() != 0.0 {
-        return Err(LoopError::DelayInLoop);
-    }
+    let system = args.spec()?.transfer_function()?;
+    let rational = RationalLoop::new(&system, args.pade_order()?).map_err(LoopError::Approx)?;
+    let g = rational.g.clone();
     let specs = args.specs()?;
     let search = if specs.is_empty() {
         None
@@ -234,7 +274,8 @@ pub fn analyse_loop(args: &LoopArgs) -> Result<LoopAnalysis, LoopError> {
     };
     Ok(LoopAnalysis {
         constants: ErrorConstants::of(&g, kp),
-        open_loop: g,
+        system,
+        rational,
         kp,
         search,
         closed,
@@ -260,6 +301,7 @@ impl LoopReport {
         let cl = &a.closed.tf;
         let crossing = a.locus.crossings.first();
         Self {
+            approximant: a.rational.approximant,
             kp: a.kp,
             kp_range: a.search.as_ref().map(|s| {
                 let (lo, hi) = s.range;
@@ -312,10 +354,18 @@ pub fn human_loop_report(a: &LoopAnalysis, lang: Lang) -> String {
         Limit::Finite(x) => n(x),
         Limit::Infinite => "∞".to_string(),
     };
-    let mut lines = vec![
-        L::OpenLoop(a.open_loop.describe()).text(lang),
-        L::Gain(n(a.kp)).text(lang),
-    ];
+    let mut lines = vec![L::OpenLoop(a.system.describe()).text(lang)];
+    if let Some(p) = &a.rational.approximant {
+        lines.push(
+            L::Approximant {
+                m: p.m,
+                n: p.n,
+                delay: n(p.delay),
+            }
+            .text(lang),
+        );
+    }
+    lines.push(L::Gain(n(a.kp)).text(lang));
     if let Some(s) = &a.search {
         let hi = if s.range.1.is_finite() {
             n(s.range.1)
@@ -357,7 +407,12 @@ pub fn human_loop_report(a: &LoopAnalysis, lang: Lang) -> String {
     }
     if let Some(locus) = &a.drawn {
         lines.push(String::new());
-        lines.push(P::LocusHeading.get(lang).to_string());
+        let heading = if a.rational.approximant.is_some() {
+            P::LocusHeadingApproximate
+        } else {
+            P::LocusHeading
+        };
+        lines.push(heading.get(lang).to_string());
         for p in &locus.points {
             let roots: Vec<String> = p
                 .roots

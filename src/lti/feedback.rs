@@ -6,15 +6,95 @@
 //! t_r, Mp) beside the exact metrics, with their inverse (a pair of specs to ζ, ωn and the
 //! canonical G(s)).
 //!
-//! A closed loop around a dead time is not rational: it is refused
-//! ([`LtiError::DelayInLoop`]) until the delay is replaced by a rational approximant.
+//! A closed loop around a dead time is not rational: every exact function here refuses it
+//! ([`LtiError::DelayInLoop`]). A caller that wants the loop anyway asks for
+//! [`RationalLoop::new`]: G with e^{−θs} replaced by its Padé (m, n) approximant, and the
+//! approximant recorded so that everything drawn or printed from it says it is approximate.
+//! The library stays strict; the replacement is explicit at the call sites (the Design
+//! mode's loop, `degrau loop`).
 
 use serde::{Deserialize, Serialize};
 
+use super::approx::{ApproxError, delay_free_with_pade};
 use super::locus::{self, Side};
 use super::poly::C64;
 use super::tf::TransferFunction;
 use super::{LtiError, StepInfo, StepInfoOptions, StepResponse};
+
+/// The order (m, n) of the Padé approximant a loop around a dead time uses: m zeros, n
+/// poles, m ≤ n, 1 ≤ n ≤ [`PadeOrder::MAX_N`].
+///
+/// The default (3, 3) matches e^{−θs}'s Taylor series to order 6, and its phase stays within
+/// about 1° of the delay's −ωθ up to ωθ = π: past the frequency where the delay alone lags
+/// 180°, so far past any loop's crossover. A lower order is visibly off there ((1, 1) lags
+/// only 115° at ωθ = π); a higher one adds poles and zeros that crowd the root locus with
+/// branches of no interest and worsen the conditioning of the closed loop's roots.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub struct PadeOrder {
+    pub m: usize,
+    pub n: usize,
+}
+
+impl Default for PadeOrder {
+    fn default() -> Self {
+        Self { m: 3, n: 3 }
+    }
+}
+
+impl PadeOrder {
+    /// The largest n offered (beyond it the coefficients span too many decades).
+    pub const MAX_N: usize = 8;
+
+    /// Whether 1 ≤ n ≤ [`Self::MAX_N`] and m ≤ n.
+    pub fn is_valid(self) -> bool {
+        (1..=Self::MAX_N).contains(&self.n) && self.m <= self.n
+    }
+
+    /// The orders offered in a choice: (n − 1, n) and (n, n) for n = 1 … [`Self::MAX_N`].
+    pub fn offered() -> Vec<PadeOrder> {
+        (1..=Self::MAX_N)
+            .flat_map(|n| [PadeOrder { m: n - 1, n }, PadeOrder { m: n, n }])
+            .collect()
+    }
+}
+
+/// The rational stand-in a loop around a dead time uses (recorded so that the result is
+/// labelled approximate): Padé (m, n) of e^{−θs}, θ = `delay` seconds.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LoopApproximant {
+    /// Always `"pade"` (a stable JSON key).
+    pub kind: &'static str,
+    pub m: usize,
+    pub n: usize,
+    /// θ (s).
+    pub delay: f64,
+}
+
+/// The open loop a closed loop is built from: G itself when it has no dead time (exact), or
+/// G with its dead time replaced by a Padé approximant (`approximant` says which: everything
+/// derived from `g` is then approximate).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RationalLoop {
+    /// The rational open loop (no delay).
+    pub g: TransferFunction,
+    /// `None` when `g` is the system itself.
+    pub approximant: Option<LoopApproximant>,
+}
+
+impl RationalLoop {
+    /// `system` made rational with Padé `order` when it has a dead time.
+    pub fn new(system: &TransferFunction, order: PadeOrder) -> Result<Self, ApproxError> {
+        let PadeOrder { m, n } = order;
+        let g = delay_free_with_pade(system, m, n)?;
+        let approximant = (system.delay() != 0.0).then(|| LoopApproximant {
+            kind: "pade",
+            m,
+            n,
+            delay: system.delay(),
+        });
+        Ok(Self { g, approximant })
+    }
+}
 
 /// The input a response is computed for.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]

@@ -58,6 +58,15 @@ impl Localize for InputHeading {
 }
 
 impl Loop {
+    /// The closed loop's curve name, said approximate when a dead time was replaced.
+    pub fn closed_loop_curve(approximate: bool) -> Self {
+        if approximate {
+            Loop::ClosedLoopCurveApproximate
+        } else {
+            Loop::ClosedLoopCurve
+        }
+    }
+
     /// The name of an input in the "also plot the response to" choice.
     pub fn input_name(input: Input) -> Self {
         match input {
@@ -137,6 +146,8 @@ pub enum LoopError {
     /// A `--find` item that is not `name<=number`.
     BadSpec(String),
     NoGain,
+    /// A `--pade` value that is not `m,n` with 1 ≤ n ≤ the largest order and m ≤ n.
+    BadPade(String),
 }
 
 impl Localize for LoopError {
@@ -150,6 +161,17 @@ impl Localize for LoopError {
                     "--find \"{item}\" não é uma especificação: escreva nome<=número com um nome entre overshoot (sobressinal, %), settling (tempo de acomodação, s), rise (tempo de subida, s), ess_step, ess_ramp, por exemplo \"overshoot<=10\""
                 ),
             },
+            LoopError::BadPade(item) => {
+                let most = crate::lti::feedback::PadeOrder::MAX_N;
+                match lang {
+                    Lang::En => format!(
+                        "--pade \"{item}\" is not a Padé order: write m,n with 1 ≤ n ≤ {most} and 0 ≤ m ≤ n, e.g. \"3,3\""
+                    ),
+                    Lang::Pt => format!(
+                        "--pade \"{item}\" não é uma ordem de Padé: escreva m,n com 1 ≤ n ≤ {most} e 0 ≤ m ≤ n, por exemplo \"3,3\""
+                    ),
+                }
+            }
             LoopError::NoGain => lang
                 .pick(
                     "no proportional gain K > 0 meets every spec on the exact closed-loop response",
@@ -183,6 +205,12 @@ pub enum LoopLine {
     Asymptotes(String, String),
     /// The gain found, and its range (low, high).
     Found(String, String, String),
+    /// The dead time θ (s, written) replaced by Padé (m, n): the closed loop is approximate.
+    Approximant {
+        m: usize,
+        n: usize,
+        delay: String,
+    },
 }
 
 impl Localize for LoopLine {
@@ -245,6 +273,14 @@ impl Localize for LoopLine {
                 ),
                 Lang::Pt => format!(
                     "Kp = {k} adotado; todas as especificações valem para {lo} ≤ Kp ≤ {hi} (resposta exata em malha fechada); seus polos estão marcados ■ no plano s"
+                ),
+            },
+            LoopLine::Approximant { m, n, delay } => match lang {
+                Lang::En => format!(
+                    "Dead time e^(−θs), θ = {delay} s, replaced by its Padé ({m}, {n}) approximant: the closed loop is approximate"
+                ),
+                Lang::Pt => format!(
+                    "Tempo morto e^(−θs), θ = {delay} s, substituído pela sua aproximação de Padé ({m}, {n}): a malha fechada é aproximada"
                 ),
             },
             LoopLine::Asymptotes(c, angles) => match lang {
@@ -315,6 +351,10 @@ crate::phrases! {
         InputCurve => ("response", "resposta"),
         InputItself => ("input", "entrada"),
         ClosedLoopCurve => ("closed loop y(t)", "malha fechada y(t)"),
+        ClosedLoopCurveApproximate => (
+            "closed loop y(t), Padé approximate",
+            "malha fechada y(t), aproximada por Padé"
+        ),
         FormulasHeading => ("Second-order formulas vs the exact response", "Fórmulas de segunda ordem vs a resposta exata"),
         FormulasHelp => (
             "The formulas of the dominant pair (the closed loop's when it is closed) beside the exact metrics of the whole system: a third pole or a zero shows as a large difference.",
@@ -336,9 +376,18 @@ crate::phrases! {
         PlaceIt => ("Place on the s-plane", "Colocar no plano s"),
         ClosedLoopPole => ("closed-loop pole", "polo de malha fechada"),
         LocusGain => ("on the root locus", "no lugar das raízes"),
-        DelayNeedsApproximant => (
-            "A dead time e^(−θs) in the loop cannot be closed exactly: the closed loop is not a rational transfer function. Replace the delay by a rational approximant (Padé) to close the loop; the result is then approximate.",
-            "Um tempo morto e^(−θs) na malha não pode ser fechado exatamente: a malha fechada não é uma função de transferência racional. Substitua o atraso por uma aproximação racional (Padé) para fechar a malha; o resultado passa a ser aproximado."
+        LocusApproximate => (
+            "Root locus of the loop with the dead time replaced by its Padé approximant: approximate.",
+            "Lugar das raízes da malha com o tempo morto substituído pela sua aproximação de Padé: aproximado."
+        ),
+        LocusHeadingApproximate => (
+            "Root locus of the Padé-approximated loop, approximate (K, closed-loop poles):",
+            "Lugar das raízes da malha aproximada por Padé, aproximado (K, polos de malha fechada):"
+        ),
+        PadeOrderLabel => ("Padé order (m, n) of the dead time", "Ordem (m, n) de Padé do tempo morto"),
+        PadeOrderHelp => (
+            "m zeros and n poles standing in for e^(−θs) in the loop. (3, 3) follows the delay's phase within about 1° up to ωθ = π; a higher order adds branches to the root locus.",
+            "m zeros e n polos no lugar de e^(−θs) na malha. (3, 3) segue a fase do atraso a menos de cerca de 1° até ωθ = π; uma ordem maior acrescenta ramos ao lugar das raízes."
         ),
     }
 }
@@ -356,6 +405,10 @@ pub fn messages() -> Vec<Message> {
         &LoopError::BadSpec("mp=3".into()),
     ));
     all.push(Message::of("LoopError::NoGain", &LoopError::NoGain));
+    all.push(Message::of(
+        "LoopError::BadPade",
+        &LoopError::BadPade("4,2".into()),
+    ));
     for name in SpecName::ALL {
         all.push(Message::of(format!("SpecName::{name:?}"), &name));
     }
@@ -385,6 +438,14 @@ pub fn messages() -> Vec<Message> {
         ("BreakIn", LoopLine::Breakaway(false, n("-5.4"), n("9.9"))),
         ("Asymptotes", LoopLine::Asymptotes(n("1.5"), n("90°, 270°"))),
         ("Found", LoopLine::Found(n("2.86"), n("0"), n("2.86"))),
+        (
+            "Approximant",
+            LoopLine::Approximant {
+                m: 3,
+                n: 3,
+                delay: n("2"),
+            },
+        ),
     ] {
         all.push(Message::of(format!("LoopLine::{id}"), &line));
     }

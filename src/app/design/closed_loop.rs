@@ -4,14 +4,21 @@
 //! per system, Kp and thresholds; the error constants, the gain search's answer, the
 //! second-order check and the response to the chosen input). No egui here, and nothing is
 //! recomputed while drawing: the views read these caches.
+//!
+//! A system with a dead time is closed through a Padé approximant of its delay (of the
+//! order the student chose, [`PadeOrder`]): the open loop, the locus, the closed loop and
+//! the gain search are then of the approximated loop, and [`LoopDerived::approximant`]
+//! says so for the views to label them approximate.
 
 use serde::{Deserialize, Serialize};
 
+use crate::lti::approx::ApproxError;
 use crate::lti::feedback::{
-    ErrorConstants, FormulaCheck, GainSearch, Input, InputResponse, Spec, find_gain,
+    ErrorConstants, FormulaCheck, GainSearch, Input, InputResponse, LoopApproximant, PadeOrder,
+    RationalLoop, Spec, find_gain,
 };
 use crate::lti::locus::{Locus, Side};
-use crate::lti::{C64, LtiError, StepInfoOptions, TransferFunction};
+use crate::lti::{C64, StepInfoOptions, TransferFunction};
 
 use super::analysis::{Analysis, CURVE_SAMPLES};
 use super::state::System;
@@ -78,6 +85,23 @@ pub struct LoopSettings {
     pub specs: Specs,
     /// The input whose response is plotted beside the step (step: none more).
     pub input: Input,
+    /// The Padé order standing in for a dead time in the loop.
+    pub pade: PadeOrder,
+}
+
+impl LoopSettings {
+    /// Why these settings cannot be restored, if they cannot: Kp not finite or beyond
+    /// ±[`KP_LIMIT`], a Padé order out of range.
+    pub fn validate(&self) -> Result<(), String> {
+        if !(self.kp.is_finite() && self.kp.abs() <= KP_LIMIT) {
+            return Err(format!("the gain Kp = {} is beyond ±{KP_LIMIT:e}", self.kp));
+        }
+        if !self.pade.is_valid() {
+            let PadeOrder { m, n } = self.pade;
+            return Err(format!("the Padé order ({m}, {n}) is not one offered"));
+        }
+        Ok(())
+    }
 }
 
 impl Default for LoopSettings {
@@ -89,6 +113,7 @@ impl Default for LoopSettings {
             complementary: false,
             specs: Specs::default(),
             input: Input::Step,
+            pade: PadeOrder::default(),
         }
     }
 }
@@ -108,16 +133,20 @@ pub enum Found {
     /// No spec was set.
     NoSpecs,
     /// The search could not run.
-    Refused(LtiError),
+    Refused(ApproxError),
 }
 
 /// The derived data of the loop, recomputed only when its inputs change.
 #[derive(Debug, Clone, Default)]
 pub struct LoopDerived {
-    /// The system the locus is for.
-    system: Option<System>,
-    /// The open loop G(s) (no dead time), or why there is no loop.
-    pub open_loop: Option<Result<TransferFunction, LtiError>>,
+    /// The system and the Padé order the locus is for.
+    system: Option<(System, PadeOrder)>,
+    /// The open loop G(s) (rational: a dead time replaced by its Padé approximant), or why
+    /// there is no loop.
+    pub open_loop: Option<Result<TransferFunction, ApproxError>>,
+    /// The Padé approximant standing in for the system's dead time (`None` without one):
+    /// when set, everything of the loop is approximate.
+    pub approximant: Option<LoopApproximant>,
     pub locus: Option<Locus>,
     pub complementary: Option<Locus>,
     /// The locus's branches as plane points (cached for drawing).
@@ -152,9 +181,12 @@ impl LoopDerived {
         options: StepInfoOptions,
         dragging: bool,
     ) {
-        if self.system.as_ref() != Some(system) {
-            self.system = Some(system.clone());
-            self.open_loop = Some(open_loop(system));
+        let for_system = (system.clone(), settings.pade);
+        if self.system.as_ref() != Some(&for_system) {
+            self.system = Some(for_system);
+            let rational = open_loop(system, settings.pade);
+            self.approximant = rational.as_ref().ok().and_then(|r| r.approximant);
+            self.open_loop = Some(rational.map(|r| r.g));
             self.locus = None;
             self.complementary = None;
             self.branches.clear();
@@ -280,7 +312,7 @@ impl LoopDerived {
             Some(Ok(g)) => match find_gain(g, &list) {
                 Ok(Some(s)) => Found::Gain(s),
                 Ok(None) => Found::Nothing,
-                Err(e) => Found::Refused(e),
+                Err(e) => Found::Refused(e.into()),
             },
             Some(Err(why)) => Found::Refused(why.clone()),
             None => Found::NoSpecs,
@@ -311,13 +343,9 @@ impl LoopDerived {
     }
 }
 
-/// G(s) for the loop: refused with a delay (its words said by the view).
-fn open_loop(system: &System) -> Result<TransferFunction, LtiError> {
-    let g = system.transfer_function()?;
-    if g.delay() != 0.0 {
-        return Err(LtiError::DelayInLoop);
-    }
-    Ok(g)
+/// G(s) for the loop, rational: a dead time replaced by Padé `order`.
+fn open_loop(system: &System, order: PadeOrder) -> Result<RationalLoop, ApproxError> {
+    RationalLoop::new(&system.transfer_function()?, order)
 }
 
 fn branches(locus: &Locus) -> Vec<Vec<[f64; 2]>> {
@@ -388,14 +416,69 @@ mod tests {
     }
 
     #[test]
-    fn a_dead_time_leaves_no_loop() {
+    fn a_dead_time_is_closed_through_its_pade_approximant() {
+        // G = 1/(s + 1)·e^{−0.5 s}, Padé (1, 1): (−0.5 s + 2)/(0.5 s + 2)(s + 1).
         let system = System {
-            delay: 0.3,
+            delay: 0.5,
+            poles: vec![crate::app::design::state::Root::real(-1.0)],
+            zeros: Vec::new(),
+            gain: 1.0,
             ..System::default()
         };
+        let settings = LoopSettings {
+            pade: PadeOrder { m: 1, n: 1 },
+            ..shown()
+        };
         let mut d = LoopDerived::default();
-        d.refresh(&system, &shown(), StepInfoOptions::default(), false);
-        assert_eq!(d.open_loop, Some(Err(LtiError::DelayInLoop)));
-        assert!(d.closed.is_none() && d.locus.is_none());
+        d.refresh(&system, &settings, StepInfoOptions::default(), false);
+        let approximant = d.approximant.expect("the delay is approximated");
+        assert_eq!(
+            (approximant.m, approximant.n, approximant.delay),
+            (1, 1, 0.5)
+        );
+        assert!(d.locus.is_some(), "the approximated loop has a locus");
+        // Kp = 1: 1 + G = 0 ⇔ (0.5 s + 2)(s + 1) + (−0.5 s + 2) = 0.5 s² + 2 s + 4 = 0,
+        // s = −2 ± 2j.
+        let mut poles = d.closed_poles.clone();
+        poles.sort_by(|a, b| a.im.total_cmp(&b.im));
+        assert_eq!(poles.len(), 2);
+        assert!((poles[0] - C64::new(-2.0, -2.0)).norm() < 1e-9, "{poles:?}");
+        assert!((poles[1] - C64::new(-2.0, 2.0)).norm() < 1e-9, "{poles:?}");
+        // Another order is another loop.
+        let three = LoopSettings {
+            pade: PadeOrder::default(),
+            ..settings
+        };
+        d.refresh(&system, &three, StepInfoOptions::default(), false);
+        assert_eq!(d.approximant.map(|a| a.n), Some(3));
+        assert_eq!(d.closed_poles.len(), 4);
+    }
+
+    #[test]
+    fn a_system_without_dead_time_is_exact() {
+        let mut d = LoopDerived::default();
+        d.refresh(
+            &System::default(),
+            &shown(),
+            StepInfoOptions::default(),
+            false,
+        );
+        assert!(d.approximant.is_none());
+        assert!(matches!(d.open_loop, Some(Ok(_))));
+    }
+
+    #[test]
+    fn settings_out_of_range_are_refused() {
+        assert!(LoopSettings::default().validate().is_ok());
+        let huge = LoopSettings {
+            kp: f64::INFINITY,
+            ..LoopSettings::default()
+        };
+        assert!(huge.validate().is_err());
+        let order = LoopSettings {
+            pade: PadeOrder { m: 4, n: 2 },
+            ..LoopSettings::default()
+        };
+        assert!(order.validate().is_err());
     }
 }

@@ -3,7 +3,7 @@
 //! once per frame, after the views, so no view changes anything while drawing.
 
 use crate::lti::StepInfoOptions;
-use crate::lti::feedback::Input;
+use crate::lti::feedback::{Input, PadeOrder};
 
 use super::closed_loop::Specs;
 
@@ -105,4 +105,6 @@ pub enum Command {
     },
     /// The input whose response is plotted beside the step.
     SetInput(Input),
+    /// The Padé order standing in for a dead time in the loop.
+    SetPadeOrder(PadeOrder),
 }

@@ -2,31 +2,33 @@
 //! a slider, the root locus and its complementary half, the critical gain and breakaways,
 //! the error constants and steady-state errors, the specs (shaded on the s-plane, and the
 //! gain search that meets them on the exact response), the response to another input, and
-//! the second-order formulas beside the exact metrics with their inverse. Reads the
-//! session's caches only; returns commands.
+//! the second-order formulas beside the exact metrics with their inverse. A dead time is
+//! closed through its Padé approximant, of an order chosen here, and the loop says it is
+//! approximate. Reads the settings kept and the session's caches only; returns commands.
 
 use eframe::egui::{self, RichText, Ui};
 
 use crate::app::field::{LimitReason, Limits, NumberField};
 use crate::app::look::Look;
-use crate::lti::LtiError;
-use crate::lti::feedback::{Comparison, Input, Limit, SecondOrder, SpecPair};
+use crate::lti::feedback::{
+    Comparison, Input, Limit, LoopApproximant, PadeOrder, SecondOrder, SpecPair,
+};
 use crate::text::Lang;
 use crate::text::feedback::{Loop as P, LoopLine, SpecName};
 use crate::text::{Localize, feedback::InputHeading};
 
-use super::closed_loop::{Found, KP_LIMIT, Specs};
+use super::closed_loop::{Found, KP_LIMIT, LoopSettings, Specs};
 use super::commands::Command;
-use super::session::Session;
+use super::session::{Kept, Session};
 
 /// Width of a number field (points).
 const FIELD_WIDTH: f32 = 70.0;
 
 /// Draws the loop's section; the commands it asks for.
-pub fn show(ui: &mut Ui, session: &Session, look: &Look) -> Vec<Command> {
+pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let mut out = Vec::new();
-    let settings = &session.settings;
+    let settings = &kept.feedback;
     let derived = &session.feedback;
     ui.heading(P::LoopHeading.get(lang));
     let mut closed = settings.closed;
@@ -37,18 +39,14 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look) -> Vec<Command> {
     {
         out.push(Command::SetLoopClosed(closed));
     }
-    match &derived.open_loop {
-        Some(Err(LtiError::DelayInLoop)) => {
-            warn(ui, P::DelayNeedsApproximant.get(lang), look);
-            return out;
-        }
-        Some(Err(e)) => {
-            warn(ui, &e.text(lang), look);
-            return out;
-        }
-        _ => {}
+    if let Some(Err(e)) = &derived.open_loop {
+        warn(ui, &e.text(lang), look);
+        return out;
     }
-    out.extend(gain_controls(ui, session, lang));
+    if let Some(a) = &derived.approximant {
+        out.extend(approximant(ui, a, settings.pade, look));
+    }
+    out.extend(gain_controls(ui, session, settings, lang));
     let mut shown = settings.locus;
     let mut complementary = settings.complementary;
     ui.horizontal_wrapped(|ui| {
@@ -64,13 +62,13 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look) -> Vec<Command> {
     }
     locus_facts(ui, session, lang);
     constants(ui, session, lang);
-    out.extend(input_choice(ui, session, lang));
+    out.extend(input_choice(ui, settings, lang));
     // The specs and the formulas fold away (closed at first): a panel laid out but unseen
     // still costs every frame.
     let specs_shown = egui::CollapsingHeader::new(P::SpecsHeading.get(lang))
         .id_salt("loop specs")
         .default_open(false)
-        .show(ui, |ui| specs(ui, session, look));
+        .show(ui, |ui| specs(ui, session, settings, look));
     out.extend(specs_shown.body_returned.unwrap_or_default());
     let formulas_shown = egui::CollapsingHeader::new(P::FormulasHeading.get(lang))
         .id_salt("loop formulas")
@@ -84,9 +82,41 @@ fn warn(ui: &mut Ui, text: &str, look: &Look) {
     ui.add(egui::Label::new(RichText::new(text).color(look.palette.warning)).wrap());
 }
 
-fn gain_controls(ui: &mut Ui, session: &Session, lang: Lang) -> Vec<Command> {
+/// The dead time's Padé stand-in said approximate, and its order's choice.
+fn approximant(ui: &mut Ui, a: &LoopApproximant, order: PadeOrder, look: &Look) -> Vec<Command> {
+    let lang = look.lang;
+    let line = LoopLine::Approximant {
+        m: a.m,
+        n: a.n,
+        delay: lang.num(a.delay, 5),
+    };
+    warn(ui, &line.text(lang), look);
+    let name = |o: PadeOrder| format!("({}, {})", o.m, o.n);
+    let mut chosen = order;
+    egui::ComboBox::from_label(P::PadeOrderLabel.get(lang))
+        .selected_text(name(order))
+        .show_ui(ui, |ui| {
+            for o in PadeOrder::offered() {
+                ui.selectable_value(&mut chosen, o, name(o));
+            }
+        })
+        .response
+        .on_hover_text(P::PadeOrderHelp.get(lang));
+    if chosen == order {
+        Vec::new()
+    } else {
+        vec![Command::SetPadeOrder(chosen)]
+    }
+}
+
+fn gain_controls(
+    ui: &mut Ui,
+    session: &Session,
+    settings: &LoopSettings,
+    lang: Lang,
+) -> Vec<Command> {
     let mut out = Vec::new();
-    let kp = session.settings.kp;
+    let kp = settings.kp;
     let typed = NumberField::new("Kp", kp)
         .limits(Limits::new(-KP_LIMIT, KP_LIMIT, LimitReason::Gain))
         .width(FIELD_WIDTH)
@@ -108,6 +138,9 @@ fn locus_facts(ui: &mut Ui, session: &Session, lang: Lang) {
     let Some(locus) = &session.feedback.locus else {
         return;
     };
+    if session.feedback.approximant.is_some() {
+        ui.add(egui::Label::new(P::LocusApproximate.get(lang)).wrap());
+    }
     let n = |x: f64| lang.num(x, 5);
     let line = match locus.crossings.first() {
         Some(c) => LoopLine::Critical(n(c.k), n(c.omega)).text(lang),
@@ -198,11 +231,11 @@ fn spec_row(
     });
 }
 
-fn specs(ui: &mut Ui, session: &Session, look: &Look) -> Vec<Command> {
+fn specs(ui: &mut Ui, session: &Session, settings: &LoopSettings, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let mut out = Vec::new();
     ui.add(egui::Label::new(RichText::new(P::SpecsHelp.get(lang)).weak()).wrap());
-    let mut s: Specs = session.settings.specs;
+    let mut s: Specs = settings.specs;
     spec_row(ui, SpecName::Overshoot, &mut s.overshoot, 10.0, "%", lang);
     spec_row(ui, SpecName::Settling, &mut s.settling, 4.0, "s", lang);
     spec_row(ui, SpecName::Peak, &mut s.peak, 2.0, "s", lang);
@@ -211,7 +244,7 @@ fn specs(ui: &mut Ui, session: &Session, look: &Look) -> Vec<Command> {
     spec_row(ui, SpecName::WnMax, &mut s.wn_max, 10.0, "rad/s", lang);
     spec_row(ui, SpecName::EssStep, &mut s.ess_step, 0.1, "", lang);
     spec_row(ui, SpecName::EssRamp, &mut s.ess_ramp, 0.5, "", lang);
-    if s != session.settings.specs {
+    if s != settings.specs {
         out.push(Command::SetSpecs(s));
     }
     if ui
@@ -239,8 +272,8 @@ fn specs(ui: &mut Ui, session: &Session, look: &Look) -> Vec<Command> {
     out
 }
 
-fn input_choice(ui: &mut Ui, session: &Session, lang: Lang) -> Vec<Command> {
-    let mut input = session.settings.input;
+fn input_choice(ui: &mut Ui, settings: &LoopSettings, lang: Lang) -> Vec<Command> {
+    let mut input = settings.input;
     let name = |i: Input| P::input_name(i).get(lang);
     egui::ComboBox::from_label(P::ResponseTo.get(lang))
         .selected_text(name(input))
@@ -252,7 +285,7 @@ fn input_choice(ui: &mut Ui, session: &Session, lang: Lang) -> Vec<Command> {
     if input != Input::Step {
         ui.add(egui::Label::new(RichText::new(InputHeading(input).text(lang)).weak()).wrap());
     }
-    if input == session.settings.input {
+    if input == settings.input {
         Vec::new()
     } else {
         vec![Command::SetInput(input)]

@@ -57,7 +57,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
                     .show(ui, |ui| {
                         let mut out = system_panel::show(ui, session, kept, look);
                         ui.separator();
-                        out.extend(loop_panel::show(ui, session, look));
+                        out.extend(loop_panel::show(ui, session, kept, look));
                         out
                     })
                     .inner
@@ -153,7 +153,7 @@ fn splane_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec
             .halign(egui::Align::LEFT),
     );
     let overlay = locus_view::Overlay {
-        settings: &session.settings,
+        settings: &kept.feedback,
         derived: &session.feedback,
     };
     out.extend(splane::show(ui, &kept.system, state, look, Some(&overlay)));

@@ -30,6 +30,8 @@ pub struct Kept {
     pub options: StepInfoOptions,
     /// y(t) in amplitude–phase form rather than cos–sin.
     pub phase_form: bool,
+    /// The closed loop, the locus, the specs and the Padé order the student chose.
+    pub feedback: LoopSettings,
 }
 
 /// The Design mode's history and derived data.
@@ -42,9 +44,6 @@ pub struct Session {
     /// What the pointer is over on the s-plane.
     pub readout: Option<String>,
     pub presets: Vec<Preset>,
-    /// The closed loop, the locus and the specs the student chose (not yet in the state
-    /// file: `crate::app::persist` restores [`Kept`] field by field).
-    pub settings: LoopSettings,
     /// The closed loop's and the locus's derived data.
     pub feedback: LoopDerived,
     /// The root being dragged (its drag is one undoable edit).
@@ -66,10 +65,9 @@ impl Session {
             ghost: None,
             readout: None,
             presets: presets(),
-            settings: LoopSettings::default(),
             feedback: {
                 let mut f = LoopDerived::default();
-                f.refresh(&kept.system, &LoopSettings::default(), kept.options, false);
+                f.refresh(&kept.system, &kept.feedback, kept.options, false);
                 f
             },
             dragging: None,
@@ -96,7 +94,7 @@ impl Session {
         self.approx.refresh(&self.analysis);
         let dragging = self.dragging.is_some();
         self.feedback
-            .refresh(&kept.system, &self.settings, kept.options, dragging);
+            .refresh(&kept.system, &kept.feedback, kept.options, dragging);
     }
 
     /// Applies one command to `kept`, then brings the derived data up to date.
@@ -202,34 +200,34 @@ impl Session {
                     self.replace(kept, system);
                 }
             }
-            Command::SetLoopClosed(on) => self.settings.closed = on,
+            Command::SetLoopClosed(on) => kept.feedback.closed = on,
             Command::SetKp(kp) => {
                 if kp.is_finite() && kp.abs() <= KP_LIMIT {
-                    self.settings.kp = kp;
+                    kept.feedback.kp = kp;
                 }
             }
             Command::DragLoopPole { branch, re, im } => {
                 self.feedback
-                    .refresh(&kept.system, &self.settings, kept.options, false);
+                    .refresh(&kept.system, &kept.feedback, kept.options, false);
                 if let Some(k) = self.feedback.gain_at(branch, crate::lti::C64::new(re, im)) {
-                    self.settings.kp = k;
-                    self.settings.closed = true;
+                    kept.feedback.kp = k;
+                    kept.feedback.closed = true;
                 }
             }
             Command::SetLocus {
                 shown,
                 complementary,
             } => {
-                self.settings.locus = shown;
-                self.settings.complementary = complementary;
+                kept.feedback.locus = shown;
+                kept.feedback.complementary = complementary;
             }
-            Command::SetSpecs(specs) => self.settings.specs = specs,
+            Command::SetSpecs(specs) => kept.feedback.specs = specs,
             Command::FindGain => {
                 self.feedback
-                    .refresh(&kept.system, &self.settings, kept.options, false);
-                if let Some(k) = self.feedback.find(&self.settings.specs) {
-                    self.settings.kp = k;
-                    self.settings.closed = true;
+                    .refresh(&kept.system, &kept.feedback, kept.options, false);
+                if let Some(k) = self.feedback.find(&kept.feedback.specs) {
+                    kept.feedback.kp = k;
+                    kept.feedback.closed = true;
                 }
             }
             Command::PlaceSecondOrder { zeta, wn } => {
@@ -240,7 +238,12 @@ impl Session {
                     self.replace(kept, system);
                 }
             }
-            Command::SetInput(input) => self.settings.input = input,
+            Command::SetInput(input) => kept.feedback.input = input,
+            Command::SetPadeOrder(order) => {
+                if order.is_valid() {
+                    kept.feedback.pade = order;
+                }
+            }
         }
     }
 

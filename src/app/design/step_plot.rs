@@ -200,7 +200,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
         .feedback
         .closed
         .as_ref()
-        .filter(|_| session.settings.closed);
+        .filter(|_| kept.feedback.closed);
     if let Some(c) = closed {
         current.push(&c.curve);
     }
@@ -281,14 +281,18 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
                 draw_markers(plot, analysis, &kept.markers, look);
                 if let Some(c) = closed {
                     plot.line(
-                        Line::new(Loop::ClosedLoopCurve.get(lang), c.curve.clone())
-                            .color(palette.model)
-                            .width(2.2),
+                        Line::new(
+                            Loop::closed_loop_curve(session.feedback.approximant.is_some())
+                                .get(lang),
+                            c.curve.clone(),
+                        )
+                        .color(palette.model)
+                        .width(2.2),
                     );
                     draw_markers(plot, c, &kept.markers, look);
                 }
                 if let Some((curve, reference)) = input {
-                    let which = Loop::input_name(session.settings.input).get(lang);
+                    let which = Loop::input_name(kept.feedback.input).get(lang);
                     plot.line(
                         Line::new(
                             format!("{} {which}", Loop::InputCurve.get(lang)),
