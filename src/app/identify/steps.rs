@@ -297,6 +297,8 @@ pub fn agreement(joint: &FitReport, fits: &[StepFit], instant_step: f64) -> Agre
 mod tests {
     use super::*;
     use crate::ident::excitation::Hold;
+    use crate::ident::fit::fit;
+    use crate::ident::guess::auto_guess;
 
     fn record(hold: Hold) -> FitData {
         let times: Vec<f64> = (0..10).map(f64::from).collect();
