@@ -229,8 +229,9 @@ fn a_record_not_at_rest_says_so_and_shows_its_transient() {
     let n = h.state().ident.setup().unwrap().changes.len();
     assert!(n >= 2);
     for k in 1..=n {
+        // The row (and the plot's span of the same name).
         assert!(
-            h.query_by_label(&format!("step {k}")).is_some()
+            h.query_all_by_label(&format!("step {k}")).next().is_some()
                 || h.query_by_label(&format!("step {k} (output still moving)"))
                     .is_some(),
             "row {k}"

@@ -245,25 +245,19 @@ impl Excitation {
     /// `du_unit`, slopes by du_unit/t_unit.
     pub fn rescaled(&self, origin: f64, t_unit: f64, du_unit: f64) -> Self {
         let time = |t: f64| (t - origin) / t_unit;
+        let scaled = |list: &[InputStep], factor: f64| -> Vec<InputStep> {
+            list.iter()
+                .map(|s| InputStep {
+                    t: time(s.t),
+                    du: s.du * factor,
+                })
+                .collect()
+        };
         Self {
             u0: self.u0 / du_unit,
             hold: self.hold,
-            steps: self
-                .steps
-                .iter()
-                .map(|s| InputStep {
-                    t: time(s.t),
-                    du: s.du / du_unit,
-                })
-                .collect(),
-            ramps: self
-                .ramps
-                .iter()
-                .map(|s| InputStep {
-                    t: time(s.t),
-                    du: s.du / du_unit * t_unit,
-                })
-                .collect(),
+            steps: scaled(&self.steps, 1.0 / du_unit),
+            ramps: scaled(&self.ramps, t_unit / du_unit),
             changes: self
                 .changes
                 .iter()

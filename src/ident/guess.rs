@@ -458,13 +458,7 @@ fn linear_part(
     v: Values,
 ) -> Option<(Values, f64)> {
     let mut linear = vec![Param::Kp];
-    if structure.transient {
-        linear.extend(
-            [Param::X1, Param::X2, Param::X3]
-                .into_iter()
-                .take(structure.poles as usize),
-        );
-    }
+    linear.extend(structure.transient_params());
     if structure.drift {
         linear.push(Param::Drift);
     }

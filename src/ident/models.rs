@@ -99,24 +99,17 @@ impl Param {
             .find(|p| p.name().eq_ignore_ascii_case(name.trim()))
     }
 
+    /// Whether the parameter is a time (s): a time constant, the dead time, the zero's, Ta.
+    pub fn is_time(self) -> bool {
+        matches!(
+            self,
+            Param::Tp1 | Param::Tp2 | Param::Tp3 | Param::Tw | Param::Td | Param::Tz | Param::Ta
+        )
+    }
+
     /// Unit, for people.
     pub fn unit(self) -> &'static str {
-        match self {
-            Param::Tp1
-            | Param::Tp2
-            | Param::Tp3
-            | Param::Tw
-            | Param::Td
-            | Param::Tz
-            | Param::Ta => "s",
-            Param::Kp
-            | Param::Zeta
-            | Param::Y0
-            | Param::Drift
-            | Param::X1
-            | Param::X2
-            | Param::X3 => "",
-        }
+        if self.is_time() { "s" } else { "" }
     }
 }
 
@@ -264,13 +257,7 @@ impl Structure {
         if self.lead && !self.delay {
             p.push(Param::Ta);
         }
-        if self.transient {
-            p.extend(
-                [Param::X1, Param::X2, Param::X3]
-                    .into_iter()
-                    .take(self.poles as usize),
-            );
-        }
+        p.extend(self.transient_params());
         if self.free_offset {
             p.push(Param::Y0);
         }
@@ -278,6 +265,16 @@ impl Structure {
             p.push(Param::Drift);
         }
         p
+    }
+
+    /// The initial transient's coefficients (X1… one per pole, none without `transient`).
+    pub fn transient_params(&self) -> Vec<Param> {
+        let count = if self.transient {
+            self.poles as usize
+        } else {
+            0
+        };
+        [Param::X1, Param::X2, Param::X3][..count].to_vec()
     }
 
     /// Number of estimated parameters.

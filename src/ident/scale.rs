@@ -151,16 +151,10 @@ impl Scale {
         match p {
             Param::Kp if structure.integrator => self.y_unit / self.du_unit / self.t_unit,
             Param::Kp => self.y_unit / self.du_unit,
-            Param::Tp1
-            | Param::Tp2
-            | Param::Tp3
-            | Param::Tw
-            | Param::Td
-            | Param::Tz
-            | Param::Ta => self.t_unit,
             Param::Zeta => 1.0,
             Param::Y0 | Param::X1 | Param::X2 | Param::X3 => self.y_unit,
             Param::Drift => self.y_unit / self.t_unit,
+            _ => self.t_unit, // the times (Param::is_time)
         }
     }
 

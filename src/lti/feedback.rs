@@ -278,14 +278,7 @@ pub struct SteadyStateErrors {
     pub parabola: Limit,
 }
 
-fn product_neg_nonzero(roots: &[C64]) -> f64 {
-    roots
-        .iter()
-        .filter(|r| !(r.re == 0.0 && r.im == 0.0))
-        .map(|&r| -r)
-        .product::<C64>()
-        .re
-}
+use super::tf::product_neg_nonzero;
 
 /// A design spec on the closed loop's unit-step response.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

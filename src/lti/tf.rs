@@ -280,7 +280,7 @@ fn count_origin(roots: &[C64]) -> usize {
 }
 
 /// Π(−r) over the roots that are not at the origin (real for a conjugate-closed set).
-fn product_neg_nonzero(roots: &[C64]) -> f64 {
+pub(crate) fn product_neg_nonzero(roots: &[C64]) -> f64 {
     roots
         .iter()
         .filter(|r| !(r.re == 0.0 && r.im == 0.0))

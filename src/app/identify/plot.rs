@@ -227,7 +227,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     let input_response = base_plot(input_plot_id(), input_height)
         .y_axis_label("u")
         .show(ui, |plot| {
-            let (lo, hi) = padded(input.range);
+            let (lo, hi) = super::session::padded_by(input.range, 0.08);
             plot.set_plot_bounds(PlotBounds::from_min_max([frame.t.0, lo], [frame.t.1, hi]));
             input_curve(plot, input, hi, look);
         });
@@ -681,17 +681,6 @@ fn nearest_point(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
         .filter_map(|i| points.get(i))
         .min_by(|a, b| (a[0] - t).abs().total_cmp(&(b[0] - t).abs()))
         .copied()
-}
-
-/// A range with 8 % room on each side (a flat range gets room of its own size).
-fn padded((lo, hi): (f64, f64)) -> (f64, f64) {
-    let span = hi - lo;
-    let room = if span > 0.0 {
-        0.08 * span
-    } else {
-        0.08 * lo.abs().max(1.0)
-    };
-    (lo - room, hi + room)
 }
 
 fn handle_key(h: Handle) -> u8 {

@@ -1330,12 +1330,18 @@ fn range_of(values: impl Iterator<Item = f64>) -> (f64, f64) {
 }
 
 /// A range with 5 % room on each side (a flat range gets room of its own size).
-fn padded((lo, hi): (f64, f64)) -> (f64, f64) {
+fn padded(range: (f64, f64)) -> (f64, f64) {
+    padded_by(range, 0.05)
+}
+
+/// A range with `share` of its span as room on each side (a flat range gets room of its
+/// own size).
+pub(super) fn padded_by((lo, hi): (f64, f64), share: f64) -> (f64, f64) {
     let span = hi - lo;
     let room = if span > 0.0 {
-        0.05 * span
+        share * span
     } else {
-        0.05 * lo.abs().max(1.0)
+        share * lo.abs().max(1.0)
     };
     (lo - room, hi + room)
 }

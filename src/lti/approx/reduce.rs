@@ -144,15 +144,7 @@ fn split(roots: &[C64]) -> (usize, Vec<Factor>) {
     (origin, factors)
 }
 
-/// Π(−r) over the roots not at the origin (real for a real system).
-fn nonzero_product(roots: &[C64]) -> f64 {
-    roots
-        .iter()
-        .filter(|r| !(r.re == 0.0 && r.im == 0.0))
-        .map(|&r| -r)
-        .product::<C64>()
-        .re
-}
+use crate::lti::tf::product_neg_nonzero as nonzero_product;
 
 /// The low-frequency gain lim_{s→0} s^k·G(s)/s^j (k poles and j zeros at the origin): the
 /// static gain G(0) of a system without roots at the origin.
