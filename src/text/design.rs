@@ -107,7 +107,7 @@ crate::phrases! {
         CurrentColumn => ("A (current)", "A (atual)"),
         ClosedForm => ("Closed form", "Forma fechada"),
         PhaseForm => ("amplitude–phase form", "forma amplitude–fase"),
-        DcGain => ("DC gain", "Ganho DC"),
+        DcGain => ("DC gain", "Ganho estático"),
         StepAmplitudeLower => ("step amplitude", "amplitude do degrau"),
     }
 }
