@@ -58,9 +58,13 @@ fn apmonitor_heater_gives_the_sources_first_order_model() {
 fn ecam_tclab_pulses_on_the_heater_and_on_the_disturbance() {
     let mv = fit(
         "ecam_tclab_Open_loop_experiment_on_MV_2022-03-01-09h52.txt",
-        &[
-            "--u-col", "MV", "--y-col", "PV", "--model", "P1D", "--y0", "free",
-        ],
+        &["--u-col", "MV", "--y-col", "PV", "--model", "P1D"],
+    );
+    // Ten samples before the first of two changes: Y0 is estimated, and said so.
+    assert_eq!(
+        mv["operating_point"]["reason"].as_str(),
+        Some("short_rest"),
+        "{mv}"
     );
     let (kp, tp1) = (param(&mv, "Kp"), param(&mv, "Tp1"));
     assert!(within(kp, 0.561, 0.08), "MV Kp {kp}");

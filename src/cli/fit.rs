@@ -52,8 +52,9 @@ pub struct DataArgs {
     pub initial_input: Option<f64>,
     /// Operating point Y0: auto (held at the output measured before the step: the mean of
     /// the samples before t0, or the sample at t0 when the record starts with the step;
-    /// estimated only when no sample is at or before t0), free (estimated with the other
-    /// parameters), or a value to hold it at.
+    /// estimated when no sample is at or before t0, when the output still moved before it,
+    /// or when fewer than 20 samples precede the first of several input changes), free
+    /// (estimated with the other parameters), or a value to hold it at.
     #[arg(long, default_value = "auto", allow_hyphen_values = true)]
     pub y0: String,
     /// Keep only samples in this time range, e.g. 3.5,29.5.

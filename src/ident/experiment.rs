@@ -48,6 +48,10 @@ pub enum OperatingPoint {
     Estimated { reason: EstimateReason },
 }
 
+/// The fewest samples before the first change of a multi-change record for [`Offset::Auto`]
+/// to hold Y0 at their mean (see [`EstimateReason::ShortRest`]).
+pub const MIN_REST_SAMPLES: usize = 20;
+
 /// Why Y0 is estimated rather than held.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -57,6 +61,11 @@ pub enum EstimateReason {
     /// [`Offset::Auto`], but no sample is at or before the step instant (it comes before the
     /// first sample kept).
     NoSampleBeforeStep,
+    /// [`Offset::Auto`] on a record whose input changes more than once, with fewer than
+    /// [`MIN_REST_SAMPLES`] samples before the first change: so short a stretch is a weaker
+    /// measurement of the operating point than the record's several responses (and a slow
+    /// creep in it biases the mean), so Y0 is estimated with the other parameters.
+    ShortRest,
     /// [`Offset::Auto`], but the output still moved before the first change
     /// ([`super::rest::Rest::NotAtRest`]): no level was at rest, and an initial transient is
     /// estimated with it.
@@ -233,6 +242,11 @@ impl Experiment {
                 }
             }
             Offset::Auto => match super::guess::rest_level(data) {
+                Some(rest) if data.input.is_multi_step() && rest.samples < MIN_REST_SAMPLES => {
+                    OperatingPoint::Estimated {
+                        reason: EstimateReason::ShortRest,
+                    }
+                }
                 Some(rest) if rest.at_step => OperatingPoint::AtStep { y0: rest.y0 },
                 Some(rest) => OperatingPoint::MeanBefore {
                     y0: rest.y0,

@@ -82,6 +82,18 @@ impl Localize for OperatingPoint {
                 )
                 .into(),
             OperatingPoint::Estimated {
+                reason: EstimateReason::ShortRest,
+            } => lang
+                .pick(
+                    "fewer than 20 samples before the first of several input changes: Y0 \
+                     estimated with the other parameters (the record's responses measure it \
+                     better than so short a stretch)",
+                    "menos de 20 amostras antes da primeira de várias mudanças da entrada: Y0 \
+                     estimado junto com os demais parâmetros (as respostas do registro o medem \
+                     melhor que um trecho tão curto)",
+                )
+                .into(),
+            OperatingPoint::Estimated {
                 reason: EstimateReason::NotAtRest,
             } => lang
                 .pick(
@@ -119,6 +131,9 @@ pub fn messages() -> Vec<Message> {
         OperatingPoint::Estimated {
             reason: EstimateReason::NotAtRest,
         },
+        OperatingPoint::Estimated {
+            reason: EstimateReason::ShortRest,
+        },
     ];
     let mut all = OffsetChoice::messages();
     for fact in &examples {
@@ -137,6 +152,9 @@ pub fn messages() -> Vec<Message> {
             OperatingPoint::Estimated {
                 reason: EstimateReason::NotAtRest,
             } => "Estimated(NotAtRest)",
+            OperatingPoint::Estimated {
+                reason: EstimateReason::ShortRest,
+            } => "Estimated(ShortRest)",
         };
         all.push(Message::of(format!("OperatingPoint::{id}"), fact));
     }
