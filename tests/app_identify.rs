@@ -3,6 +3,8 @@
 
 mod kit;
 
+use kit::{load, wait_for};
+
 use std::time::{Duration, Instant};
 
 use degrau::app::DegrauApp;
@@ -63,30 +65,6 @@ fn tclab_with(edit: impl FnOnce(&mut IdentSettings)) -> Harness<'static, DegrauA
 /// The TCLab record with P1 chosen.
 fn tclab_p1() -> Harness<'static, DegrauApp> {
     tclab_with(|s| s.code = "P1".into())
-}
-
-/// Types `path` into the File field and presses Load.
-fn load(h: &mut Harness<'_, DegrauApp>, path: &str) {
-    let field = h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Step test file");
-    field.focus();
-    h.run_steps(1);
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Step test file")
-        .type_text(path);
-    h.run_steps(1);
-    h.get_by_label("Load").click();
-    h.run_steps(3);
-}
-
-/// Steps until `done` holds (the fit runs on its own thread), at most 20 s.
-fn wait_for(h: &mut Harness<'_, DegrauApp>, done: impl Fn(&Harness<'_, DegrauApp>) -> bool) {
-    let start = Instant::now();
-    while !done(h) {
-        assert!(start.elapsed() < Duration::from_secs(20), "timed out");
-        std::thread::sleep(Duration::from_millis(5));
-        h.run_steps(1);
-    }
-    h.run_steps(2);
 }
 
 #[test]

@@ -5,7 +5,7 @@
 
 mod kit;
 
-use std::time::{Duration, Instant};
+use kit::{load, wait_for};
 
 use degrau::app::DegrauApp;
 use degrau::app::identify::commands::Command;
@@ -44,26 +44,8 @@ fn loaded(path: &str, code: &str, size: [f32; 2]) -> Harness<'static, DegrauApp>
     h.get_by_label("Identify a step test").click();
     h.run_steps(2);
     h.state_mut().ident.settings.code = code.into();
-    let field = h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Step test file");
-    field.focus();
-    h.run_steps(1);
-    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Step test file")
-        .type_text(path);
-    h.run_steps(1);
-    h.get_by_label("Load").click();
-    h.run_steps(3);
+    load(&mut h, path);
     h
-}
-
-/// Steps until `done` holds (the jobs run on their own threads), at most 30 s.
-fn wait_for(h: &mut Harness<'_, DegrauApp>, done: impl Fn(&Harness<'_, DegrauApp>) -> bool) {
-    let start = Instant::now();
-    while !done(h) {
-        assert!(start.elapsed() < Duration::from_secs(30), "timed out");
-        std::thread::sleep(Duration::from_millis(5));
-        h.run_steps(1);
-    }
-    h.run_steps(2);
 }
 
 fn plot_frame_x(h: &Harness<'_, DegrauApp>, id: egui::Id, t: f64) -> f32 {

@@ -85,21 +85,21 @@ fn ecam_tclab_pulses_on_the_heater_and_on_the_disturbance() {
     );
 }
 
+/// The DaISy record's flags: input and output columns, 6 V before the record, P1.
+const DAISY: &[&str] = &[
+    "--u-col",
+    "2",
+    "--y-col",
+    "3",
+    "--initial-input",
+    "6",
+    "--model",
+    "P1",
+];
+
 #[test]
 fn daisy_heating_one_model_over_six_steps_with_the_per_step_gains() {
-    let v = fit(
-        "daisy_heating_system.dat",
-        &[
-            "--u-col",
-            "2",
-            "--y-col",
-            "3",
-            "--initial-input",
-            "6",
-            "--model",
-            "P1",
-        ],
-    );
+    let v = fit("daisy_heating_system.dat", DAISY);
     assert!(v["fit_percent"].as_f64().unwrap() >= 85.0, "{v}");
     assert_eq!(v["steps"].as_array().unwrap().len(), 6);
     let per_step = v["per_step"].as_array().unwrap();
@@ -109,18 +109,9 @@ fn daisy_heating_one_model_over_six_steps_with_the_per_step_gains() {
     }
     // The text output shows the same table.
     let file = record("daisy_heating_system.dat");
-    let out = degrau(&[
-        "fit",
-        &file,
-        "--u-col",
-        "2",
-        "--y-col",
-        "3",
-        "--initial-input",
-        "6",
-        "--model",
-        "P1",
-    ]);
+    let mut args = vec!["fit", file.as_str()];
+    args.extend(DAISY);
+    let out = degrau(&args);
     let text = stdout(&out);
     assert!(text.contains("6 change(s) used"), "{text}");
     assert!(

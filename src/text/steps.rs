@@ -105,22 +105,6 @@ pub fn input_line(input: &Excitation, lang: Lang) -> String {
     )
 }
 
-/// The parameters a per-step table shows for `report`: the process's (no Y0, drift, lead
-/// or transient).
-fn process_params(report: &FitReport) -> Vec<Param> {
-    report
-        .params
-        .iter()
-        .map(|e| e.param)
-        .filter(|p| {
-            !matches!(
-                p,
-                Param::Y0 | Param::Drift | Param::Ta | Param::X1 | Param::X2 | Param::X3
-            )
-        })
-        .collect()
-}
-
 /// `value [lo; hi]` of `p` in `report`.
 fn cell(report: &FitReport, p: Param, lang: Lang) -> String {
     let value = lang.num(report.model.get(p), 4);
@@ -138,7 +122,7 @@ fn cell(report: &FitReport, p: Param, lang: Lang) -> String {
 /// The per-step table as text lines: a heading, a header row, one row per change and the
 /// joint fit's row, columns aligned.
 pub fn per_step_lines(fits: &[StepFit], joint: &FitReport, lang: Lang) -> Vec<String> {
-    let params = process_params(joint);
+    let params = crate::ident::per_step::compared_params(&joint.model.structure);
     let mut header = vec![
         StepsPhrase::Step.get(lang).to_string(),
         "t (s)".into(),

@@ -106,3 +106,30 @@ fn replace_focused_text(h: &mut Harness<'_, DegrauApp>, text: &str) {
     h.event(egui::Event::Text(text.into()));
     h.run_steps(1);
 }
+
+/// Types `path` into the File field (replacing what is there) and presses Load.
+pub fn load(h: &mut Harness<'_, DegrauApp>, path: &str) {
+    let field = h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Step test file");
+    field.focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Step test file")
+        .type_text(path);
+    h.run_steps(1);
+    h.get_by_label("Load").click();
+    h.run_steps(3);
+}
+
+/// Steps until `done` holds (jobs run on their own threads), at most 30 s.
+pub fn wait_for(h: &mut Harness<'_, DegrauApp>, done: impl Fn(&Harness<'_, DegrauApp>) -> bool) {
+    let start = std::time::Instant::now();
+    while !done(h) {
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(30),
+            "timed out"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(5));
+        h.run_steps(1);
+    }
+    h.run_steps(2);
+}

@@ -6,8 +6,11 @@
 
 use crate::app::job::{Context, Job, Waker};
 use crate::ident::excitation::{Excitation, InputChange};
-use crate::ident::fit::{FitData, FitObserver, FitOptions, FitReport, Progress};
-use crate::ident::models::{Param, Structure};
+use crate::ident::fit::{FitData, FitObserver, FitOptions, Progress};
+use crate::ident::models::Structure;
+pub use crate::ident::per_step::{
+    Agreement, Difference, RESOLVED_SHARE, agreement, compared_params,
+};
 use crate::ident::per_step::{StepFit, fit_change};
 
 /// The input plot's data, derived from the fit data (rebuilt with them, never per frame).
@@ -202,103 +205,13 @@ impl FitObserver for Stop<'_> {
     }
 }
 
-/// The process parameters compared step by step: gain, time constants, damping, zero, dead
-/// time (not the operating point, drift, step-instant lead or initial transient, which
-/// belong to each window).
-pub fn compared_params(structure: &Structure) -> Vec<Param> {
-    structure
-        .params()
-        .into_iter()
-        .filter(|p| {
-            !matches!(
-                p,
-                Param::Y0 | Param::Drift | Param::Ta | Param::X1 | Param::X2 | Param::X3
-            )
-        })
-        .collect()
-}
-
-/// Relative difference below which a step's value is not called different from the joint
-/// fit's, whatever its interval: a fit of a real record does not resolve values closer than
-/// this (the issue's own tolerance for parameters), and a narrow interval on a quiet record
-/// says nothing about how well the model's form fits each window.
-pub const RESOLVED_SHARE: f64 = 0.05;
-
-/// How a step's values stand against the joint fit's.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Agreement {
-    /// No value differs from the joint fit's beyond both their 95 % intervals and what the
-    /// record resolves.
-    Agree,
-    /// A fit, a value or an interval is missing, and nothing else differs: nothing can be
-    /// said.
-    Unknown,
-    /// These values differ (see [`agreement`]).
-    Differ(Vec<Difference>),
-}
-
-/// A step's value whose interval does not overlap the joint fit's.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Difference {
-    /// Index (0-based) of the change.
-    pub step: usize,
-    /// Its instant (s).
-    pub t: f64,
-    pub param: Param,
-    pub value: f64,
-    pub joint: (f64, f64),
-}
-
-/// Compares every step's own values with the joint fit's, parameter by parameter: a value
-/// differs when its 95 % interval and the joint fit's do not overlap, and it is more than
-/// [`RESOLVED_SHARE`] away from the joint fit's, or, for the dead time, more than
-/// `instant_step` seconds (each change's instant is only known to within a sampling
-/// period, and each step has its own).
-pub fn agreement(joint: &FitReport, fits: &[StepFit], instant_step: f64) -> Agreement {
-    let params = compared_params(&joint.model.structure);
-    let mut differ = Vec::new();
-    let mut unknown = false;
-    for (k, f) in fits.iter().enumerate() {
-        let Ok(own) = &f.fit else {
-            unknown = true;
-            continue;
-        };
-        for &p in &params {
-            let (value, reference) = (own.model.get(p), joint.model.get(p));
-            let resolved = match p {
-                Param::Td => instant_step,
-                _ => RESOLVED_SHARE * reference.abs(),
-            };
-            match (own.interval(p), joint.interval(p)) {
-                (Some(a), Some(b))
-                    if (a.1 < b.0 || b.1 < a.0) && (value - reference).abs() > resolved =>
-                {
-                    differ.push(Difference {
-                        step: k,
-                        t: f.change.t,
-                        param: p,
-                        value,
-                        joint: b,
-                    })
-                }
-                (Some(_), Some(_)) => {}
-                _ => unknown = true,
-            }
-        }
-    }
-    match (differ.is_empty(), unknown) {
-        (false, _) => Agreement::Differ(differ),
-        (true, true) => Agreement::Unknown,
-        (true, false) => Agreement::Agree,
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::ident::excitation::Hold;
-    use crate::ident::fit::fit;
+    use crate::ident::fit::{FitReport, fit};
     use crate::ident::guess::auto_guess;
+    use crate::ident::models::Param;
 
     fn record(hold: Hold) -> FitData {
         let times: Vec<f64> = (0..10).map(f64::from).collect();
