@@ -39,28 +39,8 @@ Examples:
 #[derive(Debug, Default, Args)]
 #[command(after_help = LOOP_EXAMPLES)]
 pub struct LoopArgs {
-    /// Poles of G, comma-separated, e.g. "-1+2j,-1-2j,-5".
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
-    pub poles: Option<String>,
-    /// Zeros of G, comma-separated (default: none).
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
-    pub zeros: Option<String>,
-    /// k of the zero-pole-gain form of G (default 1).
-    #[arg(long, value_name = "K", allow_hyphen_values = true, value_parser = finite_f64)]
-    pub gain: Option<f64>,
-    /// Numerator coefficients of G in descending powers of s.
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
-    pub num: Option<String>,
-    /// Denominator coefficients of G in descending powers of s.
-    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
-    pub den: Option<String>,
-    /// Scale k so that G(0) is K.
-    #[arg(long, value_name = "K", allow_hyphen_values = true, value_parser = finite_f64)]
-    pub dc_gain: Option<f64>,
-    /// Transport delay θ of G in seconds (a loop around it is closed through its Padé
-    /// approximant, see --pade: the result is approximate).
-    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = finite_f64)]
-    pub delay: Option<f64>,
+    #[command(flatten)]
+    pub system: super::SystemArgs,
     /// The proportional gain Kp of the loop (default 1).
     #[arg(long, value_name = "KP", allow_hyphen_values = true, value_parser = finite_f64, conflicts_with = "find")]
     pub kp: Option<f64>,
@@ -190,13 +170,7 @@ pub struct LoopAnalysis {
 impl LoopArgs {
     fn spec(&self) -> Result<SystemSpec, CliError> {
         let step = super::StepArgs {
-            poles: self.poles.clone(),
-            zeros: self.zeros.clone(),
-            gain: self.gain,
-            num: self.num.clone(),
-            den: self.den.clone(),
-            dc_gain: self.dc_gain,
-            delay: self.delay,
+            system: self.system.clone(),
             ..Default::default()
         };
         step.spec()

@@ -86,10 +86,10 @@ Examples:
   degrau step --poles \"-1+2j,-1-2j,-5\" --zeros -10 --dc-gain 1 --delay 0.3 --samples 201 --json
   echo '{\"id\": 1, \"num\": [5], \"den\": [1, 5]}' | degrau step --batch";
 
-/// `degrau step` options. A system is given by its poles (zeros, gain) or by num and den.
-#[derive(Debug, Default, Args)]
-#[command(after_help = STEP_EXAMPLES)]
-pub struct StepArgs {
+/// The system flags of `degrau step`, `loop` and `approx`: G by its poles (zeros, gain)
+/// or by num and den, scaled to a static gain, with a dead time.
+#[derive(Debug, Clone, Default, Args)]
+pub struct SystemArgs {
     /// Poles, comma-separated, e.g. "-1+2j,-1-2j,-5" (complex ones in conjugate pairs).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub poles: Option<String>,
@@ -117,6 +117,14 @@ pub struct StepArgs {
     /// Transport delay θ in seconds (default 0).
     #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = finite_f64)]
     pub delay: Option<f64>,
+}
+
+/// `degrau step` options. A system is given by its poles (zeros, gain) or by num and den.
+#[derive(Debug, Default, Args)]
+#[command(after_help = STEP_EXAMPLES)]
+pub struct StepArgs {
+    #[command(flatten)]
+    pub system: SystemArgs,
     /// Step amplitude A (default 1).
     #[arg(long, value_name = "A", allow_hyphen_values = true, value_parser = finite_f64)]
     pub amplitude: Option<f64>,
@@ -460,13 +468,13 @@ impl StepArgs {
             }
         };
         Ok(SystemSpec {
-            zeros: complex("--zeros", &self.zeros)?,
-            poles: complex("--poles", &self.poles)?,
-            gain: self.gain,
-            num: coefficients("--num", &self.num)?,
-            den: coefficients("--den", &self.den)?,
-            dc_gain: self.dc_gain,
-            delay: self.delay,
+            zeros: complex("--zeros", &self.system.zeros)?,
+            poles: complex("--poles", &self.system.poles)?,
+            gain: self.system.gain,
+            num: coefficients("--num", &self.system.num)?,
+            den: coefficients("--den", &self.system.den)?,
+            dc_gain: self.system.dc_gain,
+            delay: self.system.delay,
             amplitude: self.amplitude,
             samples: self.samples,
         })

@@ -674,13 +674,7 @@ fn window_marks(ui: &mut Ui, input: &InputPlot, transform: &PlotTransform, look:
 /// The point of a polyline nearest in time to `t` (the last of equal times: the level after
 /// a jump).
 fn nearest_point(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
-    let k = points.partition_point(|p| p[0] <= t);
-    [k.checked_sub(1), Some(k)]
-        .into_iter()
-        .flatten()
-        .filter_map(|i| points.get(i))
-        .min_by(|a, b| (a[0] - t).abs().total_cmp(&(b[0] - t).abs()))
-        .copied()
+    super::session::nearest_from(points, t, points.partition_point(|p| p[0] <= t))
 }
 
 fn handle_key(h: Handle) -> u8 {

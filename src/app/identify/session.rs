@@ -1346,9 +1346,13 @@ pub(super) fn padded_by((lo, hi): (f64, f64), share: f64) -> (f64, f64) {
     (lo - room, hi + room)
 }
 
-/// The point of sorted `points` nearest in t.
+/// The point of sorted `points` nearest in t (of equal times, the first).
 fn nearest(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
-    let k = points.partition_point(|p| p[0] < t);
+    nearest_from(points, t, points.partition_point(|p| p[0] < t))
+}
+
+/// The nearer to `t` of `points[k − 1]` and `points[k]`, `k` the partition point around t.
+pub(super) fn nearest_from(points: &[[f64; 2]], t: f64, k: usize) -> Option<[f64; 2]> {
     [k.checked_sub(1), Some(k)]
         .into_iter()
         .flatten()
