@@ -25,6 +25,7 @@ use super::fit::{FitData, FitError, FitOptions, FitReport, fit, search_fit};
 use super::guess::{auto_guess, features};
 use super::models::{Param, Structure, Values};
 use super::residuals::{self, ResidualAnalysis};
+use super::test_causes::TestCause;
 
 /// An extension must lower BIC by more than this to be kept.
 pub const BIC_THRESHOLD: f64 = 10.0;
@@ -275,6 +276,9 @@ pub struct DiagnoseReport {
     pub verdict: Option<Verdict>,
     /// The process's static gain Kp = Δy/Δu of the final model, with its 95 % interval.
     pub static_gain: (f64, Option<(f64, f64)>),
+    /// What the test itself got wrong (artefacts, not structure), in the order checked.
+    #[serde(default)]
+    pub test_causes: Vec<TestCause>,
 }
 
 impl DiagnoseReport {
@@ -346,6 +350,7 @@ pub fn diagnose_from(
         steps,
         adequate,
         verdict,
+        test_causes: super::test_causes::not_at_rest(data).into_iter().collect(),
     }
 }
 

@@ -18,3 +18,4 @@ pub mod residuals;
 pub mod rest;
 pub mod scale;
 pub mod stats;
+pub mod test_causes;

@@ -11,7 +11,7 @@
 //! differences (1.4826·MAD/√2), and 5 % of the record's output range (a movement too small
 //! to matter to the fit is not worth a transient's parameters).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::fit::FitData;
 
@@ -19,7 +19,7 @@ use super::fit::FitData;
 pub const MIN_SAMPLES_BEFORE: usize = 8;
 
 /// How the output moved before the first change.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Motion {
     /// The line's change over the span (output units; its sign is the direction).
     pub change: f64,

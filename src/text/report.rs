@@ -470,6 +470,7 @@ mod tests {
                 whiteness: None,
             }),
             static_gain: (1.0021, Some((0.98647, 1.0178))),
+            test_causes: Vec::new(),
         }
     }
 

@@ -1010,6 +1010,7 @@ impl Session {
                     adequate: false,
                     verdict: None,
                     static_gain: (0.0, None),
+                    test_causes: Vec::new(),
                 });
                 d.final_fit = step.fit.clone();
                 d.static_gain = (step.fit.model.get(Param::Kp), step.fit.interval(Param::Kp));
