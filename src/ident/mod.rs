@@ -2,6 +2,7 @@
 //! data, model structures named as MATLAB's procest (P1D, P2DU, …), fitting them, and
 //! diagnosing what a fitted model gets wrong. Pure: nothing here knows about the GUI.
 
+pub mod arx;
 pub mod data;
 pub mod diagnose;
 pub mod excitation;
@@ -12,10 +13,13 @@ pub mod handles;
 pub mod landscape;
 pub mod models;
 pub mod per_step;
+pub mod prbs;
 pub mod prepare;
 pub mod reduce;
 pub mod residuals;
 pub mod rest;
+pub mod rls;
 pub mod scale;
 pub mod stats;
 pub mod test_causes;
+pub mod validation;

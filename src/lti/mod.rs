@@ -11,6 +11,7 @@
 
 pub mod analysis;
 pub mod approx;
+pub mod discrete;
 pub mod divided;
 pub mod expr;
 pub mod feedback;

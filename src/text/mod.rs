@@ -23,6 +23,7 @@ pub mod design;
 pub mod feedback;
 pub mod ident;
 pub mod identify;
+pub mod lsq;
 pub mod lti;
 pub mod operating_point;
 pub mod report;
@@ -186,6 +187,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(feedback::messages());
     all.extend(app::messages());
     all.extend(approx::messages());
+    all.extend(lsq::messages());
     all
 }
 

@@ -1,0 +1,330 @@
+//! The words of least squares on samples (`crate::ident::arx`, `rls`, `prbs`, `validation`)
+//! and of discrete models (`crate::lti::discrete`): the labels of the tables and the refusals,
+//! in English and Brazilian Portuguese with the notes' terms (mínimos quadrados, regressores,
+//! função custo, estimador recursivo, fator de esquecimento, sinal PRBS, validação, …).
+
+use crate::ident::arx::{LsqError, Regressor};
+use crate::ident::prbs::{MAX_ORDER, MIN_ORDER, PrbsError};
+use crate::ident::validation::{MIN_PART, ValidationError};
+use crate::lti::discrete::DiscreteError;
+use crate::lti::{C64, fmt_c};
+
+use super::{Lang, Localize, Message};
+
+crate::phrases! {
+    /// The labels of the least-squares tables (CLI and app).
+    pub enum LsqPhrase {
+        ArxHeading => ("Least squares (ARX)", "Mínimos quadrados (ARX)"),
+        RlsHeading => ("Recursive least squares", "Mínimos quadrados recursivo"),
+        PrbsHeading => ("PRBS test signal", "Sinal de teste PRBS"),
+        DiscreteHeading => ("Discrete model (ZOH)", "Modelo discreto (ZOH)"),
+        ContinuousHeading => ("Continuous model", "Modelo contínuo"),
+        Orders => ("Orders", "Ordens"),
+        Parameter => ("Parameter", "Parâmetro"),
+        Value => ("Value", "Valor"),
+        StandardError => ("Standard error", "Desvio padrão"),
+        Regressors => ("Regressors φ(k)", "Regressores φ(k)"),
+        Rows => ("Rows of Φ", "Linhas de Φ"),
+        Cost => ("Cost J = EᵀE", "Função custo J = EᵀE"),
+        FitPrediction => ("Fit % (one-step prediction)", "Ajuste % (predição um passo à frente)"),
+        FitSimulation => ("Fit % (free simulation)", "Ajuste % (simulação livre)"),
+        Aic => ("AIC", "AIC (critério de Akaike)"),
+        OperatingPoint => ("Operating point (u0, y0)", "Ponto de operação (u0, y0)"),
+        Constant => ("Constant term", "Termo constante"),
+        SamplingPeriod => ("Sampling period h (s)", "Período de amostragem h (s)"),
+        Candidates => ("Orders by AIC (best first)", "Ordens pelo AIC (melhor primeiro)"),
+        Forgetting => ("Forgetting factor λ", "Fator de esquecimento λ"),
+        InitialCovariance => ("Initial covariance P0 = α·I", "Covariância inicial P0 = α·I"),
+        FinalEstimate => ("Final estimate θ", "Estimativa final θ"),
+        Estimation => ("Estimation", "Estimação"),
+        Validation => ("Validation", "Validação"),
+        ResidualsWhite => ("Residuals white", "Resíduos brancos"),
+        Yes => ("yes", "sim"),
+        No => ("no", "não"),
+        RegisterOrder => ("Register length n (bits)", "Comprimento do registrador n (bits)"),
+        Clock => ("Clock period (samples per bit)", "Período do relógio (amostras por bit)"),
+        Period => ("Period (samples)", "Período (amostras)"),
+        Levels => ("Levels", "Níveis"),
+        Samples => ("Samples", "Amostras"),
+        Poles => ("Poles", "Polos"),
+        DeadTime => ("Dead time θ (s)", "Tempo morto θ (s)"),
+        Delay => ("Delay nk (samples)", "Atraso nk (amostras)"),
+        StaticGain => ("Static gain", "Ganho estático"),
+    }
+}
+
+/// A regressor as the notes write it: `1`, `−y(k−1)`, `u(k)`, `u(k−2)`.
+pub fn regressor_symbol(r: Regressor) -> String {
+    let lagged = |name: &str, lag: usize| {
+        if lag == 0 {
+            format!("{name}(k)")
+        } else {
+            format!("{name}(k−{lag})")
+        }
+    };
+    match r {
+        Regressor::Constant => "1".into(),
+        Regressor::Output(i) => format!("−{}", lagged("y", i)),
+        Regressor::Input(j) => lagged("u", j),
+    }
+}
+
+/// A parameter's name for a regressor: `a1`, `b2`, `c` (the constant); `b` indices count
+/// from 1 after the delay nk, as MATLAB's.
+pub fn parameter_name(r: Regressor, nk: usize) -> String {
+    match r {
+        Regressor::Constant => "c".into(),
+        Regressor::Output(i) => format!("a{i}"),
+        Regressor::Input(j) => format!("b{}", j + 1 - nk.min(j)),
+    }
+}
+
+impl Localize for LsqError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            LsqError::LengthMismatch { u, y } => lang.pick(
+                format!("the input has {u} samples and the output {y}: they must match"),
+                format!("a entrada tem {u} amostras e a saída {y}: devem ser iguais"),
+            ),
+            LsqError::NonFinite => lang
+                .pick(
+                    "a sample is not a finite number",
+                    "uma amostra não é um número finito",
+                )
+                .into(),
+            LsqError::BadRegressors => lang
+                .pick(
+                    "no regressor to estimate (na + nb must be at least 1, and y(k) cannot explain itself)",
+                    "nenhum regressor a estimar (na + nb deve ser ao menos 1, e y(k) não pode explicar a si mesma)",
+                )
+                .into(),
+            LsqError::TooFewSamples { rows, parameters } => lang.pick(
+                format!(
+                    "{rows} rows of Φ for {parameters} parameters: use a longer record or lower orders"
+                ),
+                format!(
+                    "{rows} linhas de Φ para {parameters} parâmetros: use um registro mais longo ou ordens menores"
+                ),
+            ),
+            LsqError::Singular { index } => {
+                let i = index + 1;
+                lang.pick(
+                    format!(
+                        "ΦᵀΦ is singular: regressor {i} repeats the ones before it (the input does not excite enough, or the orders are too high)"
+                    ),
+                    format!(
+                        "ΦᵀΦ é singular: o regressor {i} repete os anteriores (a entrada não excita o suficiente, ou as ordens são altas demais)"
+                    ),
+                )
+            }
+            LsqError::BadForgetting(l) => {
+                let l = lang.num(*l, 6);
+                lang.pick(
+                    format!("the forgetting factor λ = {l} must be in (0, 1]"),
+                    format!("o fator de esquecimento λ = {l} deve estar em (0, 1]"),
+                )
+            }
+            LsqError::BadCovariance(a) => {
+                let a = lang.num(*a, 6);
+                lang.pick(
+                    format!("the initial covariance α = {a} must be a positive number"),
+                    format!("a covariância inicial α = {a} deve ser um número positivo"),
+                )
+            }
+            LsqError::BadInitialTheta { expected, got } => lang.pick(
+                format!("the initial θ has {got} values; the model has {expected} parameters"),
+                format!("o θ inicial tem {got} valores; o modelo tem {expected} parâmetros"),
+            ),
+            LsqError::BadSplit => lang.pick(
+                format!(
+                    "the split must leave at least {MIN_PART} samples for estimation and {MIN_PART} for validation (a fraction between 0 and 1, or a time inside the record)"
+                ),
+                format!(
+                    "a divisão deve deixar ao menos {MIN_PART} amostras para estimação e {MIN_PART} para validação (uma fração entre 0 e 1, ou um instante dentro do registro)"
+                ),
+            ),
+            LsqError::Discrete(e) => e.text(lang),
+        }
+    }
+}
+
+/// A pole as text in `lang`.
+fn pole_text(p: C64, lang: Lang) -> String {
+    lang.localize_number(&fmt_c(p))
+}
+
+impl Localize for DiscreteError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            DiscreteError::BadSamplingPeriod(h) => {
+                let h = lang.num(*h, 6);
+                lang.pick(
+                    format!("the sampling period h = {h} s must be a positive number"),
+                    format!("o período de amostragem h = {h} s deve ser um número positivo"),
+                )
+            }
+            DiscreteError::BadCoefficients => lang
+                .pick(
+                    "the coefficients must be finite numbers, and A(z) must start with 1",
+                    "os coeficientes devem ser números finitos, e A(z) deve começar com 1",
+                )
+                .into(),
+            DiscreteError::NoNumerator => lang
+                .pick(
+                    "B(z) is zero: the input has no effect",
+                    "B(z) é zero: a entrada não tem efeito",
+                )
+                .into(),
+            DiscreteError::NoPoles => lang
+                .pick(
+                    "A(z) has no pole: d2c needs at least one",
+                    "A(z) não tem polo: o d2c precisa de ao menos um",
+                )
+                .into(),
+            DiscreteError::NoContinuousPole { pole } => {
+                let p = pole_text(*pole, lang);
+                lang.pick(
+                    format!(
+                        "pole z = {p} is on the negative real axis or at 0: no continuous system samples to it (d2c has no answer)"
+                    ),
+                    format!(
+                        "o polo z = {p} está no semieixo real negativo ou em 0: nenhum sistema contínuo amostrado o dá (o d2c não tem resposta)"
+                    ),
+                )
+            }
+            DiscreteError::RepeatedPoles { pole } => {
+                let p = pole_text(*pole, lang);
+                lang.pick(
+                    format!("pole z = {p} is repeated: d2c here needs distinct poles"),
+                    format!("o polo z = {p} é repetido: o d2c aqui precisa de polos distintos"),
+                )
+            }
+            DiscreteError::NumeratorTooLong { na, nb } => lang.pick(
+                format!(
+                    "nb = {nb} b's for na = {na}: d2c inverts nb ≤ na, or nb = 2 with na = 1 (a fractional dead time)"
+                ),
+                format!(
+                    "nb = {nb} b's para na = {na}: o d2c inverte nb ≤ na, ou nb = 2 com na = 1 (um tempo morto fracionário)"
+                ),
+            ),
+            DiscreteError::Lti(e) => e.text(lang),
+        }
+    }
+}
+
+impl Localize for PrbsError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            PrbsError::BadOrder(n) => lang.pick(
+                format!("a register of {n} bits is not offered: use {MIN_ORDER} to {MAX_ORDER}"),
+                format!(
+                    "um registrador de {n} bits não é oferecido: use de {MIN_ORDER} a {MAX_ORDER}"
+                ),
+            ),
+            PrbsError::BadClock => lang
+                .pick(
+                    "the clock period must be at least 1 sample",
+                    "o período do relógio deve ser ao menos 1 amostra",
+                )
+                .into(),
+            PrbsError::BadLevels { low, high } => {
+                let (lo, hi) = (lang.num(*low, 6), lang.num(*high, 6));
+                lang.pick(
+                    format!("the levels {lo} and {hi} must be two different finite numbers"),
+                    format!("os níveis {lo} e {hi} devem ser dois números finitos diferentes"),
+                )
+            }
+            PrbsError::BadLength(n) => lang.pick(
+                format!(
+                    "{n} samples cannot be generated: at least 1, at most 10 000 000, and covered by a register of at most {MAX_ORDER} bits"
+                ),
+                format!(
+                    "não é possível gerar {n} amostras: ao menos 1, no máximo 10 000 000, e cobertas por um registrador de no máximo {MAX_ORDER} bits"
+                ),
+            ),
+            PrbsError::BadSimulation => lang
+                .pick(
+                    "the sampling period must be positive and the noise level not negative",
+                    "o período de amostragem deve ser positivo e o nível de ruído não negativo",
+                )
+                .into(),
+            PrbsError::Model(e) => e.text(lang),
+        }
+    }
+}
+
+impl Localize for ValidationError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            ValidationError::Lsq(e) => e.text(lang),
+            ValidationError::Fit(e) => e.text(lang),
+        }
+    }
+}
+
+/// An example of every phrase and error, for the test of both languages.
+pub fn messages() -> Vec<Message> {
+    let mut all = LsqPhrase::messages();
+    let lsq = [
+        LsqError::LengthMismatch { u: 3, y: 4 },
+        LsqError::NonFinite,
+        LsqError::BadRegressors,
+        LsqError::TooFewSamples {
+            rows: 2,
+            parameters: 4,
+        },
+        LsqError::Singular { index: 1 },
+        LsqError::BadForgetting(1.5),
+        LsqError::BadCovariance(-1.0),
+        LsqError::BadInitialTheta {
+            expected: 3,
+            got: 2,
+        },
+        LsqError::BadSplit,
+    ];
+    let discrete = [
+        DiscreteError::BadSamplingPeriod(0.0),
+        DiscreteError::BadCoefficients,
+        DiscreteError::NoNumerator,
+        DiscreteError::NoPoles,
+        DiscreteError::NoContinuousPole {
+            pole: C64::new(-0.5, 0.0),
+        },
+        DiscreteError::RepeatedPoles {
+            pole: C64::new(0.5, 0.0),
+        },
+        DiscreteError::NumeratorTooLong { na: 2, nb: 3 },
+    ];
+    let prbs = [
+        PrbsError::BadOrder(40),
+        PrbsError::BadClock,
+        PrbsError::BadLevels {
+            low: 1.0,
+            high: 1.0,
+        },
+        PrbsError::BadLength(0),
+        PrbsError::BadSimulation,
+    ];
+    all.extend(lsq.iter().map(|e| Message::of(format!("lsq::LsqError::{e:?}"), e)));
+    all.extend(
+        discrete
+            .iter()
+            .map(|e| Message::of(format!("lsq::DiscreteError::{e:?}"), e)),
+    );
+    all.extend(prbs.iter().map(|e| Message::of(format!("lsq::PrbsError::{e:?}"), e)));
+    all
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn regressors_read_as_the_notes_write_them() {
+        assert_eq!(regressor_symbol(Regressor::Output(2)), "−y(k−2)");
+        assert_eq!(regressor_symbol(Regressor::Input(0)), "u(k)");
+        assert_eq!(regressor_symbol(Regressor::Constant), "1");
+        assert_eq!(parameter_name(Regressor::Input(3), 2), "b2");
+        assert_eq!(parameter_name(Regressor::Output(1), 1), "a1");
+    }
+}
