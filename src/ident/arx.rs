@@ -557,7 +557,8 @@ mod tests {
         let (u, y) = ([0.0, 1.0, 2.0], [0.0, 0.9, 2.1]);
         let solve = |r: &[Regressor]| least_squares(&regression(&u, &y, r, Start::Zeros).unwrap());
         let c = solve(&[Regressor::Constant]).unwrap();
-        assert!((c.theta[0] - 1.0).abs() < 1e-14 && (c.j - 2.2).abs() < 1e-13);
+        // The notes print J = 2.2: 1² + 0.1² + 1.1² = 2.22, rounded to two digits.
+        assert!((c.theta[0] - 1.0).abs() < 1e-14 && (c.j - 2.22).abs() < 1e-13);
         let l = solve(&[Regressor::Constant, Regressor::Input(0)]).unwrap();
         assert!((l.theta[0] + 0.05).abs() < 1e-14 && (l.theta[1] - 1.05).abs() < 1e-14);
         assert!((l.j - 0.015).abs() < 1e-14);
