@@ -305,13 +305,19 @@ pub fn messages() -> Vec<Message> {
         PrbsError::BadLength(0),
         PrbsError::BadSimulation,
     ];
-    all.extend(lsq.iter().map(|e| Message::of(format!("lsq::LsqError::{e:?}"), e)));
+    all.extend(
+        lsq.iter()
+            .map(|e| Message::of(format!("lsq::LsqError::{e:?}"), e)),
+    );
     all.extend(
         discrete
             .iter()
             .map(|e| Message::of(format!("lsq::DiscreteError::{e:?}"), e)),
     );
-    all.extend(prbs.iter().map(|e| Message::of(format!("lsq::PrbsError::{e:?}"), e)));
+    all.extend(
+        prbs.iter()
+            .map(|e| Message::of(format!("lsq::PrbsError::{e:?}"), e)),
+    );
     all
 }
 
