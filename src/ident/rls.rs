@@ -119,6 +119,8 @@ pub struct RlsRun {
     pub errors: Vec<f64>,
     /// θ_N.
     pub last: Vec<f64>,
+    /// P_N (at λ = 1 and a large α, (ΦᵀΦ)⁻¹: σ̂²·P_N is the covariance of θ̂).
+    pub covariance: DMatrix<f64>,
 }
 
 /// Runs RLS through the rows of `reg` in order.
@@ -138,6 +140,7 @@ pub fn run(reg: &Regression, options: &RlsOptions) -> Result<RlsRun, LsqError> {
         trajectory,
         errors,
         last: rls.theta().to_vec(),
+        covariance: rls.p,
     })
 }
 

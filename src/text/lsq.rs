@@ -3,6 +3,7 @@
 //! in English and Brazilian Portuguese with the notes' terms (mínimos quadrados, regressores,
 //! função custo, estimador recursivo, fator de esquecimento, sinal PRBS, validação, …).
 
+use crate::cli::arx::LsqCliError;
 use crate::ident::arx::{LsqError, Regressor};
 use crate::ident::prbs::{MAX_ORDER, MIN_ORDER, PrbsError};
 use crate::ident::validation::{MIN_PART, ValidationError};
@@ -249,6 +250,27 @@ impl Localize for PrbsError {
                 )
                 .into(),
             PrbsError::Model(e) => e.text(lang),
+        }
+    }
+}
+
+impl Localize for LsqCliError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            LsqCliError::Cli(e) => e.text(lang),
+            LsqCliError::NoInput => lang
+                .pick(
+                    "the file has no input column: least squares needs u(k) (give it with --u-col)",
+                    "o arquivo não tem coluna de entrada: mínimos quadrados precisam de u(k) (indique-a com --u-col)",
+                )
+                .into(),
+            LsqCliError::Levels(text) => lang.pick(
+                format!("--levels \"{text}\" must be two numbers, low then high, e.g. 0,1"),
+                format!("--levels \"{text}\" deve ter dois números, o baixo e o alto, p. ex. 0,1"),
+            ),
+            LsqCliError::Lsq(e) => e.text(lang),
+            LsqCliError::Discrete(e) => e.text(lang),
+            LsqCliError::Prbs(e) => e.text(lang),
         }
     }
 }
