@@ -15,6 +15,7 @@ use std::process::ExitCode;
 pub mod approx;
 pub mod diagnose;
 pub mod fit;
+pub mod hand;
 pub mod loop_cmd;
 
 use clap::{Args, Parser, Subcommand};
@@ -77,6 +78,8 @@ pub enum Command {
     Pade(approx::PadeArgs),
     /// Unity-feedback loop around Kp·G(s): closed loop, gain for specs, error constants, root locus.
     Loop(loop_cmd::LoopArgs),
+    /// The notes' hand methods (tangent, 63.2 %, Broida, Smith, points, three points) on a measured step.
+    Hand(hand::HandArgs),
 }
 
 const STEP_EXAMPLES: &str = "\
@@ -535,6 +538,7 @@ pub fn main() -> ExitCode {
         Some(Command::Approx(args)) => approx::finish(approx::run_approx(&args, lang), lang),
         Some(Command::Pade(args)) => approx::finish(approx::run_pade(&args, lang), lang),
         Some(Command::Loop(args)) => loop_cmd::main(&args, lang),
+        Some(Command::Hand(args)) => hand::finish(hand::run_hand(&args, lang), lang),
     }
 }
 

@@ -21,6 +21,7 @@ pub mod cli;
 pub mod code;
 pub mod design;
 pub mod feedback;
+pub mod hand;
 pub mod ident;
 pub mod identify;
 pub mod lti;
@@ -186,6 +187,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(feedback::messages());
     all.extend(app::messages());
     all.extend(approx::messages());
+    all.extend(hand::messages());
     all
 }
 
