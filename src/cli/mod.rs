@@ -17,6 +17,7 @@ pub mod arx;
 pub mod diagnose;
 pub mod discrete;
 pub mod fit;
+pub mod hand;
 pub mod loop_cmd;
 pub mod prbs;
 pub mod rls;
@@ -91,6 +92,8 @@ pub enum Command {
     C2d(discrete::C2dArgs),
     /// Back from a discrete model B/A·z^−nk to G(s) with its dead time.
     D2c(discrete::D2cArgs),
+    /// The notes' hand methods (tangent, 63.2 %, Broida, Smith, points, three points) on a measured step.
+    Hand(hand::HandArgs),
 }
 
 const STEP_EXAMPLES: &str = "\
@@ -554,6 +557,7 @@ pub fn main() -> ExitCode {
         Some(Command::Prbs(args)) => arx::finish(prbs::run_prbs(&args, lang), lang),
         Some(Command::C2d(args)) => arx::finish(discrete::run_c2d(&args, lang), lang),
         Some(Command::D2c(args)) => arx::finish(discrete::run_d2c(&args, lang), lang),
+        Some(Command::Hand(args)) => hand::finish(hand::run_hand(&args, lang), lang),
     }
 }
 

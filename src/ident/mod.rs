@@ -9,6 +9,7 @@ pub mod excitation;
 pub mod experiment;
 pub mod fit;
 pub mod guess;
+pub mod hand;
 pub mod handles;
 pub mod landscape;
 pub mod models;

@@ -21,6 +21,7 @@ pub mod cli;
 pub mod code;
 pub mod design;
 pub mod feedback;
+pub mod hand;
 pub mod ident;
 pub mod identify;
 pub mod lsq;
@@ -188,6 +189,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(app::messages());
     all.extend(approx::messages());
     all.extend(lsq::messages());
+    all.extend(hand::messages());
     all
 }
 

@@ -120,6 +120,8 @@ pub enum Command {
     Landscape(LandscapeCommand),
     /// Open the fitted model in the Design mode.
     ShowOnSPlane,
+    /// The hand methods' section.
+    Hand(super::hand_state::HandCommand),
 }
 
 /// What the session asks of the app after a command.

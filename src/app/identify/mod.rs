@@ -11,6 +11,8 @@
 
 pub mod commands;
 pub mod cost;
+pub mod hand;
+pub mod hand_state;
 pub mod landscape;
 pub mod panel;
 pub mod plot;

@@ -30,6 +30,8 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>)
     model_section(ui, session, look, out);
     ui.separator();
     fit_section(ui, session, look, out);
+    ui.separator();
+    super::hand::section(ui, session, look, out);
     if session.report.is_some() {
         results(ui, session, look, out);
         per_step_section(ui, session, look, out);

@@ -26,7 +26,7 @@ use super::steps::InputPlot;
 use super::words;
 
 /// Pixels around a handle that grab it.
-const GRAB: f32 = 9.0;
+pub(super) const GRAB: f32 = 9.0;
 
 /// The smallest height of the main plot (px).
 pub const MIN_PLOT_HEIGHT: f32 = 200.0;
@@ -187,6 +187,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                     look,
                 );
             }
+            super::hand::draw(plot, session, look);
             if let Some((_, what)) = shown
                 && !plots.model.is_empty()
             {
@@ -208,6 +209,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
         };
         let mut grabbed = !measured_drive && step_line(ui, &over, out);
         grabbed |= guess_handles(ui, &over, out);
+        grabbed |= super::hand::handles(ui, &over, out);
         if session.frozen.is_some() && !grabbed {
             out.push(Command::Handle(Gesture::Release));
         }
@@ -466,15 +468,15 @@ fn frozen(transform: &PlotTransform) -> Frozen {
 }
 
 /// What the handles over the main plot read.
-struct Over<'a> {
-    session: &'a Session,
-    transform: &'a PlotTransform,
-    look: &'a Look,
+pub(super) struct Over<'a> {
+    pub session: &'a Session,
+    pub transform: &'a PlotTransform,
+    pub look: &'a Look,
 }
 
 /// A draggable area `rect` over the plot, named `label` for screen readers (and kittest),
 /// explained by `help`; grabbing it holds the plot's axes as they are drawn.
-fn grab_area(
+pub(super) fn grab_area(
     ui: &mut Ui,
     (id, rect): (Id, Rect),
     (label, help): (&str, &str),

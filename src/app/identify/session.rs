@@ -287,6 +287,8 @@ pub struct Session {
     /// Which model of the chain is shown (0: the start).
     pub selected_step: Option<usize>,
     pub diagnose_note: DiagnoseNote,
+    /// The hand methods drawn on the measured curve.
+    pub hand: super::hand_state::HandState,
     /// The axes held while a handle is dragged.
     pub frozen: Option<Frozen>,
     /// The file the reading choices were last used on (none: typed for the next load).
@@ -747,7 +749,9 @@ impl Session {
         self.landscape.poll();
         self.per_step.poll();
         self.refresh_plots();
-        self.job.is_some()
+        let hand_fitting = self.hand.poll();
+        hand_fitting
+            || self.job.is_some()
             || self.diagnose_job.is_some()
             || self.landscape.is_computing()
             || self.per_step.is_running()
@@ -809,6 +813,7 @@ impl Session {
             Command::SelectStep(k) => self.select_step(k),
             Command::SetMarkers(m) => self.markers = m,
             Command::Landscape(c) => self.landscape_command(c),
+            Command::Hand(c) => self.hand.apply(c),
             Command::ShowOnSPlane => {
                 return self
                     .fitted_transfer_function()
@@ -1131,6 +1136,12 @@ impl Session {
 
     /// Recomputes the plots' data when the data or the shown model changed.
     fn refresh_plots(&mut self) {
+        let data = self.loaded.as_ref().and_then(|l| match &l.data {
+            Ok(d) => Some((d, &l.experiment)),
+            Err(_) => None,
+        });
+        self.hand
+            .refresh(data, self.data_revision, self.waker.clone());
         let shown = self.shown_model();
         let y0 = self.held_operating_point();
         let key = (self.data_revision, shown, y0);

@@ -1,0 +1,126 @@
+//! `degrau hand` through the binary: one method's JSON with its construction, the table of
+//! every method beside the least-squares fits, both languages, and the refusals.
+
+use std::process::{Command, Output};
+
+const TCLAB: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
+);
+const SPIKES: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/records/tclab_step_q1_100_spikes.csv"
+);
+
+fn hand(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_degrau"))
+        .arg("hand")
+        .args(args)
+        .output()
+        .expect("run degrau")
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let out = hand(&[args, &["--json"]].concat());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("one JSON object")
+}
+
+fn f(v: &serde_json::Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+#[test]
+fn the_tangent_on_the_tclab_step_with_its_construction() {
+    let j = json(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--method", "tangent"]);
+    assert_eq!(j["method"], "tangent");
+    assert_eq!(j["model"], "P1D");
+    // The stand-in's process has K = 0.69537 °C/%.
+    assert!((f(&j["K"]) - 0.695).abs() < 0.02, "{j}");
+    let (tau, theta) = (f(&j["tau"]), f(&j["theta"]));
+    let c = &j["construction"];
+    let t = &c["tangent"];
+    // The tangent's own numbers give θ and τ: where it meets the two levels.
+    assert!((f(&t["t_initial"]) - f(&c["t0"]) - theta).abs() < 1e-9);
+    assert!((f(&t["t_final"]) - f(&t["t_initial"]) - tau).abs() < 1e-9);
+    let slope = f(&t["slope"]);
+    assert!((f(&t["t_final"]) - f(&t["t"]) - (f(&c["y_final"]) - f(&t["y"])) / slope).abs() < 1e-6);
+    assert!(f(&j["fit_percent"]) > 80.0 && f(&j["fit_percent"]) < 100.0);
+    assert!(j.get("zeta").is_none());
+    // Moving the tangent's point later gives a later θ.
+    let later = json(&[
+        TCLAB, "--y-col", "T1", "--u-col", "Q1", "--method", "tangent", "--tangent-at", "150",
+    ]);
+    assert!(f(&later["theta"]) > theta + 5.0, "{later}");
+}
+
+#[test]
+fn the_three_point_method_gives_the_second_order_keys() {
+    let j = json(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--method", "three-point"]);
+    for key in ["K", "theta", "zeta", "omega_n", "fit_percent", "construction"] {
+        assert!(j.get(key).is_some(), "missing {key}: {j}");
+    }
+    let levels = j["construction"]["levels"].as_array().unwrap();
+    let percents: Vec<f64> = levels.iter().map(|l| f(&l["percent"])).collect();
+    assert_eq!(percents, [15.0, 45.0, 75.0]);
+    // ζ ≥ 1 on a heater: the two time constants, with τ1·τ2 = 1/ωn².
+    if f(&j["zeta"]) >= 1.0 {
+        let w = f(&j["omega_n"]);
+        assert!((f(&j["tau1"]) * f(&j["tau2"]) * w * w - 1.0).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn the_table_puts_every_method_beside_the_least_squares_fits() {
+    let j = json(&[TCLAB, "--y-col", "T1", "--u-col", "Q1"]);
+    let methods = j["methods"].as_array().unwrap();
+    let keys: Vec<&str> = methods.iter().map(|m| m["method"].as_str().unwrap()).collect();
+    assert_eq!(keys, ["tangent", "63", "broida", "smith", "points", "three-point"]);
+    let ls = j["least_squares"].as_array().unwrap();
+    let codes: Vec<&str> = ls.iter().map(|m| m["model"].as_str().unwrap()).collect();
+    assert_eq!(codes, ["P1D", "P2D"]);
+    // Least squares minimises the very error the fit % measures: no hand FOPTD beats P1D.
+    let best = f(&ls[0]["fit_percent"]);
+    for m in methods.iter().filter(|m| m["model"] == "P1D") {
+        assert!(f(&m["fit_percent"]) <= best + 1e-6, "{m} vs {best}");
+    }
+    let text = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--lang", "pt"]);
+    assert!(text.status.success());
+    let words = String::from_utf8(text.stdout).unwrap();
+    assert!(words.contains("Métodos gráficos"), "{words}");
+    assert!(words.contains("mínimos quadrados"), "{words}");
+    // --json is the same in both languages.
+    let pt = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--json", "--method", "smith", "--lang", "pt"]);
+    let en = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--json", "--method", "smith"]);
+    assert_eq!(pt.stdout, en.stdout);
+}
+
+#[test]
+fn the_spikes_record_reads_through_its_outliers() {
+    // TCLab heater 1, 0 → 100 % from the first row, single-sample spikes.
+    let j = json(&[
+        SPIKES, "--y-col", "T1", "--u-col", "Q1", "--initial-input", "0", "--method", "smith",
+    ]);
+    let k = f(&j["K"]);
+    assert!(k > 0.3 && k < 1.0, "{j}");
+    assert!(f(&j["tau"]) > 60.0 && f(&j["tau"]) < 400.0, "{j}");
+}
+
+#[test]
+fn refusals_are_said_in_words() {
+    let out = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--window", "0,30", "--method", "smith"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("settles") || err.contains("never reaches"), "{err}");
+    let out = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--method", "nonsense"]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = hand(&[
+        TCLAB, "--y-col", "T1", "--u-col", "Q1", "--window", "0,30", "--method", "smith", "--lang", "pt",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("estabilizar") || err.contains("nunca atinge"), "{err}");
+}
