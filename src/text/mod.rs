@@ -28,6 +28,7 @@ pub mod operating_point;
 pub mod report;
 pub mod step;
 pub mod steps;
+pub mod test_causes;
 
 /// A language the app and the CLI speak.
 #[derive(
@@ -186,6 +187,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(feedback::messages());
     all.extend(app::messages());
     all.extend(approx::messages());
+    all.extend(test_causes::messages());
     all
 }
 
