@@ -1,6 +1,7 @@
-//! `degrau diagnose FILE …`: what the fitted model gets wrong, the cause named with its
-//! evidence, the extended models and what each extension gains, headless. The data flags are
-//! `degrau fit`'s; every FIT object is [`FitJson`].
+//! `degrau diagnose FILE …`: what the test got wrong (its artefacts: `test_causes`), what the
+//! fitted model gets wrong (the cause named with its evidence, the extended models and what
+//! each extension gains: the `steps` chain), headless. The data flags are `degrau fit`'s;
+//! every FIT object is [`FitJson`].
 
 use std::io::{self, Write};
 
@@ -11,6 +12,7 @@ use crate::ident::diagnose::{DiagnoseOptions, DiagnoseReport, Gain, diagnose};
 use crate::ident::excitation::Excitation;
 use crate::ident::models::{Param, Values};
 use crate::ident::per_step::StepFit;
+use crate::ident::test_causes::{Handling, TestCause, TestEvidence};
 
 use crate::text::{Lang, Localize};
 
@@ -43,6 +45,31 @@ struct StepJson {
     gain: Gain,
 }
 
+/// One cause of the test in the JSON output: its stable id, its evidence and remedy in
+/// English words, its interval, what Degrau did, and the typed evidence (`facts`).
+#[derive(Debug, Serialize)]
+struct TestCauseJson {
+    cause: &'static str,
+    evidence: String,
+    interval: Option<[f64; 2]>,
+    handling: Handling,
+    remedy: String,
+    facts: TestEvidence,
+}
+
+impl TestCauseJson {
+    fn new(c: &TestCause) -> Self {
+        Self {
+            cause: c.kind.id(),
+            evidence: c.evidence.text(Lang::En),
+            interval: c.interval.map(|(a, b)| [a, b]),
+            handling: c.handling,
+            remedy: crate::text::test_causes::remedy(c, Lang::En),
+            facts: c.evidence.clone(),
+        }
+    }
+}
+
 /// The static gain with its interval.
 #[derive(Debug, Serialize)]
 struct StaticGainJson {
@@ -62,6 +89,8 @@ struct DiagnoseJson {
     static_gain: StaticGainJson,
     /// The input changes every fit used (the diagnosis's `steps` are its chain).
     input_steps: Vec<InputStepJson>,
+    /// What the test got wrong (artefacts, not structure), in the order checked.
+    test_causes: Vec<TestCauseJson>,
     /// Each change fitted on its own window with the final structure (a multi-step record).
     #[serde(skip_serializing_if = "Option::is_none")]
     per_step: Option<Vec<FitJson>>,
@@ -90,6 +119,7 @@ impl DiagnoseJson {
                 ci95: r.static_gain.1.map(|(a, b)| [a, b]),
             },
             input_steps: steps_json(input),
+            test_causes: r.test_causes.iter().map(TestCauseJson::new).collect(),
             per_step: per_step.map(per_step_json),
         }
     }

@@ -30,6 +30,7 @@ pub mod operating_point;
 pub mod report;
 pub mod step;
 pub mod steps;
+pub mod test_causes;
 
 /// A language the app and the CLI speak.
 #[derive(
@@ -190,6 +191,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(approx::messages());
     all.extend(lsq::messages());
     all.extend(hand::messages());
+    all.extend(test_causes::messages());
     all
 }
 

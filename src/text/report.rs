@@ -160,10 +160,17 @@ pub fn static_gain_line(d: &DiagnoseReport, lang: Lang) -> String {
     )
 }
 
-/// The whole diagnosis as `degrau diagnose` prints it: the table, then each step's cause,
-/// evidence and remedy, the verdict and the static gain.
+/// The whole diagnosis as `degrau diagnose` prints it: what the test got wrong, then what
+/// the model gets wrong (the table, then each step's cause, evidence and remedy), the
+/// verdict, the line naming the structure and the artefacts, and the static gain.
 pub fn diagnose_text(d: &DiagnoseReport, lang: Lang) -> String {
-    let mut lines = chain_table(d, lang);
+    let mut lines = super::test_causes::section(&d.test_causes, lang);
+    lines.push(String::new());
+    lines.push(format!(
+        "{}:",
+        super::test_causes::TestCausePhrase::ModelHeading.get(lang)
+    ));
+    lines.extend(chain_table(d, lang));
     for (k, s) in d.steps.iter().enumerate() {
         lines.push(String::new());
         let [cause, evidence, remedy] = step_lines(s, lang);
@@ -175,6 +182,7 @@ pub fn diagnose_text(d: &DiagnoseReport, lang: Lang) -> String {
     if let Some(v) = &d.verdict {
         lines.push(v.text(lang));
     }
+    lines.push(super::test_causes::verdict_line(d, lang));
     lines.push(static_gain_line(d, lang));
     lines.join("\n")
 }

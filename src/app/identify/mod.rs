@@ -5,8 +5,8 @@
 //! landscape. Everything computed comes from [`crate::ident`].
 //!
 //! The mode is a [`Session`] (its state, jobs and derived data; no egui) and views that read
-//! it and return [`Command`]s: [`panel`] (the right side), [`plot`] (the centre) and
-//! [`landscape`] (a window). The top level calls, each frame, [`Session::poll`], then
+//! it and return [`Command`]s: [`panel`] (the right side), [`plot`] (the centre),
+//! [`test_causes`] (what the test got wrong, in both) and [`landscape`] (a window). The top level calls, each frame, [`Session::poll`], then
 //! [`show`], then [`Session::apply`] for each command, and acts on an [`Outcome`].
 
 pub mod commands;
@@ -18,6 +18,7 @@ pub mod panel;
 pub mod plot;
 pub mod session;
 pub mod steps;
+pub mod test_causes;
 pub mod words;
 
 use eframe::egui;

@@ -37,6 +37,10 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>)
         per_step_section(ui, session, look, out);
         ui.separator();
         diagnose_section(ui, session, look, out);
+        if session.diagnosis.is_some() {
+            ui.separator();
+            super::test_causes::section(ui, session, look);
+        }
     }
 }
 

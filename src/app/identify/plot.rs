@@ -175,6 +175,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                     plot.span(Span::new(Phrase::Evidence.get(lang), a..=b).fill(palette.evidence));
                 }
             }
+            super::test_causes::shade(plot, session, &plots.measured, frame.y.1, look);
             if let (Some(info), Some(setup)) = (&plots.info, &setup)
                 && input.changes.len() <= 1
             {
@@ -224,6 +225,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     if input.changes.len() > 1 {
         window_marks(ui, input, &transform, look);
     }
+    super::test_causes::marks(ui, session, &transform, look);
 
     ui.label(Phrase::InputPlot.get(lang));
     let input_response = base_plot(input_plot_id(), input_height)
@@ -675,7 +677,7 @@ fn window_marks(ui: &mut Ui, input: &InputPlot, transform: &PlotTransform, look:
 
 /// The point of a polyline nearest in time to `t` (the last of equal times: the level after
 /// a jump).
-fn nearest_point(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
+pub(super) fn nearest_point(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
     super::session::nearest_from(points, t, points.partition_point(|p| p[0] <= t))
 }
 

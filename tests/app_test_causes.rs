@@ -1,0 +1,87 @@
+//! "What the test got wrong" in the Identify mode, through egui_kittest: the SBHS heater
+//! record (a synthetic stand-in, see tests/data/records/SOURCES.md) is still rising before
+//! its step; after the whole loop the panel names `not_at_rest` apart from the chain, with
+//! its evidence, what Degrau did and the remedy, and its interval is shaded on the output
+//! plot (an accessible mark over the span, at the span's times on the plot's axis).
+
+mod kit;
+
+use kit::{load, wait_for};
+
+use degrau::app::DegrauApp;
+use degrau::app::identify::plot::main_plot_id;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+
+const SBHS: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/records/sbhs_step_not_at_rest_synthetic.txt"
+);
+
+/// The app with the SBHS record loaded as a student reads it: time from the sample column
+/// (one a second), output the temperature, input the heater, start model P1.
+fn sbhs_p1() -> Harness<'static, DegrauApp> {
+    let mut h = Harness::builder()
+        .with_size([1360.0, 860.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
+    h.run_steps(2);
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    let settings = &mut h.state_mut().ident.settings;
+    settings.time_col = "1".into();
+    settings.y_col = "4".into();
+    settings.u_col = "2".into();
+    settings.code = "P1".into();
+    load(&mut h, SBHS);
+    h
+}
+
+fn plot_x(h: &Harness<'_, DegrauApp>, t: f64) -> f32 {
+    let memory = egui_plot::PlotMemory::load(&h.ctx, main_plot_id()).expect("the plot drew");
+    memory
+        .transform()
+        .position_from_point(&egui_plot::PlotPoint::new(t, 0.0))
+        .x
+}
+
+#[test]
+fn the_sbhs_record_is_not_at_rest_and_its_interval_is_shaded() {
+    let mut h = sbhs_p1();
+    h.get_by_label_contains("Loaded 821 samples");
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| !h.state().ident.is_fitting());
+    h.get_by_label("Run the whole loop").click_accesskit();
+    h.run_steps(1);
+    wait_for(&mut h, |h| !h.state().ident.is_diagnosing());
+    // The two questions stay apart.
+    h.get_by_label("What does the model get wrong?");
+    h.get_by_label("What the test got wrong");
+    h.get_by_label("not_at_rest: Not at rest before the step");
+    h.get_by_label_contains("Before the first input change (t = 1 … 250 s, 250 samples)");
+    h.get_by_label_contains("What Degrau did: Degrau estimated an initial transient");
+    h.get_by_label_contains("What to do: Wait for steady state before the step");
+    // The verdict's structure keeps no invented drift, offset or integrator.
+    let d = h.state().ident.diagnosis.clone().expect("a diagnosis");
+    assert!(
+        !d.final_fit.model.structure.integrator,
+        "{:?}",
+        d.final_fit.model
+    );
+    assert!(
+        !d.final_fit.model.structure.drift,
+        "{:?}",
+        d.final_fit.model
+    );
+    // The interval shaded on the output plot: its mark spans t = 1 … 250 s on the axis.
+    let mark = h.get_by_label("not_at_rest: t = 1 … 250 s");
+    let rect = mark.rect();
+    assert!((rect.left() - plot_x(&h, 1.0)).abs() < 1.5, "{rect:?}");
+    assert!((rect.right() - plot_x(&h, 250.0)).abs() < 1.5, "{rect:?}");
+    // The span's label is painted on the plot in the student's words.
+    let painted: Vec<String> = kit::painted_texts(&h).into_iter().map(|p| p.0).collect();
+    assert!(
+        painted.iter().any(|t| t == "Not at rest before the step"),
+        "{painted:?}"
+    );
+}

@@ -1,0 +1,113 @@
+//! `degrau diagnose` says what the test got wrong apart from what the model lacks: the SBHS
+//! heater record (a synthetic stand-in, see tests/data/records/SOURCES.md) was still rising
+//! before its step; the notes' LECI test was at rest.
+
+use std::process::Command;
+
+const SBHS: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/records/sbhs_step_not_at_rest_synthetic.txt"
+);
+const LECI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv");
+
+/// The SBHS columns: time from the sample number (one a second), heater, temperature.
+const SBHS_COLUMNS: [&str; 6] = ["--time-col", "1", "--u-col", "2", "--y-col", "4"];
+
+fn degrau(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_degrau"))
+        .arg("diagnose")
+        .args(args)
+        .output()
+        .expect("run degrau");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+#[test]
+fn the_json_lists_not_at_rest_with_its_words_interval_handling_and_facts() {
+    let mut args = vec![SBHS, "--json"];
+    args.extend(SBHS_COLUMNS);
+    let en = degrau(&args);
+    args.extend(["--lang", "pt"]);
+    assert_eq!(degrau(&args), en, "--json is the same in every language");
+    let j: serde_json::Value = serde_json::from_str(&en).expect("one JSON object");
+    let causes = j["test_causes"].as_array().expect("test_causes");
+    let rest = causes
+        .iter()
+        .find(|c| c["cause"] == "not_at_rest")
+        .unwrap_or_else(|| panic!("{causes:?}"));
+    let evidence = rest["evidence"].as_str().unwrap();
+    assert!(
+        evidence.starts_with("Before the first input change (t = 1 … 250 s, 250 samples)"),
+        "{evidence}"
+    );
+    assert_eq!(rest["interval"], serde_json::json!([1.0, 250.0]));
+    assert_eq!(rest["handling"]["kind"], "initial_transient");
+    assert!(
+        rest["remedy"]
+            .as_str()
+            .unwrap()
+            .starts_with("Wait for steady state")
+    );
+    // The typed facts: the line through the 250 samples before the step rose by about the
+    // generator's 5.2 °C (29.3 → 34.5), beyond the threshold it reports.
+    let motion = &rest["facts"]["motion"];
+    assert_eq!(rest["facts"]["kind"], "not_at_rest");
+    let change = motion["change"].as_f64().unwrap();
+    assert!((4.0..6.0).contains(&change), "{motion}");
+    assert!(change > motion["threshold"].as_f64().unwrap());
+    // The chain stays for structure, and the gain is the source's 0.23 °C/% within 8 %.
+    assert!(j["steps"].is_array());
+    let kp = j["static_gain"]["value"].as_f64().unwrap();
+    assert!((kp - 0.23).abs() <= 0.08 * 0.23, "Kp = {kp}");
+}
+
+#[test]
+fn the_text_puts_the_test_before_the_model_and_the_verdict_names_both() {
+    let mut args = vec![SBHS];
+    args.extend(SBHS_COLUMNS);
+    let text = degrau(&args);
+    let test = text.find("What the test got wrong:").expect(&text);
+    let model = text.find("What the model gets wrong:").expect(&text);
+    assert!(test < model, "{text}");
+    assert!(
+        text.contains("1. not_at_rest: Not at rest before the step"),
+        "{text}"
+    );
+    assert!(text.contains("Remedy") || text.contains("What to do: Wait for steady state"));
+    let verdict = text
+        .lines()
+        .find(|l| l.starts_with("Verdict: structure "))
+        .expect(&text);
+    assert!(
+        verdict.contains("initial transient") && verdict.contains("test: not_at_rest"),
+        "{verdict}"
+    );
+    args.extend(["--lang", "pt"]);
+    let pt = degrau(&args);
+    assert!(pt.contains("O que o ensaio teve de errado:"), "{pt}");
+    assert!(
+        pt.contains("Espere o regime permanente antes do degrau"),
+        "{pt}"
+    );
+}
+
+#[test]
+fn a_test_at_rest_has_nothing_to_say_about_the_test() {
+    let args = [
+        LECI, "--t0", "5", "--du", "10", "--y0", "50", "--start", "P2DU",
+    ];
+    let j: serde_json::Value =
+        serde_json::from_str(&degrau(&[&args[..], &["--json"]].concat())).unwrap();
+    assert_eq!(j["test_causes"], serde_json::json!([]));
+    let text = degrau(&args);
+    assert!(
+        text.contains("What the test got wrong:\n   Nothing"),
+        "{text}"
+    );
+    assert!(text.contains("test: no artefact found."), "{text}");
+}
