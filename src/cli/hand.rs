@@ -10,8 +10,8 @@ use serde::Serialize;
 
 use crate::ident::fit::{FitData, FitOptions, FitReport};
 use crate::ident::hand::{
-    Construction, DeadTimeFrom, HandError, HandEstimate, HandMethod, Overrides, Record,
-    estimate, estimate_all,
+    Construction, DeadTimeFrom, HandError, HandEstimate, HandMethod, Overrides, Record, estimate,
+    estimate_all,
 };
 use crate::text::{Lang, Localize};
 
@@ -143,10 +143,7 @@ impl HandJson {
 #[serde(untagged)]
 pub enum RowJson {
     Read(Box<HandJson>),
-    Refused {
-        method: &'static str,
-        error: String,
-    },
+    Refused { method: &'static str, error: String },
 }
 
 /// A least-squares fit in the table's JSON.
@@ -180,7 +177,11 @@ pub fn run_hand(args: &HandArgs, lang: Lang) -> Result<(), HandCliError> {
             if args.json {
                 write_json_line(&mut out, &HandJson::new(&e))
             } else {
-                writeln!(out, "{}", crate::text::hand::estimate_lines(&e, lang).join("\n"))
+                writeln!(
+                    out,
+                    "{}",
+                    crate::text::hand::estimate_lines(&e, lang).join("\n")
+                )
             }
         }
         None => {

@@ -170,7 +170,13 @@ mod tests {
         let times: Vec<f64> = (0..400).map(|k| k as f64 * 0.5).collect();
         let y: Vec<f64> = times
             .iter()
-            .map(|&t| 3.0 + if t > 12.0 { 2.0 * (1.0 - (-(t - 12.0) / 20.0).exp()) } else { 0.0 })
+            .map(|&t| {
+                3.0 + if t > 12.0 {
+                    2.0 * (1.0 - (-(t - 12.0) / 20.0).exp())
+                } else {
+                    0.0
+                }
+            })
             .collect();
         let data = FitData {
             times,

@@ -2,8 +2,8 @@
 
 use super::curve::line_fit;
 use super::{
-    DeadTimeFrom, HandError, HandMethod, HandWarning, Overrides, Read, Reading,
-    SecondOrder, Shape, THREE_POINT_ZETA, Tangent,
+    DeadTimeFrom, HandError, HandMethod, HandWarning, Overrides, Read, Reading, SecondOrder, Shape,
+    THREE_POINT_ZETA, Tangent,
 };
 
 /// The band of the set-of-points method (% of the change).
@@ -190,7 +190,12 @@ mod tests {
             .iter()
             .map(|&t| {
                 let s = t - t0 - theta;
-                100.0 + if s > 0.0 { 2.0 * k * (1.0 - (-s / tau).exp()) } else { 0.0 }
+                100.0
+                    + if s > 0.0 {
+                        2.0 * k * (1.0 - (-s / tau).exp())
+                    } else {
+                        0.0
+                    }
             })
             .collect();
         Record::new(&times, &y, t0, 2.0, 100.0).unwrap()
