@@ -193,7 +193,8 @@ mod tests {
         let before = state.current().unwrap().theta;
         state.apply(HandCommand::MoveTangent(40.0));
         state.results = estimate_all(&record, &state.overrides);
-        assert!(state.current().unwrap().theta > before + 1.0);
+        // Later on the concave part the tangent is flatter and meets y0 earlier.
+        assert!(state.current().unwrap().theta < before - 1.0);
         state.apply(HandCommand::Reset);
         assert_eq!(state.overrides, Overrides::default());
     }
