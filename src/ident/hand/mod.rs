@@ -474,6 +474,29 @@ fn model_of(k: f64, theta: f64, shape: Shape, y0: f64) -> Model {
     Model::new(structure, values)
 }
 
+/// The least-squares structures the hand methods are compared with: the first- and
+/// second-order models with dead time they read.
+pub const COMPARED: [&str; 2] = ["P1D", "P2D"];
+
+/// The least-squares fits of [`COMPARED`] on the same data (default options; one that fails
+/// is left out), until `cancelled` says stop.
+pub fn least_squares(
+    data: &FitData,
+    experiment: &super::experiment::Experiment,
+    cancelled: impl Fn() -> bool,
+) -> Vec<super::fit::FitReport> {
+    let options = super::fit::FitOptions::default();
+    COMPARED
+        .iter()
+        .take_while(|_| !cancelled())
+        .filter_map(|code| {
+            experiment
+                .fit_prepared(data, code, false, &[], &options, &mut ())
+                .ok()
+        })
+        .collect()
+}
+
 /// The fit % of `model` on every sample of `data`: 100·(1 − ‖y − ŷ‖/‖y − ȳ‖), as
 /// [`crate::ident::fit`] reports it (NaN for a constant record).
 pub fn fit_percent(model: &Model, data: &FitData) -> Result<f64, ModelError> {
