@@ -34,13 +34,18 @@ fn tclab() -> Harness<'static, DegrauApp> {
 
 /// The tangent row's θ and τ cells as a student reads them.
 fn tangent_row(h: &Harness<'_, DegrauApp>) -> (f64, f64) {
-    let e = h.state().ident.hand.current().expect("the tangent is drawn");
+    let e = h
+        .state()
+        .ident
+        .hand
+        .current()
+        .expect("the tangent is drawn");
     assert_eq!(e.method, HandMethod::Tangent);
     let (theta, tau) = (e.theta, e.tau.unwrap());
     // The table shows them to four significant digits.
     for x in [theta, tau] {
         let cell = degrau::text::Lang::En.num(x, 4);
-        h.get_by_label(&cell);
+        assert!(h.get_all_by_label(&cell).count() > 0, "no cell {cell}");
     }
     (theta, tau)
 }
@@ -50,23 +55,40 @@ fn draw_the_tangent_drag_its_point_and_read_the_table() {
     let mut h = tclab();
     h.get_by_label("Hand methods").click();
     h.run_steps(3);
-    h.get_by_label("Tangent (reaction curve)").click();
+    // The method's selector comes before its row in the table.
+    h.get_all_by_label("Tangent (reaction curve)")
+        .next()
+        .expect("the method selector")
+        .click();
     h.run_steps(3);
     // Every method's row and the least-squares fits beside them.
-    for m in ["63.2 % time", "Smith's two points (28.3 %, 63.2 %)", "Three points (Mollenkamp)"] {
-        h.get_by_label(m);
+    for m in [
+        "63.2 % time",
+        "Smith's two points (28.3 %, 63.2 %)",
+        "Three points (Mollenkamp)",
+    ] {
+        assert_eq!(h.get_all_by_label(m).count(), 2, "{m}: selector and row");
     }
     wait_for(&mut h, |h| h.state().ident.hand.least_squares.len() == 2);
     assert_eq!(h.get_all_by_label("least squares").count(), 2);
     let (theta, tau) = tangent_row(&h);
-    // The steepest rise of the heater is early: drag the point later along the curve.
+    // The steepest rise of the heater is early: drag the point later along the curve, where
+    // the tangent is flatter and meets y0 earlier.
     kit::drag_by(&mut h, "tangent's point", Vec2::new(120.0, 0.0), 6);
     h.run_steps(3);
     let (theta_after, tau_after) = tangent_row(&h);
-    assert!(theta_after > theta + 1.0, "θ {theta} → {theta_after}");
-    assert!(tau_after != tau, "τ {tau} → {tau_after}");
+    assert!(theta_after < theta - 1.0, "θ {theta} → {theta_after}");
+    assert!(tau_after > tau + 1.0, "τ {tau} → {tau_after}");
     let moved = h.state().ident.hand.overrides.tangent_time.expect("moved");
-    let point = h.state().ident.hand.current().unwrap().construction.tangent.unwrap();
+    let point = h
+        .state()
+        .ident
+        .hand
+        .current()
+        .unwrap()
+        .construction
+        .tangent
+        .unwrap();
     assert!((point.t - moved).abs() < 30.0, "{} vs {moved}", point.t);
     // Reset: back to the steepest rise.
     h.get_by_label("Reset the construction").click();

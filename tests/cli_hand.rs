@@ -12,6 +12,11 @@ const SPIKES: &str = concat!(
     "/tests/data/records/tclab_step_q1_100_spikes.csv"
 );
 
+/// The TCLab copy's arguments (output T1, input Q1) followed by `extra`.
+fn tclab<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+    [&[TCLAB, "--y-col", "T1", "--u-col", "Q1"], extra].concat()
+}
+
 fn hand(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_degrau"))
         .arg("hand")
@@ -36,7 +41,7 @@ fn f(v: &serde_json::Value) -> f64 {
 
 #[test]
 fn the_tangent_on_the_tclab_step_with_its_construction() {
-    let j = json(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--method", "tangent"]);
+    let j = json(&tclab(&["--method", "tangent"]));
     assert_eq!(j["method"], "tangent");
     assert_eq!(j["model"], "P1D");
     // The stand-in's process has K = 0.69537 °C/%.
@@ -49,19 +54,27 @@ fn the_tangent_on_the_tclab_step_with_its_construction() {
     assert!((f(&t["t_final"]) - f(&t["t_initial"]) - tau).abs() < 1e-9);
     let slope = f(&t["slope"]);
     assert!((f(&t["t_final"]) - f(&t["t"]) - (f(&c["y_final"]) - f(&t["y"])) / slope).abs() < 1e-6);
-    assert!(f(&j["fit_percent"]) > 80.0 && f(&j["fit_percent"]) < 100.0);
+    // The tangent reads this overdamped heater slow (the source's P2 has lags of 20 s and
+    // 141 s): its FOPTD fits worse than the level-reading methods.
+    assert!(f(&j["fit_percent"]) > 60.0 && f(&j["fit_percent"]) < 100.0);
     assert!(j.get("zeta").is_none());
-    // Moving the tangent's point later gives a later θ.
-    let later = json(&[
-        TCLAB, "--y-col", "T1", "--u-col", "Q1", "--method", "tangent", "--tangent-at", "150",
-    ]);
-    assert!(f(&later["theta"]) > theta + 5.0, "{later}");
+    // A tangent later on the concave part of the curve is flatter: it meets y0 earlier.
+    let later = json(&tclab(&["--method", "tangent", "--tangent-at", "150"]));
+    assert!(f(&later["theta"]) < theta - 5.0, "{later}");
+    assert!(f(&later["tau"]) > tau + 5.0, "{later}");
 }
 
 #[test]
 fn the_three_point_method_gives_the_second_order_keys() {
-    let j = json(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--method", "three-point"]);
-    for key in ["K", "theta", "zeta", "omega_n", "fit_percent", "construction"] {
+    let j = json(&tclab(&["--method", "three-point"]));
+    for key in [
+        "K",
+        "theta",
+        "zeta",
+        "omega_n",
+        "fit_percent",
+        "construction",
+    ] {
         assert!(j.get(key).is_some(), "missing {key}: {j}");
     }
     let levels = j["construction"]["levels"].as_array().unwrap();
@@ -76,10 +89,16 @@ fn the_three_point_method_gives_the_second_order_keys() {
 
 #[test]
 fn the_table_puts_every_method_beside_the_least_squares_fits() {
-    let j = json(&[TCLAB, "--y-col", "T1", "--u-col", "Q1"]);
+    let j = json(&tclab(&[]));
     let methods = j["methods"].as_array().unwrap();
-    let keys: Vec<&str> = methods.iter().map(|m| m["method"].as_str().unwrap()).collect();
-    assert_eq!(keys, ["tangent", "63", "broida", "smith", "points", "three-point"]);
+    let keys: Vec<&str> = methods
+        .iter()
+        .map(|m| m["method"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        keys,
+        ["tangent", "63", "broida", "smith", "points", "three-point"]
+    );
     let ls = j["least_squares"].as_array().unwrap();
     let codes: Vec<&str> = ls.iter().map(|m| m["model"].as_str().unwrap()).collect();
     assert_eq!(codes, ["P1D", "P2D"]);
@@ -88,14 +107,14 @@ fn the_table_puts_every_method_beside_the_least_squares_fits() {
     for m in methods.iter().filter(|m| m["model"] == "P1D") {
         assert!(f(&m["fit_percent"]) <= best + 1e-6, "{m} vs {best}");
     }
-    let text = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--lang", "pt"]);
+    let text = hand(&tclab(&["--lang", "pt"]));
     assert!(text.status.success());
     let words = String::from_utf8(text.stdout).unwrap();
     assert!(words.contains("Métodos gráficos"), "{words}");
     assert!(words.contains("mínimos quadrados"), "{words}");
     // --json is the same in both languages.
-    let pt = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--json", "--method", "smith", "--lang", "pt"]);
-    let en = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--json", "--method", "smith"]);
+    let pt = hand(&tclab(&["--json", "--method", "smith", "--lang", "pt"]));
+    let en = hand(&tclab(&["--json", "--method", "smith"]));
     assert_eq!(pt.stdout, en.stdout);
 }
 
@@ -103,7 +122,15 @@ fn the_table_puts_every_method_beside_the_least_squares_fits() {
 fn the_spikes_record_reads_through_its_outliers() {
     // TCLab heater 1, 0 → 100 % from the first row, single-sample spikes.
     let j = json(&[
-        SPIKES, "--y-col", "T1", "--u-col", "Q1", "--initial-input", "0", "--method", "smith",
+        SPIKES,
+        "--y-col",
+        "T1",
+        "--u-col",
+        "Q1",
+        "--initial-input",
+        "0",
+        "--method",
+        "smith",
     ]);
     let k = f(&j["K"]);
     assert!(k > 0.3 && k < 1.0, "{j}");
@@ -112,15 +139,21 @@ fn the_spikes_record_reads_through_its_outliers() {
 
 #[test]
 fn refusals_are_said_in_words() {
-    let out = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--window", "0,30", "--method", "smith"]);
+    let out = hand(&tclab(&["--window", "0,30", "--method", "smith"]));
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("settles") || err.contains("never reaches"), "{err}");
-    let out = hand(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--method", "nonsense"]);
+    assert!(
+        err.contains("settles") || err.contains("never reaches"),
+        "{err}"
+    );
+    let out = hand(&tclab(&["--method", "nonsense"]));
     assert_eq!(out.status.code(), Some(2));
-    let out = hand(&[
-        TCLAB, "--y-col", "T1", "--u-col", "Q1", "--window", "0,30", "--method", "smith", "--lang", "pt",
-    ]);
+    let out = hand(&tclab(&[
+        "--window", "0,30", "--method", "smith", "--lang", "pt",
+    ]));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("estabilizar") || err.contains("nunca atinge"), "{err}");
+    assert!(
+        err.contains("estabilizar") || err.contains("nunca atinge"),
+        "{err}"
+    );
 }

@@ -59,7 +59,12 @@ impl Case {
             .iter()
             .map(|&t| {
                 let s = t - self.ts - self.theta;
-                self.y0 + if s > 0.0 { self.k * self.du * shape(s) } else { 0.0 }
+                self.y0
+                    + if s > 0.0 {
+                        self.k * self.du * shape(s)
+                    } else {
+                        0.0
+                    }
             })
             .collect();
         (times, y)
@@ -151,7 +156,12 @@ fn methods_exact_on_a_fopdt_are_within_one_percent() {
         ..Overrides::default()
     };
     let e = estimate(&record, HandMethod::SixtyThree, &departure).unwrap();
-    close("θ departure", e.theta, theta + 40.0 * (1.0 / 0.98f64).ln(), 0.01);
+    close(
+        "θ departure",
+        e.theta,
+        theta + 40.0 * (1.0 / 0.98f64).ln(),
+        0.01,
+    );
 }
 
 #[test]
@@ -184,17 +194,28 @@ fn the_tangent_of_an_overdamped_curve_is_its_inflection_tangent() {
     // Smith's FOPTD passes through the curve's own 28.3 % and 63.2 % points.
     let e = estimate(&record, HandMethod::Smith, &Overrides::default()).unwrap();
     let (tau, theta) = (e.tau.unwrap(), e.theta + gap);
-    close("Smith 28.3 %", theta + tau * (1.0 / (1.0 - 0.283f64)).ln(), bisect(&s, 0.283) + case.theta, 0.005);
-    close("Smith 63.2 %", theta + tau * (1.0 / (1.0 - 0.632f64)).ln(), t63, 0.005);
-    // Every first-order method brackets the truth the usual way: θ between the true dead
-    // time and the tangent's, τ between τ1 and τ1 + τ2 (the lag τ2 read as dead time).
+    close(
+        "Smith 28.3 %",
+        theta + tau * (1.0 / (1.0 - 0.283f64)).ln(),
+        bisect(&s, 0.283) + case.theta,
+        0.005,
+    );
+    close(
+        "Smith 63.2 %",
+        theta + tau * (1.0 / (1.0 - 0.632f64)).ln(),
+        t63,
+        0.005,
+    );
+    // The level-reading methods bracket the truth the usual way: θ between the true dead
+    // time and it plus τ2, τ between τ1 and τ1 + τ2 (the lag τ2 read as dead time). The
+    // tangent's own τ is longer (checked against the closed form above).
     for (method, result) in estimate_all(&record, &Overrides::default()) {
-        if method.second_order() {
+        if method.second_order() || method == HandMethod::Tangent {
             continue;
         }
         let e = result.unwrap();
         assert!(
-            e.theta > case.theta - gap && e.theta < start + 0.01 * start,
+            e.theta > case.theta - gap && e.theta < case.theta + t2,
             "{method:?} θ {}",
             e.theta
         );
@@ -211,22 +232,22 @@ fn bisect(s: &dyn Fn(f64) -> f64, level: f64) -> f64 {
     let (mut a, mut b) = (0.0, 1e4);
     for _ in 0..200 {
         let m = 0.5 * (a + b);
-        if s(m) < level {
-            a = m
-        } else {
-            b = m
-        }
+        if s(m) < level { a = m } else { b = m }
     }
     0.5 * (a + b)
 }
 
 #[test]
 fn three_points_read_a_soptd_across_the_notes_damping_range() {
-    // Mollenkamp's correlations are curve fits; neither the notes ("boas estimativas") nor
-    // Smith & Corripio give a figure. The bound tested is this: on exact SOPTD records with
-    // 0.707 ≤ ζ ≤ 3, ζ and ωn within 6 %, θ within 2 % of the slowest time (1/(ζωn) … τ1)
-    // plus the dead time's 5 %, and the model's fit % above 99 (the notes' "good estimates").
-    for &zeta in &[0.707, 0.8, 1.0, 1.3, 2.0, 3.0] {
+    // Mollenkamp's correlations are curve fits and no one publishes their error: the notes
+    // say "boas estimativas para 0.707 ≤ ξ ≤ 3.0". Evaluated on exact curves (a bisection
+    // of the closed forms, independent of this crate), they read ζ and ωn within 3 % for
+    // 0.707 ≤ ζ ≤ 1.3 (worst: ζ 1.3 read 1.263, ωn 2.4 % low), but ζ = 2 reads 2.57 and from
+    // ζ ≈ 2.5 on the ratio x = (t45 − t15)/(t75 − t15) is within 3e-4 of the formula's pole
+    // 0.356 (x → 0.3557, the first-order value, as ζ grows), so ζ is meaningless there.
+    // Tested: ζ, ωn within 3 % and θ within 2 % of the slowest time plus 5 % of θ on
+    // 0.707–1.3, the fit % above 99; ζ = 2.5 and 3 refused as first-order-like.
+    for &zeta in &[0.707f64, 0.8, 1.0, 1.3, 2.5, 3.0] {
         let wn = 0.2;
         let case = Case {
             k: 0.8,
@@ -238,10 +259,18 @@ fn three_points_read_a_soptd_across_the_notes_damping_range() {
             length: 2.02 + 4.0 + 80.0 * zeta.max(1.0) / wn,
         };
         let record = case.record(&second_order(zeta, wn));
-        let e = estimate(&record, HandMethod::ThreePoint, &Overrides::default()).unwrap();
+        let result = estimate(&record, HandMethod::ThreePoint, &Overrides::default());
+        if zeta > 2.0 {
+            assert!(
+                matches!(result, Err(HandError::ThreePointShape { .. })),
+                "ζ {zeta}: {result:?}"
+            );
+            continue;
+        }
+        let e = result.unwrap();
         let so = e.second_order.unwrap();
-        close(&format!("ζ {zeta}"), so.zeta, zeta, 0.06);
-        close(&format!("ωn {zeta}"), so.omega_n, wn, 0.06);
+        close(&format!("ζ {zeta}"), so.zeta, zeta, 0.03);
+        close(&format!("ωn {zeta}"), so.omega_n, wn, 0.03);
         let slowest = 1.0 / (zeta * wn) + (zeta * zeta - 1.0).max(0.0).sqrt() / wn;
         let theta = case.theta + case.ts - case.t0();
         assert!(
@@ -253,9 +282,20 @@ fn three_points_read_a_soptd_across_the_notes_damping_range() {
         assert!(e.fit_percent > 99.0, "ζ {zeta}: fit {}", e.fit_percent);
         assert_eq!(so.tau1.is_some(), so.zeta >= 1.0);
         if let (Some(t1), Some(t2)) = (so.tau1, so.tau2) {
-            close("τ1τ2 = 1/ωn²", t1 * t2, 1.0 / (so.omega_n * so.omega_n), 1e-9);
+            close(
+                "τ1τ2 = 1/ωn²",
+                t1 * t2,
+                1.0 / (so.omega_n * so.omega_n),
+                1e-9,
+            );
         }
-        assert!(e.warnings.is_empty(), "{:?}", e.warnings);
+        let (low, high) = degrau::ident::hand::THREE_POINT_ZETA;
+        assert_eq!(
+            e.warnings.is_empty(),
+            (low..=high).contains(&so.zeta),
+            "{:?}",
+            e.warnings
+        );
     }
     // Outside the range: ζ = 0.4 is read, with the notes' warning.
     let case = Case {
@@ -294,7 +334,12 @@ fn noisy_records_stay_sensible() {
                 }
                 let e = result.unwrap_or_else(|err| panic!("{method:?} σ {sigma}: {err}"));
                 close(&format!("{method:?} K σ {sigma}"), e.k, case.k, 0.03);
-                close(&format!("{method:?} τ σ {sigma}"), e.tau.unwrap(), 40.0, share);
+                close(
+                    &format!("{method:?} τ σ {sigma}"),
+                    e.tau.unwrap(),
+                    40.0,
+                    share,
+                );
                 assert!(
                     (e.theta - theta).abs() < share * (theta + 4.0),
                     "{method:?} θ σ {sigma} seed {seed}: {} vs {theta}",
@@ -323,10 +368,10 @@ fn records_without_a_rise_or_too_short_are_refused() {
             Err(HandError::NoRise { .. })
         ));
     }
-    // Cut at one time constant after the dead time: not settled, unless the student gives
+    // Cut at 1.2 time constants after the dead time: not settled, unless the student gives
     // the final level.
     let short = Case {
-        length: case.ts + case.theta + 40.0,
+        length: case.ts + case.theta + 48.0,
         ..fopdt_case()
     };
     let record = short.record(&first_order(40.0));
@@ -340,7 +385,7 @@ fn records_without_a_rise_or_too_short_are_refused() {
     };
     let e = estimate(&record, HandMethod::Smith, &given).unwrap();
     close("τ with the final level given", e.tau.unwrap(), 40.0, 0.01);
-    // The three-point method then needs 75 %: not reached within 63 %.
+    // The three-point method then needs 75 %, reached only at 1.39 τ.
     assert!(matches!(
         estimate(&record, HandMethod::ThreePoint, &given),
         Err(HandError::LevelNotReached { percent }) if percent == 75.0
@@ -357,7 +402,15 @@ fn records_without_a_rise_or_too_short_are_refused() {
     // Two input changes: a hand method reads one step.
     let u: Vec<f64> = times
         .iter()
-        .map(|&t| if t > 100.0 { 2.0 } else if t > 50.0 { 1.0 } else { 0.0 })
+        .map(|&t| {
+            if t > 100.0 {
+                2.0
+            } else if t > 50.0 {
+                1.0
+            } else {
+                0.0
+            }
+        })
         .collect();
     let input = Excitation::measured(&times, &u, None, Hold::Zoh).unwrap();
     let data = FitData { times, y, input };
@@ -388,10 +441,21 @@ fn the_tclab_copy_gives_every_method() {
         let e = result.unwrap_or_else(|err| panic!("{method:?}: {err}"));
         // The stand-in's process: 0.69537/((19.689s + 1)(141.41s + 1)).
         close(&format!("{method:?} K"), e.k, 0.69537, 0.03);
-        assert!(e.fit_percent > 85.0, "{method:?}: {}", e.fit_percent);
+        // The tangent reads an overdamped curve slow; the level-reading methods fit well.
+        let least = if method == HandMethod::Tangent {
+            65.0
+        } else {
+            90.0
+        };
+        assert!(e.fit_percent > least, "{method:?}: {}", e.fit_percent);
         if let Some(tau) = e.tau {
             assert!(tau > 120.0 && tau < 200.0, "{method:?} τ {tau}");
         }
-        assert!(e.theta > -2.0 && e.theta < 40.0, "{method:?} θ {}", e.theta);
+        // The stand-in has no dead time; a second-order reading may put θ a little negative.
+        assert!(
+            e.theta > -10.0 && e.theta < 40.0,
+            "{method:?} θ {}",
+            e.theta
+        );
     }
 }

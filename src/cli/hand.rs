@@ -8,10 +8,10 @@ use std::io::{self, Write};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 
-use crate::ident::fit::{FitData, FitOptions, FitReport};
+use crate::ident::fit::FitReport;
 use crate::ident::hand::{
-    Construction, DeadTimeFrom, HandError, HandEstimate, HandMethod, Overrides, Record,
-    estimate, estimate_all,
+    Construction, DeadTimeFrom, HandError, HandEstimate, HandMethod, Overrides, Record, estimate,
+    estimate_all, least_squares,
 };
 use crate::text::{Lang, Localize};
 
@@ -143,10 +143,7 @@ impl HandJson {
 #[serde(untagged)]
 pub enum RowJson {
     Read(Box<HandJson>),
-    Refused {
-        method: &'static str,
-        error: String,
-    },
+    Refused { method: &'static str, error: String },
 }
 
 /// A least-squares fit in the table's JSON.
@@ -164,10 +161,6 @@ pub struct TableJson {
     pub least_squares: Vec<LeastSquaresJson>,
 }
 
-/// The least-squares structures the table compares with: the first- and second-order
-/// models with dead time of the hand methods.
-pub const COMPARED: [&str; 2] = ["P1D", "P2D"];
-
 /// `degrau hand`.
 pub fn run_hand(args: &HandArgs, lang: Lang) -> Result<(), HandCliError> {
     let (_, experiment, data) = args.data.prepare()?;
@@ -180,12 +173,16 @@ pub fn run_hand(args: &HandArgs, lang: Lang) -> Result<(), HandCliError> {
             if args.json {
                 write_json_line(&mut out, &HandJson::new(&e))
             } else {
-                writeln!(out, "{}", crate::text::hand::estimate_lines(&e, lang).join("\n"))
+                writeln!(
+                    out,
+                    "{}",
+                    crate::text::hand::estimate_lines(&e, lang).join("\n")
+                )
             }
         }
         None => {
             let rows = estimate_all(&record, &overrides);
-            let fits = least_squares(&experiment, &data);
+            let fits = least_squares(&data, &experiment, || false);
             if args.json {
                 write_json_line(&mut out, &table_json(&rows, &fits))
             } else {
@@ -197,21 +194,6 @@ pub fn run_hand(args: &HandArgs, lang: Lang) -> Result<(), HandCliError> {
     written
         .and_then(|()| out.flush())
         .map_err(|e| HandCliError::Cli(CliError::WriteOutput(e)))
-}
-
-/// The least-squares fits of [`COMPARED`] (a failed one left out).
-fn least_squares(
-    experiment: &crate::ident::experiment::Experiment,
-    data: &FitData,
-) -> Vec<FitReport> {
-    COMPARED
-        .iter()
-        .filter_map(|code| {
-            experiment
-                .fit_prepared(data, code, false, &[], &FitOptions::default(), &mut ())
-                .ok()
-        })
-        .collect()
 }
 
 fn table_json(

@@ -53,13 +53,18 @@ pub fn method_name(method: HandMethod, lang: Lang) -> &'static str {
     match method {
         HandMethod::Tangent => lang.pick("Tangent (reaction curve)", "Reta tangente"),
         HandMethod::SixtyThree => lang.pick("63.2 % time", "Constante de tempo (63,2 %)"),
-        HandMethod::Broida => lang.pick("Broida's two points (28 %, 40 %)", "Dois pontos de Broida (28 %, 40 %)"),
-        HandMethod::Smith => lang.pick("Smith's two points (28.3 %, 63.2 %)", "Dois pontos de Smith (28,3 %, 63,2 %)"),
-        HandMethod::Points => lang.pick("Set of points", "Conjunto de pontos"),
-        HandMethod::ThreePoint => lang.pick(
-            "Three points (Mollenkamp)",
-            "Três pontos (Mollenkamp)",
+        HandMethod::Broida => lang.pick(
+            "Broida's two points (28 %, 40 %)",
+            "Dois pontos de Broida (28 %, 40 %)",
         ),
+        HandMethod::Smith => lang.pick(
+            "Smith's two points (28.3 %, 63.2 %)",
+            "Dois pontos de Smith (28,3 %, 63,2 %)",
+        ),
+        HandMethod::Points => lang.pick("Set of points", "Conjunto de pontos"),
+        HandMethod::ThreePoint => {
+            lang.pick("Three points (Mollenkamp)", "Três pontos (Mollenkamp)")
+        }
     }
 }
 
@@ -192,7 +197,8 @@ pub fn table_header(lang: Lang) -> [String; 7] {
         "K".into(),
         "θ (s)".into(),
         "τ (s)".into(),
-        lang.pick("τ1, τ2 (s) or ζ, ωn", "τ1, τ2 (s) ou ξ, ωn").into(),
+        lang.pick("τ1, τ2 (s) or ζ, ωn", "τ1, τ2 (s) ou ξ, ωn")
+            .into(),
         HandPhrase::FitPercent.get(lang).to_string(),
     ]
 }
@@ -234,9 +240,18 @@ pub fn least_squares_row(r: &FitReport, lang: Lang) -> [String; 7] {
         m.structure.code(),
         n(m.get(Param::Kp)),
         n(m.get(Param::Td)),
-        if two { String::new() } else { n(m.get(Param::Tp1)) },
         if two {
-            format!("{}{} {}", n(m.get(Param::Tp1)), lang.pick(",", ";"), n(m.get(Param::Tp2)))
+            String::new()
+        } else {
+            n(m.get(Param::Tp1))
+        },
+        if two {
+            format!(
+                "{}{} {}",
+                n(m.get(Param::Tp1)),
+                lang.pick(",", ";"),
+                n(m.get(Param::Tp2))
+            )
         } else {
             String::new()
         },
@@ -340,8 +355,18 @@ pub fn estimate_lines(e: &HandEstimate, lang: Lang) -> Vec<String> {
     }
     for l in &c.levels {
         lines.push(lang.pick(
-            format!("  {} % ({}) reached at {} s", lang.num(l.percent, 4), n(l.y), n(l.t)),
-            format!("  {} % ({}) atingido em {} s", lang.num(l.percent, 4), n(l.y), n(l.t)),
+            format!(
+                "  {} % ({}) reached at {} s",
+                lang.num(l.percent, 4),
+                n(l.y),
+                n(l.t)
+            ),
+            format!(
+                "  {} % ({}) atingido em {} s",
+                lang.num(l.percent, 4),
+                n(l.y),
+                n(l.t)
+            ),
         ));
     }
     if !c.points.is_empty() {

@@ -224,8 +224,12 @@ pub(super) fn handles(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> b
         } else {
             look.palette.handle
         };
-        ui.painter_at(frame.expand(GRAB))
-            .circle(at, 5.5, color.gamma_multiply(0.35), Stroke::new(2.0, color));
+        ui.painter_at(frame.expand(GRAB)).circle(
+            at,
+            5.5,
+            color.gamma_multiply(0.35),
+            Stroke::new(2.0, color),
+        );
     }
     for (phrase, y, command) in [
         (
@@ -233,7 +237,11 @@ pub(super) fn handles(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> b
             c.y0,
             HandCommand::SetInitialLevel as fn(f64) -> HandCommand,
         ),
-        (HandPhrase::FinalLevel, c.y_final, HandCommand::SetFinalLevel),
+        (
+            HandPhrase::FinalLevel,
+            c.y_final,
+            HandCommand::SetFinalLevel,
+        ),
     ] {
         let id = Id::unique(("hand level", phrase));
         let at = transform.position_from_point(&PlotPoint::new(0.0, y)).y;

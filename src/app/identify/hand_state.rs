@@ -1,17 +1,16 @@
 //! The Identify mode's hand methods, as state (no egui): whether the construction is drawn,
 //! which method, what the student moved on it (the tangent's point, the two levels), every
 //! method's result on the fit data ([`crate::ident::hand`]), and the least-squares fits of
-//! the matching structures (P1D, P2D) they are compared with, run off the UI thread.
+//! the matching structures ([`crate::ident::hand::COMPARED`]) they are compared with, run
+//! off the UI thread.
 
 use crate::app::job::{Job, Waker};
 use crate::ident::experiment::Experiment;
-use crate::ident::fit::{FitData, FitOptions, FitReport};
+use crate::ident::fit::{FitData, FitReport};
 use crate::ident::hand::{
     DeadTimeFrom, HandError, HandEstimate, HandMethod, Overrides, Record, estimate_all,
+    least_squares,
 };
-
-/// The structures the hand methods are compared with.
-pub const COMPARED: [&str; 2] = ["P1D", "P2D"];
 
 /// What the hand-methods section asks.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -148,47 +147,64 @@ fn start_least_squares(
 ) -> LeastSquaresJob {
     let (data, experiment) = (data.clone(), experiment.clone());
     Job::spawn(waker, move |job| {
-        COMPARED
-            .iter()
-            .take_while(|_| !job.cancelled())
-            .filter_map(|code| {
-                experiment
-                    .fit_prepared(&data, code, false, &[], &FitOptions::default(), &mut ())
-                    .ok()
-            })
-            .collect()
+        least_squares(&data, &experiment, || job.cancelled())
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ident::excitation::Excitation;
+    use crate::ident::data::StepTest;
 
     #[test]
-    fn moving_the_tangent_reads_the_methods_again() {
-        let times: Vec<f64> = (0..400).map(|k| k as f64 * 0.5).collect();
-        let y: Vec<f64> = times
+    fn the_state_reads_every_method_and_follows_the_student() {
+        let time: Vec<f64> = (0..400).map(|k| k as f64 * 0.5).collect();
+        let output: Vec<f64> = time
             .iter()
-            .map(|&t| 3.0 + if t > 12.0 { 2.0 * (1.0 - (-(t - 12.0) / 20.0).exp()) } else { 0.0 })
+            .map(|&t| {
+                3.0 + if t > 12.0 {
+                    2.0 * (1.0 - (-(t - 12.0) / 20.0).exp())
+                } else {
+                    0.0
+                }
+            })
             .collect();
-        let data = FitData {
-            times,
-            y,
-            input: Excitation::step(10.0, 1.0),
+        let test = StepTest {
+            time,
+            output,
+            input: None,
+            time_name: "t".into(),
+            output_name: "y".into(),
+            input_name: None,
+            sampling_period: None,
+            notes: vec![],
         };
+        let experiment = Experiment::single_step(&test, Some(10.0), Some(1.0), None).unwrap();
+        let data = experiment.fit_data(&test).unwrap();
         let mut state = HandState::default();
-        state.refresh(None, 0, None);
-        assert!(state.results.is_empty());
+        // Hidden: nothing is read.
+        state.refresh(Some((&data, &experiment)), 1, None);
+        assert!(state.results.is_empty() && !state.is_fitting());
         state.apply(HandCommand::Show(true));
-        // Without an experiment the record's own level before the step is used.
-        let record = Record::from_fit_data(&data, None).unwrap();
-        state.results = estimate_all(&record, &state.overrides);
+        state.refresh(Some((&data, &experiment)), 1, None);
+        assert_eq!(state.results.len(), HandMethod::ALL.len());
         let before = state.current().unwrap().theta;
+        // θ = 2 s after t0 = 10 s, read by the tangent at the kink.
+        assert!((before - 2.0).abs() < 0.3, "{before}");
+        // Later on the concave part the tangent is flatter and meets y0 earlier.
         state.apply(HandCommand::MoveTangent(40.0));
-        state.results = estimate_all(&record, &state.overrides);
-        assert!(state.current().unwrap().theta > before + 1.0);
-        state.apply(HandCommand::Reset);
+        state.refresh(Some((&data, &experiment)), 1, None);
+        assert!(state.current().unwrap().theta < before - 1.0);
+        state.apply(HandCommand::SetFinalLevel(4.0));
+        state.refresh(Some((&data, &experiment)), 1, None);
+        assert!((state.current().unwrap().k - 1.0).abs() < 1e-12);
+        // New data (a new revision) forget the construction; the fits run and come back.
+        state.refresh(Some((&data, &experiment)), 2, None);
         assert_eq!(state.overrides, Overrides::default());
+        while state.poll() {
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
+        assert_eq!(state.least_squares.len(), 2);
+        assert!(state.least_squares[0].fit_percent > 99.0);
     }
 }

@@ -141,12 +141,7 @@ impl Curve {
         if k == 0 {
             return Ok(self.times[0]);
         }
-        let (ta, tb, ya, yb) = (
-            self.times[k - 1],
-            self.times[k],
-            values[k - 1],
-            values[k],
-        );
+        let (ta, tb, ya, yb) = (self.times[k - 1], self.times[k], values[k - 1], values[k]);
         Ok(if yb == ya {
             ta
         } else {
@@ -200,7 +195,9 @@ pub(crate) fn check_rise(curve: &Curve, y0: f64, y_final: f64) -> Result<(), Han
 /// the slope of its least-squares line times its duration.
 pub(crate) fn final_drift(curve: &Curve, change: f64) -> Option<f64> {
     let (first, last) = (*curve.times.first()?, *curve.times.last()?);
-    let from = curve.times.partition_point(|&t| t < last - 0.2 * (last - first));
+    let from = curve
+        .times
+        .partition_point(|&t| t < last - 0.2 * (last - first));
     let line = line_fit(&curve.times[from..], &curve.despiked[from..])?;
     Some(line.slope * (last - curve.times[from]) / change)
 }
@@ -279,7 +276,10 @@ mod tests {
         );
         let rising = [0.0, 0.5, 0.7, 2.0, 2.1];
         assert_eq!(running_median3(&rising), rising);
-        assert_eq!(running_mean(&[1.0, 2.0, 3.0, 10.0], 3), [1.0, 2.0, 5.0, 10.0]);
+        assert_eq!(
+            running_mean(&[1.0, 2.0, 3.0, 10.0], 3),
+            [1.0, 2.0, 5.0, 10.0]
+        );
     }
 
     #[test]

@@ -2,8 +2,8 @@
 
 use super::curve::line_fit;
 use super::{
-    DeadTimeFrom, HandError, HandMethod, HandWarning, Overrides, Read, Reading,
-    SecondOrder, Shape, THREE_POINT_ZETA, Tangent,
+    DeadTimeFrom, HandError, HandMethod, HandWarning, Overrides, Read, Reading, SecondOrder, Shape,
+    THREE_POINT_ZETA, Tangent,
 };
 
 /// The band of the set-of-points method (% of the change).
@@ -190,7 +190,12 @@ mod tests {
             .iter()
             .map(|&t| {
                 let s = t - t0 - theta;
-                100.0 + if s > 0.0 { 2.0 * k * (1.0 - (-s / tau).exp()) } else { 0.0 }
+                100.0
+                    + if s > 0.0 {
+                        2.0 * k * (1.0 - (-s / tau).exp())
+                    } else {
+                        0.0
+                    }
             })
             .collect();
         Record::new(&times, &y, t0, 2.0, 100.0).unwrap()
@@ -198,7 +203,7 @@ mod tests {
 
     #[test]
     fn smith_reads_its_two_levels_and_broida_its_constants() {
-        let r = fopdt(1.5, 10.0, 2.0, 1.05, 0.01, 6000);
+        let r = fopdt(1.5, 10.0, 2.0, 1.05, 0.01, 15000);
         let e = estimate(&r, HandMethod::Smith, &Overrides::default()).unwrap();
         let levels = relative(&e.construction.levels, 1.05);
         // 28.3 % at θ + τ/3·… : t = θ − τ ln(1 − p).
@@ -216,7 +221,7 @@ mod tests {
 
     #[test]
     fn a_first_order_curve_has_no_three_point_damping() {
-        let r = fopdt(1.0, 10.0, 2.0, 0.0, 0.01, 6000);
+        let r = fopdt(1.0, 10.0, 2.0, 0.0, 0.01, 15000);
         assert!(matches!(
             estimate(&r, HandMethod::ThreePoint, &Overrides::default()),
             Err(HandError::ThreePointShape { .. })
