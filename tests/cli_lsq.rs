@@ -33,7 +33,8 @@ fn numbers(v: &serde_json::Value) -> Vec<f64> {
         .collect()
 }
 
-/// A PRBS record of K·e^{−1.5s}/(8s + 1) at y ≈ 20, h = 0.5 (θ = 3 samples), as a file.
+/// A PRBS record of K·e^{−1.5s}/(8s + 1) at y ≈ 20, h = 0.5 (θ = 3 samples), as a file: two
+/// periods of the shortest register covering 255 samples at 3 samples per bit (7 bits).
 fn record(name: &str, noise: &str) -> String {
     let out = degrau(&[
         "prbs",
@@ -132,7 +133,9 @@ fn rls_ends_at_the_batch_estimate_and_gives_its_trajectory() {
     let (arx, rls) = (json(&a), json(&r));
     let last = numbers(&rls["final"]);
     let trajectory = rls["trajectory"].as_array().unwrap();
-    assert_eq!(trajectory.len(), 510 * 3 - 4);
+    // Two periods of the 7-bit register (127 bits of 3 samples cover --n 255): 762 samples,
+    // Φ from the 5th.
+    assert_eq!(trajectory.len(), 2 * 127 * 3 - 4);
     assert_eq!(numbers(trajectory.last().unwrap()), last);
     let batch = [numbers(&arx["a"])[1], numbers(&arx["b"])[0]];
     for (x, y) in last.iter().zip(batch) {
@@ -162,7 +165,7 @@ fn select_and_validate_add_their_keys() {
     assert_eq!(j["nk"], 4, "{j}");
     let v = &j["validation"];
     assert!(v["fit_percent_simulation"].as_f64().unwrap() > 98.0, "{v}");
-    assert_eq!(v["split"], 255 * 3);
+    assert_eq!(v["split"], 127 * 3);
 }
 
 #[test]
