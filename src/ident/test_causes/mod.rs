@@ -13,6 +13,12 @@
 //! This module owns the facts and their detection from the data and a fit's residuals; it
 //! fits nothing itself.
 
+pub mod coloured_noise;
+pub mod disturbance;
+pub mod handling;
+pub mod outliers;
+pub mod saturation;
+
 use serde::{Deserialize, Serialize};
 
 use super::diagnose::Cause;
