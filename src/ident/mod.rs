@@ -16,6 +16,7 @@ pub mod prepare;
 pub mod reduce;
 pub mod residuals;
 pub mod rest;
+pub mod robust;
 pub mod scale;
 pub mod stats;
 pub mod test_causes;
