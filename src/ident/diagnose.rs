@@ -25,7 +25,8 @@ use super::fit::{FitData, FitError, FitOptions, FitReport, fit, search_fit};
 use super::guess::{auto_guess, features};
 use super::models::{Param, Structure, Values};
 use super::residuals::{self, ResidualAnalysis};
-use super::test_causes::TestCause;
+use super::stats::lag_one;
+use super::test_causes::{TestCause, TestCauseKind, handling};
 
 /// An extension must lower BIC by more than this to be kept.
 pub const BIC_THRESHOLD: f64 = 10.0;
@@ -250,12 +251,67 @@ pub struct Whiteness {
 pub struct Verdict {
     pub ending: Ending,
     pub whiteness: Option<Whiteness>,
+    /// Which structure the loop ended on.
+    #[serde(default)]
+    pub structure: Option<Structure>,
+    /// Which artefacts of the test were found (the report's `test_causes` has their
+    /// evidence).
+    #[serde(default)]
+    pub artefacts: Artefacts,
+}
+
+/// A set of test causes, small enough to copy (a bit per [`TestCauseKind`], in
+/// [`TestCauseKind::ALL`]'s order); its JSON is the list of their identifiers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Artefacts(u16);
+
+impl Artefacts {
+    pub fn of(causes: &[TestCause]) -> Self {
+        Self::from_kinds(causes.iter().map(|c| c.kind))
+    }
+
+    fn from_kinds(kinds: impl Iterator<Item = TestCauseKind>) -> Self {
+        Artefacts(kinds.fold(0, |bits, k| bits | 1 << Self::bit(k)))
+    }
+
+    fn bit(k: TestCauseKind) -> usize {
+        TestCauseKind::ALL.iter().position(|x| *x == k).unwrap_or(0)
+    }
+
+    /// The causes in the set, in [`TestCauseKind::ALL`]'s order.
+    pub fn kinds(self) -> Vec<TestCauseKind> {
+        TestCauseKind::ALL
+            .into_iter()
+            .filter(|&k| self.0 & (1 << Self::bit(k)) != 0)
+            .collect()
+    }
+
+    pub fn is_empty(self) -> bool {
+        self.0 == 0
+    }
+}
+
+impl Serialize for Artefacts {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.kinds().serialize(s)
+    }
+}
+
+impl<'de> Deserialize<'de> for Artefacts {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let kinds = Vec::<TestCauseKind>::deserialize(d)?;
+        Ok(Self::from_kinds(kinds.into_iter()))
+    }
 }
 
 /// One step of the loop: the cause named, why, and the extended fit.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Step {
     pub cause: Cause,
+    /// A second cause named with it, when only the pair of extensions pays (two effects
+    /// hidden at once); `evidence` is the first's.
+    #[serde(default)]
+    pub paired: Option<Cause>,
     pub evidence: Evidence,
     /// The time interval the evidence points at (s), when there is one.
     pub interval: Option<(f64, f64)>,
@@ -321,16 +377,23 @@ pub fn diagnose(
 }
 
 /// Runs the loop from a fit the student already has.
+///
+/// The order of reasoning: the test's causes first ([`handling::handle`]: not at rest,
+/// outliers, a clipped span, a disturbance), each handled so that the loop sees the handled
+/// problem (the fits of the chain are on the samples left in); then the model's causes, one
+/// extension at a time (or two at once, [`next_step`]); then the robust loss on the
+/// outliers and the intervals widened for coloured noise ([`handling::finish`]).
 pub fn diagnose_from(
     data: &FitData,
     start: FitReport,
     options: &DiagnoseOptions,
 ) -> DiagnoseReport {
-    let mut current = start.clone();
+    let handled = handling::handle(data, start, &options.fit);
+    let mut current = handled.start.clone();
     let mut steps = Vec::new();
     let mut adequate = false;
     for _ in 0..options.max_steps {
-        match next_step(data, &current) {
+        match next_step(&handled.data, &current) {
             Some(step) => {
                 current = step.fit.clone();
                 steps.push(step);
@@ -341,37 +404,125 @@ pub fn diagnose_from(
             }
         }
     }
-    let verdict = Some(verdict(data, &current, adequate));
+    let mut test_causes = handled.causes.clone();
+    let current = handling::finish(&handled, current, adequate, &mut test_causes);
+    let mut verdict = verdict(&handled.data, &current, adequate);
+    verdict.structure = Some(current.model.structure);
+    verdict.artefacts = Artefacts::of(&test_causes);
     let kp = current.model.get(Param::Kp);
     DiagnoseReport {
-        start,
+        start: handled.start,
         static_gain: (kp, current.interval(Param::Kp)),
         final_fit: current,
         steps,
         adequate,
-        verdict,
-        test_causes: super::test_causes::not_at_rest(data).into_iter().collect(),
+        verdict: Some(verdict),
+        test_causes,
     }
 }
 
 /// The leading cause of what `current` gets wrong and the extended fit, or `None` when no
-/// extension pays for itself.
+/// extension pays for itself. An extension is judged by the BIC corrected for its own fit's
+/// residual correlation ([`judged_change`]), so that coloured noise buys no structure; when
+/// no single extension pays but the residuals are far from white, pairs of extensions are
+/// tried ([`best_pair`]: P1 → P2Z, P1 → P2D, …), and a pair that pays is one step naming
+/// both causes.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
-    let (extension, candidate) = best_extension(data, current)?;
-    // A change that is not a finite number (a failed fit) names nothing.
-    let change = bic(&candidate) - bic(current);
-    if !(change.is_finite() && change < -BIC_THRESHOLD) {
-        return None;
-    }
+    let single = best_extension(data, current).filter(|(_, c)| pays(data, current, c));
+    let (extension, paired, candidate) = match single {
+        Some((e, c)) => (e, None, c),
+        None => {
+            let white = analyse(current, data).is_none_or(|a| a.white);
+            if white {
+                return None;
+            }
+            let ((e1, e2), c) = best_pair(data, current)?;
+            if !pays(data, current, &c) {
+                return None;
+            }
+            (e1, Some(e2.cause(&c.model.values)), c)
+        }
+    };
     let cause = extension.cause(&candidate.model.values);
     let (evidence, interval) = explain(cause, data, current, &candidate);
     Some(Step {
         cause,
+        paired,
         evidence,
         interval,
         gain: gain(current, &candidate),
         fit: candidate,
     })
+}
+
+/// Whether `candidate` pays for its extra parameters over `current`: its corrected BIC
+/// change is a finite number below −[`BIC_THRESHOLD`].
+fn pays(data: &FitData, current: &FitReport, candidate: &FitReport) -> bool {
+    let change = judged_change(data, current, candidate);
+    change.is_finite() && change < -BIC_THRESHOLD
+}
+
+/// The BIC change of `candidate` over `current` with the likelihood term counted on the
+/// candidate's effective number of independent residuals: N·(1 − ρ)/(1 + ρ), ρ the lag-one
+/// autocorrelation of its residuals (clamped to [0, 0.99]; 0 leaves the plain BIC). A right
+/// extension leaves white residuals and keeps its full gain; one that only absorbs coloured
+/// noise leaves them correlated and must gain that much more.
+pub fn judged_change(data: &FitData, current: &FitReport, candidate: &FitReport) -> f64 {
+    let rho = candidate
+        .residuals(data)
+        .map_or(0.0, |r| lag_one(&r))
+        .clamp(0.0, 0.99);
+    let n = candidate.n as f64;
+    let n_eff = n * (1.0 - rho) / (1.0 + rho);
+    let extra = candidate.params.len() as f64 - current.params.len() as f64;
+    n_eff * (candidate.ln_mse - current.ln_mse) + extra * n.ln()
+}
+
+/// Extensions tried in pairs: the dynamic ones (an offset, an integrator or a drift in a
+/// pair would only absorb what the first named alone could not).
+const PAIRED: [Extension; 4] = [
+    Extension::Delay,
+    Extension::Underdamped,
+    Extension::Pole,
+    Extension::Zero,
+];
+
+/// The pair of extensions whose refit has the lowest BIC, started from each one's starts.
+fn best_pair(data: &FitData, current: &FitReport) -> Option<((Extension, Extension), FitReport)> {
+    let options = FitOptions {
+        starts: 1,
+        ..FitOptions::default()
+    };
+    let mut best: Option<((Extension, Extension), FitReport)> = None;
+    for (i, &e1) in PAIRED.iter().enumerate() {
+        for &e2 in &PAIRED[i + 1..] {
+            let Some(s) = e1.apply(current.model.structure).and_then(|s| e2.apply(s)) else {
+                continue;
+            };
+            let mut starts = fresh_starts(data, current, e1, s);
+            starts.extend(fresh_starts(data, current, e2, s));
+            starts.extend(warm_starts(data, current, e1));
+            starts.extend(warm_starts(data, current, e2));
+            let fitted = starts
+                .into_iter()
+                .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
+                .filter(|r| r.ln_mse.is_finite() && !aliased(r))
+                .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse));
+            if let Some(r) = fitted
+                && best.as_ref().is_none_or(|(_, b)| bic(&r) < bic(b))
+            {
+                best = Some(((e1, e2), r));
+            }
+        }
+    }
+    let (pair, r) = best?;
+    on_every_sample(data, (pair.0, r)).map(|(_, r)| (pair, r))
+}
+
+fn aliased(r: &FitReport) -> bool {
+    r.warnings
+        .iter()
+        .any(|w| matches!(w, super::fit::FitWarning::Alias { .. }))
 }
 
 fn gain(before: &FitReport, after: &FitReport) -> Gain {
@@ -443,11 +594,7 @@ fn refit(
     starts
         .into_iter()
         .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
-        .filter(|r| {
-            !r.warnings
-                .iter()
-                .any(|w| matches!(w, super::fit::FitWarning::Alias { .. }))
-        })
+        .filter(|r| !aliased(r))
         .filter(|r| r.ln_mse.is_finite())
         .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse))
 }
@@ -720,6 +867,8 @@ fn verdict(data: &FitData, report: &FitReport, adequate: bool) -> Verdict {
     let analysis = analyse(report, data);
     let white = analysis.as_ref().is_some_and(|a| a.white);
     Verdict {
+        structure: None,
+        artefacts: Artefacts::default(),
         ending: match (adequate, white) {
             (true, true) => Ending::Adequate,
             (true, false) => Ending::NotWhite,

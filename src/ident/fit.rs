@@ -72,6 +72,23 @@ impl FitData {
         self.duration_with(self.sampling_period())
     }
 
+    /// The record without the samples `keep` says false of (outliers, a clipped span, a
+    /// disturbance's window); the input is the same, so the model still sees every change.
+    pub fn keeping(&self, keep: &[bool]) -> FitData {
+        let kept = |v: &[f64]| -> Vec<f64> {
+            v.iter()
+                .zip(keep)
+                .filter(|(_, k)| **k)
+                .map(|(x, _)| *x)
+                .collect()
+        };
+        FitData {
+            times: kept(&self.times),
+            y: kept(&self.y),
+            input: self.input.clone(),
+        }
+    }
+
     /// Duration of the record after the step (s), at least `ts` (the sampling period).
     pub fn duration_with(&self, ts: f64) -> f64 {
         let t0 = self.input.t0();
@@ -240,6 +257,19 @@ impl FitReport {
             .and_then(|e| e.ci95)
     }
 
+    /// Widens every 95 % interval about its estimate by `factor` (≥ 1): the correction for
+    /// residuals correlated as an AR(1) with coefficient ρ, √((1 + ρ)/(1 − ρ)).
+    pub fn widen_intervals(&mut self, factor: f64) {
+        for e in &mut self.params {
+            if let Some((lo, hi)) = e.ci95 {
+                e.ci95 = Some((
+                    e.value - factor * (e.value - lo),
+                    e.value + factor * (hi - e.value),
+                ));
+            }
+        }
+    }
+
     /// The residuals y − ŷ of this fit on `data` (output units), simulated in the fit's
     /// internal units, so that they are right at any scale.
     pub fn residuals(&self, data: &FitData) -> Result<Vec<f64>, ModelError> {
@@ -330,7 +360,40 @@ pub fn fit(
     options: &FitOptions,
     observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
-    fit_on(data, structure, guess, options, observer, Samples::Every)
+    fit_on(
+        data,
+        structure,
+        guess,
+        options,
+        observer,
+        Samples::Every,
+        None,
+    )
+}
+
+/// [`fit`] minimising Σ wᵢ(yᵢ − ŷᵢ)², each sample weighted by `weights` (one per sample,
+/// ≥ 0): a step of iteratively reweighted least squares ([`super::robust`]). It runs on every
+/// sample (the weights belong to the samples, not to a reduction's blocks); its n, MSE and
+/// intervals count a sample by its weight.
+pub fn fit_weighted(
+    data: &FitData,
+    structure: Structure,
+    guess: Values,
+    options: &FitOptions,
+    weights: &[f64],
+) -> Result<FitReport, FitError> {
+    if weights.len() != data.y.len() || weights.iter().any(|w| !(w.is_finite() && *w >= 0.0)) {
+        return Err(FitError::NonFiniteData);
+    }
+    fit_on(
+        data,
+        structure,
+        guess,
+        options,
+        &mut (),
+        Samples::Every,
+        Some(weights),
+    )
 }
 
 /// [`fit`] without its last stage on a long record: the best of the starts on the reduced
@@ -345,7 +408,15 @@ pub fn search_fit(
     options: &FitOptions,
     observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
-    fit_on(data, structure, guess, options, observer, Samples::Reduced)
+    fit_on(
+        data,
+        structure,
+        guess,
+        options,
+        observer,
+        Samples::Reduced,
+        None,
+    )
 }
 
 /// Which samples a fit ends on.
@@ -362,9 +433,11 @@ fn fit_on(
     options: &FitOptions,
     observer: &mut dyn FitObserver,
     end_on: Samples,
+    weights: Option<&[f64]>,
 ) -> Result<FitReport, FitError> {
     validate(data, &structure)?;
     let mut problem = Problem::new(data, structure, guess)?;
+    problem.root_weights = weights.map(|w| w.iter().map(|w| w.sqrt()).collect());
     let x0 = problem.clamp(problem.fixed.vector(&problem.params));
     if !problem.sse(&x0, None).is_ok_and(f64::is_finite) {
         return Err(match problem.model(&x0).transfer_function() {
@@ -372,7 +445,8 @@ fn fit_on(
             Ok(_) => FitError::NonFiniteCost,
         });
     }
-    let reduction = reduce::reduce(&problem.data.times, &problem.data.input);
+    let reduction =
+        reduce::reduce(&problem.data.times, &problem.data.input).filter(|_| weights.is_none());
     if reduction.is_some() {
         problem.alias_span = Some(reduce::MIN_SAMPLES);
     }

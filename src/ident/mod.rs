@@ -20,6 +20,7 @@ pub mod reduce;
 pub mod residuals;
 pub mod rest;
 pub mod rls;
+pub mod robust;
 pub mod scale;
 pub mod stats;
 pub mod test_causes;

@@ -118,7 +118,10 @@ impl Line {
 /// (robust to the steps, spikes and slow motion the differences also carry).
 pub fn difference_noise(y: &[f64]) -> f64 {
     let d: Vec<f64> = y.windows(2).map(|w| w[1] - w[0]).collect();
-    super::test_causes::robust_scale(&d) / std::f64::consts::SQRT_2
+    if d.is_empty() {
+        return 0.0;
+    }
+    super::stats::robust_scale(&d) / std::f64::consts::SQRT_2
 }
 
 #[cfg(test)]

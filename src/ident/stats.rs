@@ -80,6 +80,36 @@ pub fn student_t_quantile(p: f64, dof: f64) -> f64 {
     z + g1 / v + g2 / (v * v) + g3 / (v * v * v) + g4 / (v * v * v * v)
 }
 
+/// The median of `v` (NaN when empty); sorts a copy.
+pub fn median(v: &[f64]) -> f64 {
+    if v.is_empty() {
+        return f64::NAN;
+    }
+    let mut w = v.to_vec();
+    let mid = w.len() / 2;
+    *w.select_nth_unstable_by(mid, f64::total_cmp).1
+}
+
+/// A robust standard deviation: 1.4826·MAD (the median absolute deviation from the median),
+/// which equals σ for Gaussian data and ignores up to half the samples being wild.
+pub fn robust_scale(v: &[f64]) -> f64 {
+    let m = median(v);
+    let dev: Vec<f64> = v.iter().map(|x| (x - m).abs()).collect();
+    1.4826 * median(&dev)
+}
+
+/// The lag-one autocorrelation of `v` about its mean (the AR(1) coefficient's estimate);
+/// 0 for fewer than three samples or no spread.
+pub fn lag_one(v: &[f64]) -> f64 {
+    if v.len() < 3 {
+        return 0.0;
+    }
+    let mean = v.iter().sum::<f64>() / v.len() as f64;
+    let c0: f64 = v.iter().map(|x| (x - mean).powi(2)).sum();
+    let c1: f64 = v.windows(2).map(|w| (w[0] - mean) * (w[1] - mean)).sum();
+    if c0 > 0.0 { c1 / c0 } else { 0.0 }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -108,5 +138,15 @@ mod tests {
             assert!((got - t).abs() < 2e-3 * t, "ν={dof}: {got} vs {t}");
         }
         assert!((student_t_quantile(0.975, 30.0) - 2.042272456).abs() < 1e-5);
+    }
+
+    #[test]
+    fn robust_statistics_of_known_samples() {
+        let v = [1.0, 2.0, 3.0, 4.0, 100.0];
+        assert_eq!(median(&v), 3.0);
+        // |v − 3| = 2, 1, 0, 1, 97: MAD 1.
+        assert!((robust_scale(&v) - 1.4826).abs() < 1e-12);
+        let alternating = [1.0, -1.0, 1.0, -1.0, 1.0, -1.0];
+        assert!((lag_one(&alternating) + 5.0 / 6.0).abs() < 1e-12);
     }
 }

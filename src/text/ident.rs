@@ -2044,7 +2044,12 @@ pub fn messages() -> Vec<Message> {
     for ending in [Ending::Adequate, Ending::NotWhite, Ending::StepLimit] {
         all.push(Message::of(
             format!("ident::Verdict::{ending:?}"),
-            &Verdict { ending, whiteness },
+            &Verdict {
+                ending,
+                whiteness,
+                structure: None,
+                artefacts: Default::default(),
+            },
         ));
     }
     for kind in [

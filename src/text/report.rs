@@ -116,7 +116,16 @@ fn chain_table(d: &DiagnoseReport, lang: Lang) -> Vec<String> {
 
 /// A step's cause in words: `dead_time: The model moves before the data does: …`.
 pub fn cause_line(step: &Step, lang: Lang) -> String {
-    format!("{}: {}", step.cause.id(), step.cause.text(lang))
+    match step.paired {
+        Some(p) => format!(
+            "{} + {}: {} {}",
+            step.cause.id(),
+            p.id(),
+            step.cause.text(lang),
+            p.text(lang)
+        ),
+        None => format!("{}: {}", step.cause.id(), step.cause.text(lang)),
+    }
 }
 
 /// A step's remedy and gain: `Remedy: add a dead time Td. RMSE 0.9 → 0.3 (3× lower); fit …`.
@@ -447,6 +456,7 @@ mod tests {
         end.rmse = 0.05;
         let step = Step {
             cause: Cause::DeadTime,
+            paired: None,
             evidence: Evidence::DeadTime {
                 bias: Bias {
                     start: 5.0,
@@ -476,6 +486,8 @@ mod tests {
             verdict: Some(Verdict {
                 ending: Ending::Adequate,
                 whiteness: None,
+                structure: None,
+                artefacts: Default::default(),
             }),
             static_gain: (1.0021, Some((0.98647, 1.0178))),
             test_causes: Vec::new(),

@@ -28,7 +28,9 @@ use crate::ident::excitation::{Excitation, InputChange};
 use crate::ident::fit::FitData;
 use crate::ident::rest::difference_noise;
 
-use super::{Handling, StepShape, TestCause, TestCauseKind, TestEvidence, median};
+use crate::ident::stats::median;
+
+use super::{Handling, StepShape, TestCause, TestCauseKind, TestEvidence};
 
 /// Share of a change's size the input must depart from its settled level by.
 const BAND_SHARE: f64 = 0.05;
@@ -89,7 +91,7 @@ fn windows<'c>(u: &[f64], changes: &'c [InputChange], noise: f64) -> Vec<(&'c In
             let Some(i) = next.index else { break };
             let held = i >= MIN_HOLD && {
                 let before = &u[i - MIN_HOLD..i];
-                let level = median(before).unwrap_or(0.0);
+                let level = median(before);
                 before.iter().all(|v| (v - level).abs() <= band)
             };
             if held || next.du.abs() >= SAME_SIZE * c.du.abs() {
@@ -124,7 +126,7 @@ fn departure(
         return None;
     }
     let window = &u[first..end];
-    let settled = median(&window[window.len() / 2..])?;
+    let settled = median(&window[window.len() / 2..]);
     let band = band(c, noise);
     // Signed departure from the settled level, positive beyond it in the change's direction.
     let beyond = |v: f64| (v - settled) * c.du.signum();

@@ -13,6 +13,12 @@
 //! This module owns the facts and their detection from the data and a fit's residuals; it
 //! fits nothing itself.
 
+pub mod coloured_noise;
+pub mod disturbance;
+pub mod handling;
+pub mod outliers;
+pub mod saturation;
+
 use serde::{Deserialize, Serialize};
 
 use super::diagnose::Cause;
@@ -321,46 +327,13 @@ impl<'a> FittedRecord<'a> {
     /// The noise's standard deviation read robustly from the residuals (1.4826·MAD), so that
     /// a few outliers do not count.
     pub fn noise(&self) -> f64 {
-        robust_scale(&self.residuals)
+        super::stats::robust_scale(&self.residuals)
     }
-}
-
-/// The robust standard deviation of `x`: 1.4826 × the median absolute deviation from the
-/// median (the standard deviation for Gaussian data, unmoved by a few wild values); 0 for
-/// an empty slice. O(n) (selection, not sorting).
-pub fn robust_scale(x: &[f64]) -> f64 {
-    let Some(centre) = median(x) else {
-        return 0.0;
-    };
-    let dev: Vec<f64> = x.iter().map(|v| (v - centre).abs()).collect();
-    1.4826 * median(&dev).unwrap_or(0.0)
-}
-
-/// The median of `x` (the upper one of an even count), `None` when empty. O(n).
-pub fn median(x: &[f64]) -> Option<f64> {
-    if x.is_empty() {
-        return None;
-    }
-    let mut v = x.to_vec();
-    let mid = v.len() / 2;
-    Some(*v.select_nth_unstable_by(mid, f64::total_cmp).1)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_robust_scale_of_gaussian_like_data_ignores_wild_values() {
-        // −1, 0, 1 in turn: median 0, MAD 1 → 1.4826; four wild values do not move it.
-        let mut x: Vec<f64> = (0..999).map(|k| (k % 3) as f64 - 1.0).collect();
-        for v in x.iter_mut().step_by(300) {
-            *v = 1e6;
-        }
-        assert!((robust_scale(&x) - 1.4826).abs() < 1e-12);
-        assert_eq!(median(&[3.0, 1.0, 2.0]), Some(2.0));
-        assert_eq!(robust_scale(&[]), 0.0);
-    }
 
     #[test]
     fn identifiers_are_unique_and_listed_once() {

@@ -82,7 +82,7 @@ pub fn quantisation(record: &FittedRecord) -> Option<TestCause> {
     let noise = record.noise();
     let share = q / effect;
     let dithered = noise >= 0.5 * q;
-    if !(share >= COARSE_SHARE || !dithered) {
+    if share < COARSE_SHARE && dithered {
         return None;
     }
     let du = record

@@ -15,7 +15,7 @@ pub fn small_step(record: &FittedRecord) -> Option<TestCause> {
     let noise = record.noise();
     let ratio = effect / noise;
     // A noiseless record (σ = 0) has an infinite ratio: nothing to name.
-    (ratio < SMALL_STEP_RATIO).then(|| TestCause {
+    (ratio < SMALL_STEP_RATIO).then_some(TestCause {
         kind: TestCauseKind::SmallStep,
         evidence: TestEvidence::SmallStep {
             effect,

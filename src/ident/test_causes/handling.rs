@@ -1,0 +1,158 @@
+//! The test's causes handled before the model's are judged (the order of reasoning of
+//! [`crate::ident::diagnose`]): a test not at rest gets an initial transient and a free Y0;
+//! outliers are left out of the structural search (and the final fit uses a robust loss on
+//! them, [`crate::ident::robust`]); a clipped span and a disturbance's window are left out
+//! of every fit. Each exclusion is followed by a refit from the current optimum, so the next
+//! check sees the handled problem.
+
+use super::{TestCause, coloured_noise, disturbance, not_at_rest, outliers, saturation};
+use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
+use crate::ident::guess::auto_guess;
+use crate::ident::models::Structure;
+use crate::ident::robust::{RobustFit, robust_fit};
+
+/// A record with its test's artefacts handled.
+#[derive(Debug, Clone)]
+pub struct Handled {
+    /// The samples the structural search fits (outliers, clipped spans and disturbance
+    /// windows left out).
+    pub data: FitData,
+    /// The samples the final robust fit uses (clipped spans and disturbance windows left
+    /// out, outliers kept and down-weighted); `None` without outliers.
+    pub robust_data: Option<FitData>,
+    /// The start model refitted on `data` (with an initial transient when not at rest).
+    pub start: FitReport,
+    /// The causes found, in the order found.
+    pub causes: Vec<TestCause>,
+}
+
+/// The samples of the record still in, as indices into the original record.
+struct Kept {
+    keep: Vec<bool>,
+}
+
+impl Kept {
+    fn indices(&self) -> Vec<usize> {
+        (0..self.keep.len()).filter(|&i| self.keep[i]).collect()
+    }
+
+    /// Leaves out `local` (indices into the kept samples).
+    fn drop(&mut self, local: &[usize]) {
+        let map = self.indices();
+        for &i in local {
+            self.keep[map[i]] = false;
+        }
+    }
+}
+
+/// Finds and handles the artefacts of the test on `data`, starting from the fit `start`.
+pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Handled {
+    let mut causes = Vec::new();
+    let mut current = start;
+    if let Some(cause) = not_at_rest(data) {
+        causes.push(cause);
+        if let Some(r) = with_transient(data, &current, fit_options) {
+            current = r;
+        }
+    }
+    let mut kept = Kept {
+        keep: vec![true; data.y.len()],
+    };
+    let mut outlier_samples = Vec::new();
+    if let Ok(r) = current.residuals(data)
+        && let Some((cause, samples)) = outliers::detect(data, &r)
+    {
+        causes.push(cause);
+        kept.drop(&samples);
+        outlier_samples = samples;
+        current = refit(&data.keeping(&kept.keep), &current).unwrap_or(current);
+    }
+    let mut handled = data.keeping(&kept.keep);
+    if let Some((cause, samples)) = saturation::detect(&handled, &current) {
+        causes.push(cause);
+        kept.drop(&samples);
+        handled = data.keeping(&kept.keep);
+        current = refit(&handled, &current).unwrap_or(current);
+    }
+    if let Ok(r) = current.residuals(&handled)
+        && let Some((cause, samples)) = disturbance::detect(&handled, &current, &r)
+    {
+        causes.push(cause);
+        kept.drop(&samples);
+        handled = data.keeping(&kept.keep);
+        current = refit(&handled, &current).unwrap_or(current);
+    }
+    let robust_data = (!outlier_samples.is_empty()).then(|| {
+        let mut keep = kept.keep.clone();
+        outlier_samples.iter().for_each(|&i| keep[i] = true);
+        data.keeping(&keep)
+    });
+    Handled {
+        data: handled,
+        robust_data,
+        start: current,
+        causes,
+    }
+}
+
+/// The start structure with an initial transient and a free Y0, fitted from its guess.
+fn with_transient(data: &FitData, current: &FitReport, options: &FitOptions) -> Option<FitReport> {
+    let mut s: Structure = current.model.structure;
+    s.transient = true;
+    s.free_offset = true;
+    let guess = auto_guess(data, s, None);
+    fit(data, s, guess, options, &mut ()).ok()
+}
+
+/// The current structure refitted on `data` from its optimum (one start).
+fn refit(data: &FitData, current: &FitReport) -> Option<FitReport> {
+    let options = FitOptions {
+        starts: 1,
+        ..FitOptions::default()
+    };
+    fit(
+        data,
+        current.model.structure,
+        current.model.values,
+        &options,
+        &mut (),
+    )
+    .ok()
+}
+
+/// The loop's final fit with the handling that comes after it: the robust loss on the
+/// outliers (Huber), and, when the loop ended because no extension paid (`adequate`), the
+/// intervals widened for correlated residuals, which names `coloured_noise`; the causes
+/// found are appended to `causes`, then all are put in [`super::TestCauseKind::ALL`]'s order.
+pub fn finish(
+    handled: &Handled,
+    last: FitReport,
+    adequate: bool,
+    causes: &mut Vec<TestCause>,
+) -> FitReport {
+    let mut last = match &handled.robust_data {
+        Some(d) => robust(d, &last).map_or(last, |r| r.report),
+        None => last,
+    };
+    if adequate
+        && let Ok(r) = last.residuals(&handled.data)
+        && let Some(cause) = coloured_noise::detect(&handled.data.times, &r)
+    {
+        if let super::Handling::IntervalsWidened { factor } = cause.handling {
+            last.widen_intervals(factor);
+        }
+        causes.push(cause);
+    }
+    causes.sort_by_key(|c| super::TestCauseKind::ALL.iter().position(|k| *k == c.kind));
+    last
+}
+
+fn robust(data: &FitData, last: &FitReport) -> Option<RobustFit> {
+    robust_fit(
+        data,
+        last.model.structure,
+        last.model.values,
+        super::Loss::Huber,
+    )
+    .ok()
+}

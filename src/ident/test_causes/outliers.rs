@@ -1,0 +1,144 @@
+//! `outliers`: isolated samples far from the model on a robust scale. Each residual is
+//! compared with the running median of its neighbours' (seven samples), so that what the
+//! model lacks (smooth over many samples) does not count, only what jumps away from its
+//! neighbours and back; the scale is 1.4826·MAD of those deviations. A sample is an outlier
+//! beyond [`THRESHOLD`] robust standard deviations (and two output quanta, so that a
+//! quantised record's level changes never count), in a run of at most [`MAX_RUN`] samples;
+//! more than [`MAX_SHARE`] of the record is not "isolated" and names nothing.
+
+use super::{Handling, Loss, TestCause, TestCauseKind, TestEvidence};
+use crate::ident::fit::FitData;
+use crate::ident::stats::{median, robust_scale};
+
+/// Robust standard deviations beyond which a sample is an outlier.
+pub const THRESHOLD: f64 = 5.0;
+/// The longest run of consecutive wild samples that is still isolated.
+pub const MAX_RUN: usize = 3;
+/// The largest share of the record that may be outliers.
+pub const MAX_SHARE: f64 = 0.15;
+/// Half the running median's window (samples).
+const HALF_WINDOW: usize = 3;
+
+/// The outliers of `residuals` (of a fit on `data`) and their indices.
+pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize>)> {
+    let n = residuals.len();
+    if n < 4 * HALF_WINDOW + 1 || n != data.times.len() {
+        return None;
+    }
+    let deviation: Vec<f64> = (0..n)
+        .map(|i| {
+            let lo = i.saturating_sub(HALF_WINDOW);
+            let hi = (i + HALF_WINDOW + 1).min(n);
+            residuals[i] - median(&residuals[lo..hi])
+        })
+        .collect();
+    let scale = robust_scale(&deviation);
+    let threshold = (THRESHOLD * scale).max(2.0 * quantum(&data.y));
+    if !(threshold > 0.0) {
+        return None;
+    }
+    let wild: Vec<usize> = (0..n).filter(|&i| deviation[i].abs() > threshold).collect();
+    let isolated: Vec<usize> = runs(&wild)
+        .into_iter()
+        .filter(|r| r.len() <= MAX_RUN)
+        .flatten()
+        .collect();
+    if isolated.is_empty() || isolated.len() as f64 > MAX_SHARE * n as f64 {
+        return None;
+    }
+    let worst = isolated
+        .iter()
+        .map(|&i| deviation[i])
+        .max_by(|a, b| a.abs().total_cmp(&b.abs()))
+        .unwrap_or(0.0);
+    let times: Vec<f64> = isolated.iter().map(|&i| data.times[i]).collect();
+    let interval = times.first().zip(times.last()).map(|(a, b)| (*a, *b));
+    let cause = TestCause {
+        kind: TestCauseKind::Outliers,
+        evidence: TestEvidence::Outliers {
+            count: isolated.len(),
+            times,
+            scale,
+            threshold,
+            worst,
+        },
+        interval,
+        handling: Handling::RobustLoss { loss: Loss::Huber },
+    };
+    Some((cause, isolated))
+}
+
+/// The output's quantum as the median of the nonzero first differences' sizes: a quantised
+/// record's level step; on continuous noise about σ, well under the threshold.
+fn quantum(y: &[f64]) -> f64 {
+    let d: Vec<f64> = y
+        .windows(2)
+        .map(|w| (w[1] - w[0]).abs())
+        .filter(|d| *d > 0.0)
+        .collect();
+    if d.is_empty() { 0.0 } else { median(&d) }
+}
+
+/// Consecutive runs of sorted indices.
+pub(super) fn runs(indices: &[usize]) -> Vec<Vec<usize>> {
+    let mut out: Vec<Vec<usize>> = Vec::new();
+    for &i in indices {
+        match out.last_mut() {
+            Some(run) if run.last().is_some_and(|&l| l + 1 == i) => run.push(i),
+            _ => out.push(vec![i]),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ident::excitation::Excitation;
+
+    fn data(y: Vec<f64>) -> FitData {
+        FitData {
+            times: (0..y.len()).map(|k| k as f64).collect(),
+            y,
+            input: Excitation::step(10.0, 1.0),
+        }
+    }
+
+    #[test]
+    fn isolated_spikes_are_found_and_a_smooth_misfit_is_not() {
+        let mut rng = crate::ident::fit::Lcg(7);
+        let n: Vec<f64> = (0..200).map(|_| 0.005 * rng.symmetric()).collect();
+        let noise = |i: usize| n[i];
+        // A smooth bump the model lacks, plus spikes at 50 and 51 and 120.
+        let mut r: Vec<f64> = (0..200)
+            .map(|i| 0.5 * (-((i as f64 - 80.0) / 15.0).powi(2)).exp() + noise(i))
+            .collect();
+        for i in [50, 51, 120] {
+            r[i] -= 1.0;
+        }
+        let d = data(r.clone());
+        let (cause, samples) = detect(&d, &r).unwrap();
+        assert_eq!(samples, vec![50, 51, 120]);
+        let TestEvidence::Outliers { count, worst, .. } = cause.evidence else {
+            panic!()
+        };
+        assert_eq!(count, 3);
+        assert!(worst < -0.9);
+        let clean: Vec<f64> = (0..200).map(noise).collect();
+        assert!(detect(&d, &clean).is_none());
+    }
+
+    #[test]
+    fn a_block_is_not_isolated() {
+        let mut rng = crate::ident::fit::Lcg(9);
+        let mut r: Vec<f64> = (0..100).map(|_| 0.01 * rng.symmetric()).collect();
+        for v in &mut r[40..46] {
+            *v += 1.0;
+        }
+        assert!(detect(&data(r.clone()), &r).is_none());
+        assert_eq!(
+            runs(&[1, 2, 3, 7, 9, 10]),
+            vec![vec![1, 2, 3], vec![7], vec![9, 10]]
+        );
+    }
+}
