@@ -285,6 +285,7 @@ struct Outcome {
 
 fn run(artefact: Artefact, index: usize) -> Outcome {
     let case = generate(artefact, index);
+    let clock = std::time::Instant::now();
     let report = diagnose(&case.data, case.start, None, &DiagnoseOptions::default());
     match report {
         Ok(r) => {
@@ -293,7 +294,8 @@ fn run(artefact: Artefact, index: usize) -> Outcome {
             let chain: Vec<&str> = r.steps.iter().map(|s| s.cause.id()).collect();
             let fitted = &r.final_fit.model;
             let text = format!(
-                "seed {:#x} {} | causes {causes:?} steps {chain:?} | Kp {:.4} (true {:.4}) lags {:?} (true {:?})",
+                "{:.1} s seed {:#x} {} | causes {causes:?} steps {chain:?} | Kp {:.4} (true {:.4}) lags {:?} (true {:?})",
+                clock.elapsed().as_secs_f64(),
                 case.seed,
                 case.note,
                 fitted.get(Param::Kp),
@@ -301,6 +303,9 @@ fn run(artefact: Artefact, index: usize) -> Outcome {
                 lags(fitted),
                 lags(&case.truth),
             );
+            if std::env::var_os("DEGRAU_ARTEFACTS_VERBOSE").is_some() {
+                eprintln!("{text}");
+            }
             Outcome {
                 structural: !r.steps.is_empty(),
                 named,

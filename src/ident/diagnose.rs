@@ -432,8 +432,7 @@ pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
     let (extension, paired, candidate) = match single {
         Some((e, c)) => (e, None, c),
         None => {
-            let white = analyse(current, data).is_none_or(|a| a.white);
-            if white {
+            if !far_from_white(data, current) {
                 return None;
             }
             let ((e1, e2), c) = best_pair(data, current)?;
@@ -453,6 +452,19 @@ pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
         gain: gain(current, &candidate),
         fit: candidate,
     })
+}
+
+/// The residuals' RMSE must exceed the white noise read from the output's first differences
+/// ([`super::rest::difference_noise`]) this many times for pairs to be tried: strongly
+/// coloured noise (AR(1) up to ρ = 0.97) stays below it, a missing pair of effects leaves
+/// tens of times the noise.
+const FAR_FROM_WHITE: f64 = 8.0;
+
+/// Whether what `current` leaves is far from white: not white by the residual analysis, and
+/// its RMSE above [`FAR_FROM_WHITE`] times the output's white noise.
+fn far_from_white(data: &FitData, current: &FitReport) -> bool {
+    let noise = super::rest::difference_noise(&data.y);
+    current.rmse > FAR_FROM_WHITE * noise && analyse(current, data).is_some_and(|a| !a.white)
 }
 
 /// Whether `candidate` pays for its extra parameters over `current`: its corrected BIC

@@ -115,7 +115,7 @@ impl Line {
 }
 
 /// The white noise's standard deviation read from the first differences: 1.4826·MAD/√2.
-fn difference_noise(y: &[f64]) -> f64 {
+pub fn difference_noise(y: &[f64]) -> f64 {
     let d: Vec<f64> = y.windows(2).map(|w| w[1] - w[0]).collect();
     if d.is_empty() {
         return 0.0;
