@@ -360,7 +360,15 @@ pub fn fit(
     options: &FitOptions,
     observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
-    fit_on(data, structure, guess, options, observer, Samples::Every, None)
+    fit_on(
+        data,
+        structure,
+        guess,
+        options,
+        observer,
+        Samples::Every,
+        None,
+    )
 }
 
 /// [`fit`] minimising Σ wᵢ(yᵢ − ŷᵢ)², each sample weighted by `weights` (one per sample,
@@ -400,7 +408,15 @@ pub fn search_fit(
     options: &FitOptions,
     observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
-    fit_on(data, structure, guess, options, observer, Samples::Reduced, None)
+    fit_on(
+        data,
+        structure,
+        guess,
+        options,
+        observer,
+        Samples::Reduced,
+        None,
+    )
 }
 
 /// Which samples a fit ends on.
@@ -429,8 +445,8 @@ fn fit_on(
             Ok(_) => FitError::NonFiniteCost,
         });
     }
-    let reduction = reduce::reduce(&problem.data.times, &problem.data.input)
-        .filter(|_| weights.is_none());
+    let reduction =
+        reduce::reduce(&problem.data.times, &problem.data.input).filter(|_| weights.is_none());
     if reduction.is_some() {
         problem.alias_span = Some(reduce::MIN_SAMPLES);
     }

@@ -37,9 +37,7 @@ pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize
     if !(threshold > 0.0) {
         return None;
     }
-    let wild: Vec<usize> = (0..n)
-        .filter(|&i| deviation[i].abs() > threshold)
-        .collect();
+    let wild: Vec<usize> = (0..n).filter(|&i| deviation[i].abs() > threshold).collect();
     let isolated: Vec<usize> = runs(&wild)
         .into_iter()
         .filter(|r| r.len() <= MAX_RUN)
@@ -138,6 +136,9 @@ mod tests {
             *v += 1.0;
         }
         assert!(detect(&data(r.clone()), &r).is_none());
-        assert_eq!(runs(&[1, 2, 3, 7, 9, 10]), vec![vec![1, 2, 3], vec![7], vec![9, 10]]);
+        assert_eq!(
+            runs(&[1, 2, 3, 7, 9, 10]),
+            vec![vec![1, 2, 3], vec![7], vec![9, 10]]
+        );
     }
 }

@@ -33,11 +33,7 @@ pub fn detect(data: &FitData, current: &FitReport) -> Option<(TestCause, Vec<usi
 /// The samples held at the record's extreme on `side` (+1 the largest, −1 the smallest).
 fn clipped(data: &FitData, current: &FitReport, side: f64) -> Option<(TestCause, Vec<usize>)> {
     let y = &data.y;
-    let level = y
-        .iter()
-        .map(|v| side * v)
-        .fold(f64::NEG_INFINITY, f64::max)
-        * side;
+    let level = y.iter().map(|v| side * v).fold(f64::NEG_INFINITY, f64::max) * side;
     let range = y.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b))
         - y.iter().fold(f64::INFINITY, |a, b| a.min(*b));
     let tolerance = 1e-12 * (level.abs() + range);
@@ -78,10 +74,7 @@ fn clipped(data: &FitData, current: &FitReport, side: f64) -> Option<(TestCause,
         return None;
     }
     let t = |i: usize| data.times[i];
-    let spans: Vec<(f64, f64)> = spans
-        .iter()
-        .map(|r| (t(r[0]), t(r[r.len() - 1])))
-        .collect();
+    let spans: Vec<(f64, f64)> = spans.iter().map(|r| (t(r[0]), t(r[r.len() - 1]))).collect();
     let (start, end) = (spans[0].0, spans[spans.len() - 1].1);
     let cause = TestCause {
         kind: TestCauseKind::Saturation,
