@@ -49,7 +49,7 @@ const CLEAN_CASES: usize = 20;
 /// Fraction of an effect's cases whose first named cause must be that effect.
 const MIN_RIGHT_FIRST: f64 = 0.95;
 /// Fraction of the clean cases that must come out `none` (no step, adequate).
-const MIN_CLEAN_NONE: f64 = 0.90;
+const MIN_CLEAN_NONE: f64 = 0.95;
 /// Fraction of all the non-clean cases whose final model must recover the truth.
 const MIN_RECOVERED: f64 = 0.90;
 /// Relative tolerance of a recovered parameter.
@@ -84,6 +84,10 @@ const INVERSE_FRACTION: (f64, f64) = (0.3, 1.0);
 const RAMP_RISE: (f64, f64) = (2.0, 10.0);
 /// Drift over the whole record as a fraction of the step's effect.
 const DRIFT_FRACTION: (f64, f64) = (0.1, 0.3);
+/// Tz / Tp1 and Tp2 / Tp1 of the strong lead zero (the data overshoot to about twice their
+/// final value).
+const LEAD_ZERO_TZ: (f64, f64) = (2.0, 2.5);
+const LEAD_ZERO_TP2: (f64, f64) = (0.05, 0.15);
 /// |y0| of the offset cases is at least this fraction of the step's effect.
 const MIN_OFFSET_FRACTION: f64 = 0.2;
 
@@ -151,6 +155,12 @@ enum Kind {
     Integrator,
     Drift,
     Clean,
+    /// Two effects hidden at once, from a P1 start: a dead time and an extra pole (P2D).
+    DeadTimeAndPole,
+    /// A dead time and an oscillation (P2DU).
+    DeadTimeAndOscillation,
+    /// A strong lead zero (P2Z, the data overshoot to about twice their final value).
+    LeadZero,
 }
 
 impl Kind {
@@ -166,6 +176,19 @@ impl Kind {
             Kind::Integrator => Cause::Integrator,
             Kind::Drift => Cause::Drift,
             Kind::Clean => Cause::None,
+            Kind::DeadTimeAndPole => Cause::DeadTime,
+            Kind::DeadTimeAndOscillation => Cause::DeadTime,
+            Kind::LeadZero => Cause::Zero,
+        }
+    }
+
+    /// The causes right as the first named: the effect, or either of two hidden at once.
+    fn right_causes(self) -> Vec<Cause> {
+        match self {
+            Kind::DeadTimeAndPole => vec![Cause::DeadTime, Cause::ExtraPole],
+            Kind::DeadTimeAndOscillation => vec![Cause::DeadTime, Cause::Oscillation],
+            Kind::LeadZero => vec![Cause::Zero, Cause::ExtraPole],
+            k => vec![k.expected()],
         }
     }
 
@@ -182,6 +205,9 @@ impl Kind {
                     Kind::Integrator => 7,
                     Kind::Drift => 8,
                     Kind::Clean => 9,
+                    Kind::DeadTimeAndPole => 10,
+                    Kind::DeadTimeAndOscillation => 11,
+                    Kind::LeadZero => 12,
                 }
     }
 
@@ -332,6 +358,20 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
             v.set(Param::Td, rng.range(TD_FRACTION) * tp1);
             drift = true;
             ("P1D", "P1D", tp1)
+        }
+        Kind::DeadTimeAndPole => {
+            v.set(Param::Tp2, rng.range(EXTRA_POLE_FRACTION) * tp1);
+            v.set(Param::Td, rng.range(TD_FRACTION) * tp1);
+            ("P2D", "P1", tp1)
+        }
+        Kind::DeadTimeAndOscillation => {
+            let slowest = underdamped(&mut rng, &mut v);
+            ("P2DU", "P1", slowest)
+        }
+        Kind::LeadZero => {
+            v.set(Param::Tp2, rng.range(LEAD_ZERO_TP2) * tp1);
+            v.set(Param::Tz, rng.range(LEAD_ZERO_TZ) * tp1);
+            ("P2Z", "P1", tp1)
         }
         Kind::Clean => match index % 3 {
             0 => {
@@ -590,7 +630,8 @@ struct Outcome {
 
 impl Outcome {
     fn right_first(&self) -> bool {
-        self.first == Some(self.case.kind.expected())
+        self.first
+            .is_some_and(|c| self.case.kind.right_causes().contains(&c))
     }
 
     fn recovered(&self) -> bool {
@@ -725,7 +766,7 @@ fn run_kind(kind: Kind) -> Vec<Outcome> {
 /// The outcomes of every case of `kind`, computed once per test binary (the pooled recovery
 /// test shares them with the per-effect tests).
 fn outcomes(kind: Kind) -> &'static [Outcome] {
-    static CACHE: [OnceLock<Vec<Outcome>>; 9] = [const { OnceLock::new() }; 9];
+    static CACHE: [OnceLock<Vec<Outcome>>; 12] = [const { OnceLock::new() }; 12];
     CACHE[kind as usize].get_or_init(|| run_kind(kind))
 }
 
@@ -978,4 +1019,24 @@ fn the_generator_keeps_its_ranges() {
             assert!(!s.free_offset);
         }
     }
+}
+
+/// Two effects hidden at once, from a P1 start: one of them is named first.
+#[test]
+#[ignore = "below the acceptance today (17/20 right first): run with --ignored"]
+fn a_dead_time_and_an_extra_pole_at_once_are_found() {
+    accept(Kind::DeadTimeAndPole);
+}
+
+#[test]
+#[ignore = "below the acceptance today (17/20 right first): run with --ignored"]
+fn a_dead_time_and_an_oscillation_at_once_are_found() {
+    accept(Kind::DeadTimeAndOscillation);
+}
+
+/// A strong lead zero from P1: no single extension may pay, the pair P1 → P2Z does.
+#[test]
+#[ignore = "below the acceptance today (7/20 right first): run with --ignored"]
+fn a_strong_lead_zero_from_p1_is_found() {
+    accept(Kind::LeadZero);
 }

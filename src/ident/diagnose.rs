@@ -428,17 +428,24 @@ pub fn diagnose_from(
 /// tried ([`best_pair`]: P1 → P2Z, P1 → P2D, …), and a pair that pays is one step naming
 /// both causes.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
-    let single = best_extension(data, current).filter(|(_, c)| pays(data, current, c));
+    let single = best_extension(data, current);
+    let leader = single.as_ref().map(|(e, _)| *e);
+    let far = far_from_white(data, current);
+    let single =
+        single.filter(|(_, c)| pays(data, current, c) || (far && plainly_pays(current, c)));
     let (extension, paired, candidate) = match single {
         Some((e, c)) => (e, None, c),
         None => {
-            let white = analyse(current, data).is_none_or(|a| a.white);
-            if white {
+            if !far {
                 return None;
             }
-            let ((e1, e2), c) = best_pair(data, current)?;
+            let ((mut e1, mut e2), c) = best_pair(data, current)?;
             if !pays(data, current, &c) {
                 return None;
+            }
+            // The pair's member that did best alone is named first.
+            if leader == Some(e2) {
+                std::mem::swap(&mut e1, &mut e2);
             }
             (e1, Some(e2.cause(&c.model.values)), c)
         }
@@ -453,6 +460,27 @@ pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
         gain: gain(current, &candidate),
         fit: candidate,
     })
+}
+
+/// The residuals' RMSE must exceed the white noise read from the output's first differences
+/// ([`super::rest::difference_noise`]) this many times for pairs to be tried: strongly
+/// coloured noise (AR(1) up to ρ = 0.97) stays below it, a missing pair of effects leaves
+/// tens of times the noise.
+const FAR_FROM_WHITE: f64 = 8.0;
+
+/// Whether what `current` leaves is far from white: not white by the residual analysis, and
+/// its RMSE above [`FAR_FROM_WHITE`] times the output's white noise.
+fn far_from_white(data: &FitData, current: &FitReport) -> bool {
+    let noise = super::rest::difference_noise(&data.y);
+    current.rmse > FAR_FROM_WHITE * noise && analyse(current, data).is_some_and(|a| !a.white)
+}
+
+/// Whether `candidate` pays by the plain BIC: kept when what `current` leaves is far from
+/// white (tens of times the noise is structure, not coloured noise, whatever the
+/// correlation of a first extension's residuals).
+fn plainly_pays(current: &FitReport, candidate: &FitReport) -> bool {
+    let change = bic(candidate) - bic(current);
+    change.is_finite() && change < -BIC_THRESHOLD
 }
 
 /// Whether `candidate` pays for its extra parameters over `current`: its corrected BIC
@@ -538,6 +566,11 @@ fn gain(before: &FitReport, after: &FitReport) -> Gain {
         fit_percent_after: after.fit_percent,
         criterion_delta: bic(after) - bic(before),
     }
+}
+
+/// The BIC of the best single extension of `current` on `data`, if any can be fitted.
+pub fn best_extension_bic(data: &FitData, current: &FitReport) -> Option<f64> {
+    best_extension(data, current).map(|(_, r)| bic(&r))
 }
 
 /// The extension whose refit has the lowest BIC (aliased fits excluded).

@@ -8,13 +8,13 @@
 //! by the BIC, corrected for its own residuals' correlation (an AR(1) coefficient ρ leaves
 //! N·(1 − ρ)/(1 + ρ) independent samples, so coloured noise wandering about does not count),
 //! be flat before its instant, be significant (z above [`MIN_Z`], with the same
-//! correction), and explain the record better than a drift or an integrator added to the
-//! model would (BIC). The samples from that instant on are then left out of the fit: they are not
+//! correction), and explain the record better than any structural extension of the model
+//! (a drift, an integrator, a zero, …) would (BIC). The samples from that instant on are then left out of the fit: they are not
 //! the process's answer to the input, and not a drift.
 
 use super::{DisturbanceShape, Handling, TestCause, TestCauseKind, TestEvidence};
-use crate::ident::diagnose::{BIC_THRESHOLD, bic};
-use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
+use crate::ident::diagnose::{BIC_THRESHOLD, best_extension_bic};
+use crate::ident::fit::{FitData, FitReport};
 use crate::ident::models::{Model, Param};
 use crate::ident::stats::lag_one;
 
@@ -110,31 +110,17 @@ pub fn detect(
     Some((cause, (first + k..data.times.len()).collect()))
 }
 
-/// Whether a drift or an integrator added to `current` explains the record at least as well
-/// as the disturbance (`sse`: the record's sum of squares with it, three more parameters:
-/// its instant and the step's two levels or the hinge's level and slope), by the BIC.
+/// Whether a structural extension of `current` (a drift, an integrator, a zero, a pole, …:
+/// the best of the diagnosis's candidates) explains the record at least as well as the
+/// disturbance (`sse`: the record's sum of squares with it, three more parameters: its
+/// instant and the step's two levels or the hinge's level and slope), by the BIC. What the
+/// model lacks leaves a pattern in the settled tail too (a slow zero's decay, a drift's
+/// line), and it is the model's to name.
 fn explained_by_structure(data: &FitData, current: &FitReport, sse: f64) -> bool {
     let n = data.y.len() as f64;
     let p = current.params.len() as f64 + 3.0;
     let disturbance = n * (sse / n).ln() + p * n.ln();
-    let options = FitOptions {
-        starts: 1,
-        ..FitOptions::default()
-    };
-    let s = current.model.structure;
-    let mut drift = s;
-    drift.drift = true;
-    let mut integrator = s;
-    integrator.integrator = true;
-    [(drift, !s.drift), (integrator, !s.integrator)]
-        .into_iter()
-        .filter(|(_, new)| *new)
-        .filter_map(|(e, _)| {
-            let mut v = current.model.values;
-            v.set(Param::Drift, 0.0);
-            fit(data, e, v, &options, &mut ()).ok()
-        })
-        .any(|r| bic(&r) <= disturbance + BIC_THRESHOLD)
+    best_extension_bic(data, current).is_some_and(|b| b <= disturbance + BIC_THRESHOLD)
 }
 
 /// How long the model's response takes to settle (s): its dead time plus four times its

@@ -1,6 +1,6 @@
 //! The test's causes handled before the model's are judged (the order of reasoning of
-//! [`crate::ident::diagnose`]): a test not at rest gets an initial transient and a free Y0;
-//! outliers are left out of the structural search (and the final fit uses a robust loss on
+//! [`crate::ident::diagnose`], in [`super::TestCauseKind::ALL`]'s order): a test not at rest
+//! gets an initial transient and a free Y0; a clipped span is left out; outliers are left out of the structural search (and the final fit uses a robust loss on
 //! them, [`crate::ident::robust`]); a clipped span and a disturbance's window are left out
 //! of every fit. Each exclusion is followed by a refit from the current optimum, so the next
 //! check sees the handled problem.
@@ -58,18 +58,19 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
     let mut kept = Kept {
         keep: vec![true; data.y.len()],
     };
-    let mut outlier_samples = Vec::new();
-    if let Ok(r) = current.residuals(data)
-        && let Some((cause, samples)) = outliers::detect(data, &r)
-    {
+    if let Some((cause, samples)) = saturation::detect(data, &current) {
         causes.push(cause);
         kept.drop(&samples);
-        outlier_samples = samples;
         current = refit(&data.keeping(&kept.keep), &current).unwrap_or(current);
     }
     let mut handled = data.keeping(&kept.keep);
-    if let Some((cause, samples)) = saturation::detect(&handled, &current) {
+    let mut outlier_samples = Vec::new();
+    if let Ok(r) = current.residuals(&handled)
+        && let Some((cause, samples)) = outliers::detect(&handled, &r)
+    {
         causes.push(cause);
+        let map = kept.indices();
+        outlier_samples = samples.iter().map(|&i| map[i]).collect();
         kept.drop(&samples);
         handled = data.keeping(&kept.keep);
         current = refit(&handled, &current).unwrap_or(current);

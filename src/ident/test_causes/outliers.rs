@@ -4,7 +4,8 @@
 //! neighbours and back; the scale is 1.4826·MAD of those deviations. A sample is an outlier
 //! beyond [`THRESHOLD`] robust standard deviations (and two output quanta, so that a
 //! quantised record's level changes never count), in a run of at most [`MAX_RUN`] samples;
-//! more than [`MAX_SHARE`] of the record is not "isolated" and names nothing.
+//! more than [`MAX_SHARE`] of the record is not "isolated" and names nothing. The samples
+//! right after an input change are not judged: the response turns a corner there.
 
 use super::{Handling, Loss, TestCause, TestCauseKind, TestEvidence};
 use crate::ident::fit::FitData;
@@ -37,7 +38,10 @@ pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize
     if !(threshold > 0.0) {
         return None;
     }
-    let wild: Vec<usize> = (0..n).filter(|&i| deviation[i].abs() > threshold).collect();
+    let corner = near_changes(data);
+    let wild: Vec<usize> = (0..n)
+        .filter(|&i| deviation[i].abs() > threshold && !corner[i])
+        .collect();
     let isolated: Vec<usize> = runs(&wild)
         .into_iter()
         .filter(|r| r.len() <= MAX_RUN)
@@ -66,6 +70,19 @@ pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize
         handling: Handling::RobustLoss { loss: Loss::Huber },
     };
     Some((cause, isolated))
+}
+
+/// The samples within a window after an input change: the response turns a corner there
+/// (its slope jumps), which a running median leaves in the deviations; they are not judged.
+fn near_changes(data: &FitData) -> Vec<bool> {
+    let mut near = vec![false; data.times.len()];
+    for c in &data.input.changes {
+        let k = data.times.partition_point(|&t| t < c.t);
+        let from = k.saturating_sub(HALF_WINDOW);
+        let to = (k + 2 * HALF_WINDOW + 1).min(near.len());
+        near[from..to].iter_mut().for_each(|x| *x = true);
+    }
+    near
 }
 
 /// The output's quantum as the median of the nonzero first differences' sizes: a quantised
