@@ -114,17 +114,11 @@ impl Line {
     }
 }
 
-/// The white noise's standard deviation read from the first differences: 1.4826·MAD/√2.
-fn difference_noise(y: &[f64]) -> f64 {
-    let mut d: Vec<f64> = y.windows(2).map(|w| w[1] - w[0]).collect();
-    if d.is_empty() {
-        return 0.0;
-    }
-    let mid = d.len() / 2;
-    let median = *d.select_nth_unstable_by(mid, f64::total_cmp).1;
-    let mut dev: Vec<f64> = d.iter().map(|x| (x - median).abs()).collect();
-    let mad = *dev.select_nth_unstable_by(mid, f64::total_cmp).1;
-    1.4826 * mad / std::f64::consts::SQRT_2
+/// The white noise's standard deviation read from the first differences: 1.4826·MAD/√2
+/// (robust to the steps, spikes and slow motion the differences also carry).
+pub fn difference_noise(y: &[f64]) -> f64 {
+    let d: Vec<f64> = y.windows(2).map(|w| w[1] - w[0]).collect();
+    super::test_causes::robust_scale(&d) / std::f64::consts::SQRT_2
 }
 
 #[cfg(test)]

@@ -16,8 +16,23 @@
 use serde::{Deserialize, Serialize};
 
 use super::diagnose::Cause;
-use super::fit::FitData;
+use super::fit::{FitData, FitReport};
+use super::models::Param;
 use super::rest::{Motion, Rest, rest_before};
+
+mod imperfect_step;
+mod nonlinearity;
+mod quantisation;
+mod sampling;
+mod small_step;
+#[cfg(test)]
+mod testing;
+
+pub use imperfect_step::{imperfect_step, input_at};
+pub use nonlinearity::{nonlinearity, step_gains};
+pub use quantisation::{COARSE_SHARE, quantisation, resolution};
+pub use sampling::{TimeScales, sampling, sampling_checks};
+pub use small_step::{SMALL_STEP_RATIO, small_step};
 
 /// A cause of the test, with a stable identifier.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -201,10 +216,27 @@ pub enum TestEvidence {
     /// The residuals' lag-one autocorrelation `lag1` (an AR(1) coefficient), and the factor
     /// the parameters' intervals were widened by.
     ColouredNoise { lag1: f64, widening: f64 },
-    /// The output moves in steps of `resolution`, `share` of the step's effect.
-    Quantisation { resolution: f64, share: f64 },
-    /// The sampling period `ts` against the notes' rules; the ones broken are listed.
-    Sampling { ts: f64, broken: Vec<RuleCheck> },
+    /// The output moves in steps of `resolution`, `share` of the step's effect; `noise` is
+    /// the residuals' robust standard deviation. `kp_floor`: when the noise is under half a
+    /// step it does not dither the quantiser, and Kp is known no better than ± this
+    /// (resolution/|Δu|), whatever its interval says.
+    Quantisation {
+        resolution: f64,
+        share: f64,
+        noise: f64,
+        kp_floor: Option<f64>,
+    },
+    /// The sampling period `ts` against the notes' rules: clearly too slow, or (`too_slow`
+    /// false) clearly too fast with the model's largest move between two samples
+    /// (`per_sample`) under the noise's standard deviation (`noise`); the rules broken on
+    /// that side are listed.
+    Sampling {
+        ts: f64,
+        too_slow: bool,
+        broken: Vec<RuleCheck>,
+        per_sample: f64,
+        noise: f64,
+    },
     /// The step's effect against the noise's standard deviation: `ratio` < 6.
     SmallStep { effect: f64, noise: f64, ratio: f64 },
     /// The input departed from an ideal step; an ideal-step model would have named
@@ -260,9 +292,75 @@ pub fn not_at_rest(data: &FitData) -> Option<TestCause> {
     })
 }
 
+/// A fit on its data, as the detectors that read a model read it: the residuals
+/// y − ŷ computed once (output units).
+#[derive(Debug, Clone)]
+pub struct FittedRecord<'a> {
+    pub data: &'a FitData,
+    pub fit: &'a FitReport,
+    pub residuals: Vec<f64>,
+}
+
+impl<'a> FittedRecord<'a> {
+    /// `None` when the fitted model cannot be simulated on the data.
+    pub fn new(data: &'a FitData, fit: &'a FitReport) -> Option<Self> {
+        let residuals = fit.residuals(data).ok()?;
+        Some(Self {
+            data,
+            fit,
+            residuals,
+        })
+    }
+
+    /// The effect of the input's largest change through the model, |Kp·Δu| (output units).
+    pub fn effect(&self) -> f64 {
+        let du = self.data.input.largest_change().map_or(0.0, |c| c.du);
+        (self.fit.model.get(Param::Kp) * du).abs()
+    }
+
+    /// The noise's standard deviation read robustly from the residuals (1.4826·MAD), so that
+    /// a few outliers do not count.
+    pub fn noise(&self) -> f64 {
+        robust_scale(&self.residuals)
+    }
+}
+
+/// The robust standard deviation of `x`: 1.4826 × the median absolute deviation from the
+/// median (the standard deviation for Gaussian data, unmoved by a few wild values); 0 for
+/// an empty slice. O(n) (selection, not sorting).
+pub fn robust_scale(x: &[f64]) -> f64 {
+    let Some(centre) = median(x) else {
+        return 0.0;
+    };
+    let dev: Vec<f64> = x.iter().map(|v| (v - centre).abs()).collect();
+    1.4826 * median(&dev).unwrap_or(0.0)
+}
+
+/// The median of `x` (the upper one of an even count), `None` when empty. O(n).
+pub fn median(x: &[f64]) -> Option<f64> {
+    if x.is_empty() {
+        return None;
+    }
+    let mut v = x.to_vec();
+    let mid = v.len() / 2;
+    Some(*v.select_nth_unstable_by(mid, f64::total_cmp).1)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_robust_scale_of_gaussian_like_data_ignores_wild_values() {
+        // −1, 0, 1 in turn: median 0, MAD 1 → 1.4826; four wild values do not move it.
+        let mut x: Vec<f64> = (0..999).map(|k| (k % 3) as f64 - 1.0).collect();
+        for v in x.iter_mut().step_by(300) {
+            *v = 1e6;
+        }
+        assert!((robust_scale(&x) - 1.4826).abs() < 1e-12);
+        assert_eq!(median(&[3.0, 1.0, 2.0]), Some(2.0));
+        assert_eq!(robust_scale(&[]), 0.0);
+    }
 
     #[test]
     fn identifiers_are_unique_and_listed_once() {

@@ -170,6 +170,39 @@ def multistep_heater():
     return "\n".join(rows) + "\n"
 
 
+def sbhs():
+    """IIT Bombay's Single Board Heater System, heater 30 -> 40 % with the fan at 50 %, not at
+    rest before the step: 821 rows `sample heater% fan% temperature(degC) stamp(ms)`,
+    whitespace-separated, no header, ~1 s irregular sampling (1.00 s with 10 ms jitter, a few
+    odd intervals, one short one at the start), temperature quantised at 0.1 degC.
+
+    The plant is the source's first order 0.23/(58 s + 1) (degC per %). Before the step the
+    heater has been at 30 % for a while but the plate has not settled: the temperature is the
+    free response of that same pole, rising from 29.3 degC toward 34.6 degC, the shape of the
+    real record (29.3 -> 34.5 degC over the first 249 s), so a model with an initial transient
+    can describe it. The step happens between two samples (248.6 s); the logger shows it at
+    the next one (~249 s). White noise 0.12 degC (the real record's first differences spread
+    +/-0.2 degC)."""
+    rng = random.Random(11)
+    kp, tau, y_rest, y_first = 0.23, 58.0, 34.6, 29.3
+    t_step, u_before, u_after = 248.6, 30.0, 40.0
+    stamp0 = 1412400132192.0
+    odd = {1: 0.85, 2: 0.27, 3: 0.89, 130: 1.2, 131: 0.8, 420: 0.53, 421: 1.47}
+    rows, t = [], 0.0
+    for k in range(821):
+        if k > 0:
+            t += odd.get(k, 1.0 + rng.choice([-0.01, 0.0, 0.0, 0.0, 0.01]))
+        y = y_rest - (y_rest - y_first) * math.exp(-t / tau)
+        if t >= t_step:
+            y += kp * (u_after - u_before) * (1 - math.exp(-(t - t_step) / tau))
+        # The logger reads the heater command just before it samples the temperature.
+        u = u_after if t >= t_step else u_before
+        temp = round((y + rng.gauss(0, 0.12)) * 10) / 10
+        stamp = stamp0 + round(t * 1000)
+        rows.append(f"{k + 1:15.1f}{u:18.1f}{50.0:18.1f}{temp:18.1f}{stamp:18.1f}")
+    return "\n".join(rows) + "\n"
+
+
 FILES = {
     "tclab_step_q1_50_synthetic.csv": tclab_step,
     "tclab_step_q1_50_dropouts_synthetic.csv": tclab_dropouts,
@@ -177,6 +210,7 @@ FILES = {
     "rlc_step_underdamped_synthetic.csv": rlc,
     "rc2_square_wave_adc_synthetic.csv": rc_ladder,
     "multistep_heater_synthetic.csv": multistep_heater,
+    "sbhs_step_not_at_rest_synthetic.txt": sbhs,
 }
 
 if __name__ == "__main__":

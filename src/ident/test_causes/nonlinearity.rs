@@ -1,0 +1,99 @@
+//! `nonlinearity`: on a record with several input changes, each change's own fit
+//! ([`per_step_fits`](crate::ident::per_step::per_step_fits)) gives a static gain; a linear
+//! process gives the same one every time. Named when a change's gain differs from the joint
+//! fit's beyond both 95 % intervals and by more than the record resolves (the per-step
+//! table's rule, [`agreement`]): up against down, small against large, one operating point
+//! against another. The evidence lists every change's gain with its interval. Cost: nothing
+//! beyond the per-step fits the diagnosis already has.
+
+use crate::ident::fit::FitReport;
+use crate::ident::models::Param;
+use crate::ident::per_step::{Agreement, StepFit, agreement};
+
+use super::{Handling, StepGain, TestCause, TestCauseKind, TestEvidence};
+
+/// Each fitted change's own static gain and its 95 % interval (failed fits left out).
+pub fn step_gains(fits: &[StepFit]) -> Vec<StepGain> {
+    fits.iter()
+        .filter_map(|f| {
+            let r = f.fit.as_ref().ok()?;
+            Some(StepGain {
+                t: f.change.t,
+                u_before: f.change.u_before,
+                du: f.change.du,
+                kp: r.model.get(Param::Kp),
+                ci95: r.interval(Param::Kp),
+            })
+        })
+        .collect()
+}
+
+/// `nonlinearity` from the joint fit and the per-step fits; `instant_step` is how well each
+/// change's instant is known (s, the sampling period for a measured input).
+pub fn nonlinearity(joint: &FitReport, fits: &[StepFit], instant_step: f64) -> Option<TestCause> {
+    let Agreement::Differ(differences) = agreement(joint, fits, instant_step) else {
+        return None;
+    };
+    if !differences.iter().any(|d| d.param == Param::Kp) {
+        return None;
+    }
+    let steps = step_gains(fits);
+    let start = fits
+        .iter()
+        .map(|f| f.window.0)
+        .fold(f64::INFINITY, f64::min);
+    let end = fits
+        .iter()
+        .map(|f| f.window.1)
+        .fold(f64::NEG_INFINITY, f64::max);
+    Some(TestCause {
+        kind: TestCauseKind::Nonlinearity,
+        evidence: TestEvidence::Nonlinearity { steps },
+        interval: (start < end).then_some((start, end)),
+        handling: Handling::PerStepTable,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ident::fit::FitOptions;
+    use crate::ident::per_step::per_step_fits;
+    use crate::ident::test_causes::testing::{Messy, messy};
+
+    fn up_and_down(gain_down: f64, noise: f64) -> Option<TestCause> {
+        let m = messy(Messy {
+            steps: vec![(30.4, 10.0, 1.2), (150.6, -10.0, gain_down)],
+            n: 280,
+            noise,
+            ..Messy::default()
+        });
+        let options = FitOptions {
+            starts: 1,
+            ..FitOptions::default()
+        };
+        let fits = per_step_fits(&m.data, m.fit.model.structure, &options);
+        assert_eq!(fits.len(), 2);
+        nonlinearity(&m.fit, &fits, m.data.sampling_period())
+    }
+
+    #[test]
+    fn a_gain_that_differs_up_and_down_is_named_with_both_gains() {
+        let cause = up_and_down(0.9, 0.01).expect("1.2 up against 0.9 down");
+        let TestEvidence::Nonlinearity { steps } = &cause.evidence else {
+            panic!("{cause:?}")
+        };
+        assert_eq!(steps.len(), 2);
+        assert!((steps[0].kp - 1.2).abs() < 0.05, "{steps:?}");
+        assert!((steps[1].kp - 0.9).abs() < 0.05, "{steps:?}");
+        assert!((steps[1].u_before - 40.0).abs() < 1e-9 && steps[1].du == -10.0);
+        assert_eq!(cause.handling, Handling::PerStepTable);
+    }
+
+    #[test]
+    fn a_linear_process_is_quiet() {
+        for noise in [0.002, 0.02] {
+            assert_eq!(up_and_down(1.2, noise), None, "noise {noise}");
+        }
+    }
+}
