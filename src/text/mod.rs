@@ -24,6 +24,7 @@ pub mod feedback;
 pub mod ident;
 pub mod identify;
 pub mod lsq;
+pub mod lsq_app;
 pub mod lti;
 pub mod operating_point;
 pub mod report;
@@ -188,6 +189,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(app::messages());
     all.extend(approx::messages());
     all.extend(lsq::messages());
+    all.extend(lsq_app::messages());
     all
 }
 
