@@ -1,5 +1,5 @@
 //! The least-squares mode of the real app, through egui_kittest: ARX on the TCLab record with
-//! θ̂ and both fit % read off the panel, the notes' three-sample example, RLS animated to the
+//! θ and both fit % read off the panel, the notes' three-sample example, RLS animated to the
 //! batch solution, and a PRBS test designed, exported and used as the record.
 
 mod kit;
@@ -40,7 +40,7 @@ fn tclab() -> Harness<'static, DegrauApp> {
     h
 }
 
-/// θ̂ of y(k) = −a1·y(k−1) + b1·u(k−1) in deviations, by the normal equations written out
+/// θ of y(k) = −a1·y(k−1) + b1·u(k−1) in deviations, by the normal equations written out
 /// (an independent computation of the QR solve).
 fn first_order_by_hand(u: &[f64], y: &[f64], u0: f64, y0: f64) -> [f64; 2] {
     let (mut s11, mut s12, mut s22, mut r1, mut r2) = (0.0, 0.0, 0.0, 0.0, 0.0);
@@ -78,7 +78,7 @@ fn arx_on_the_tclab_record_shows_theta_and_both_fit_percents() {
     // A slow heater: a pole near 1 and a small positive gain per sample.
     assert!(want[0] > -1.0 && want[0] < -0.9, "a1 = {}", want[0]);
     assert!(want[1] > 0.0, "b1 = {}", want[1]);
-    // What the student reads: θ̂, and the two fit % side by side, the prediction's higher.
+    // What the student reads: θ, and the two fit % side by side, the prediction's higher.
     let shown = |v: f64| degrau::text::Lang::En.num(v, 5);
     h.get_by_label(&shown(r.fit.lsq.theta[0]));
     h.get_by_label(&shown(r.fit.lsq.theta[1]));
@@ -86,14 +86,16 @@ fn arx_on_the_tclab_record_shows_theta_and_both_fit_percents() {
         r.fit.scores.fit_percent_prediction,
         r.fit.scores.fit_percent_simulation,
     );
-    h.get_by_label(&format!("{p:.1} %"));
-    h.get_by_label(&format!("{sim:.1} %"));
+    // (each also in the AIC table's row of these orders)
+    for x in [p, sim] {
+        assert!(h.query_all_by_label(&format!("{x:.1} %")).count() >= 1, "{x}");
+    }
     assert!(p > sim && p > 90.0, "prediction {p} %, simulation {sim} %");
     h.get_by_label("Fit % (one-step prediction)");
     h.get_by_label("Fit % (free simulation)");
     h.get_by_label_contains("One-step prediction: each ŷ(k) from the measured past outputs");
     // Φ as the notes write it, and the ARX model's G(s) with its dead time.
-    h.get_by_label("−y(k−1)");
+    assert!(h.query_all_by_label("−y(k−1)").count() >= 2, "θ table and Φ header");
     h.get_by_label_contains("G(s) = ");
 }
 
@@ -104,19 +106,21 @@ fn the_notes_three_sample_example_with_its_regressors() {
     h.run_steps(2);
     h.get_by_label("Notes' example").click();
     h.run_steps(2);
-    h.get_by_label("θ̂ = [0, 0.9, 0.3]");
-    h.get_by_label("Cost J = EᵀE = 0");
+    h.get_by_label("θ = [0, 0.9, 0.3]");
+    h.get_by_label("Cost J = Σe(k)² = 0");
     for regressor in ["1", "u(k)", "u(k−1)"] {
         assert!(h.query_all_by_label(regressor).count() >= 1, "{regressor}");
     }
-    h.get_by_label("y(k) = θ0 + θ1·u(k)").click();
+    // (the models are also named in the table and the legend: the first is the selector)
+    h.get_all_by_label("y(k) = θ0 + θ1·u(k)").next().unwrap().click();
     h.run_steps(2);
-    h.get_by_label("θ̂ = [-0.05, 1.05]");
-    h.get_by_label("Cost J = EᵀE = 0.015");
-    h.get_by_label("y(k) = θ0").click();
+    h.get_by_label("θ = [-0.05, 1.05]");
+    h.get_by_label("Cost J = Σe(k)² = 0.015");
+    h.get_all_by_label("y(k) = θ0").next().unwrap().click();
     h.run_steps(2);
-    h.get_by_label("θ̂ = [1]");
-    h.get_by_label("Cost J = EᵀE = 2.2");
+    h.get_by_label("θ = [1]");
+    // E = [−1, −0.1, 1.1]: J = 2.22 (the notes round it to 2.2).
+    h.get_by_label("Cost J = Σe(k)² = 2.22");
 }
 
 #[test]
@@ -218,7 +222,7 @@ fn validation_shows_both_parts_and_the_split() {
         arx.estimation.fit_percent_simulation,
         arx.validation.fit_percent_simulation,
     ] {
-        h.get_by_label(&format!("{x:.1} %"));
+        assert!(h.query_all_by_label(&format!("{x:.1} %")).count() >= 1, "{x}");
     }
     h.get_by_label("ARX model — prediction");
     h.get_by_label("RLS (final θ) — simulation");
@@ -233,6 +237,12 @@ fn validation_shows_both_parts_and_the_split() {
 #[test]
 fn the_advisor_reads_the_notes_rules_with_the_record_numbers() {
     let mut h = tclab();
+    // The time scales of a first-order guess read off the curve.
+    let _ = h
+        .state_mut()
+        .ident
+        .apply(degrau::app::identify::Command::SetCode("P1D".into()));
+    h.run_steps(2);
     h.get_by_label("Sampling advisor").click();
     h.run_steps(2);
     let app = h.state();

@@ -25,15 +25,15 @@ crate::phrases! {
             "Nenhum registro: carregue um ensaio no modo Identificar (ou projete um ensaio PRBS e use-o como registro)."
         ),
         ArxEquation => (
-            "y(k) + a1·y(k−1) + … + a_na·y(k−na) = b1·u(k−nk) + … + b_nb·u(k−nk−nb+1); θ̂ = argmin J by QR.",
-            "y(k) + a1·y(k−1) + … + a_na·y(k−na) = b1·u(k−nk) + … + b_nb·u(k−nk−nb+1); θ̂ = argmin J por QR."
+            "y(k) + a1·y(k−1) + … + a_na·y(k−na) = b1·u(k−nk) + … + b_nb·u(k−nk−nb+1); θ = argmin J by QR.",
+            "y(k) + a1·y(k−1) + … + a_na·y(k−na) = b1·u(k−nk) + … + b_nb·u(k−nk−nb+1); θ = argmin J por QR."
         ),
         OffsetInitial => ("deviations from the start", "desvios do início"),
         OffsetConstant => ("a constant regressor", "um regressor constante"),
         OffsetNone => ("as recorded", "como registrado"),
         Fit => ("Fit", "Ajustar"),
         PressFit => ("The orders changed: press Fit.", "As ordens mudaram: pressione Ajustar."),
-        Estimate => ("Estimate θ̂", "Estimativa θ̂"),
+        Estimate => ("Estimate θ", "Estimativa θ"),
         TwoFits => ("Prediction and simulation", "Predição e simulação"),
         WhichIsWhich => (
             "One-step prediction: each ŷ(k) from the measured past outputs. Free simulation: from the input alone, the model's own past outputs fed back. The simulation's fit % is what the model can do on its own; other tools often report the prediction's.",
@@ -70,15 +70,16 @@ crate::phrases! {
             "Três amostras: u = [0, 1, 2], y = [0, 0,9, 2,1]; sinais tomados como 0 antes de k = 0. Escolha um modelo:"
         ),
         ExampleSolve => (
-            "θ̂ = (ΦᵀΦ)⁻¹ΦᵀY, computed by QR; J = EᵀE with E = Y − Φθ̂.",
-            "θ̂ = (ΦᵀΦ)⁻¹ΦᵀY, calculado por QR; J = EᵀE com E = Y − Φθ̂."
+            "θ = (Φ'Φ)⁻¹Φ'Y, computed by QR; J = Σe(k)² with E = Y − Φθ.",
+            "θ = (Φ'Φ)⁻¹Φ'Y, calculado por QR; J = Σe(k)² com E = Y − Φθ."
         ),
         ExampleAll => ("The three models", "Os três modelos"),
-        ExamplePlot => ("y(k) and each model's Φθ̂", "y(k) e o Φθ̂ de cada modelo"),
+        ExamplePlot => ("y(k) and each model's Φθ", "y(k) e o Φθ de cada modelo"),
         Model => ("Model", "Modelo"),
+        Cost => ("Cost J = Σe(k)²", "Função custo J = Σe(k)²"),
         RlsEquations => (
-            "Each sample: e_k = y(k) − φᵀθ_{k−1};  P_k = (P_{k−1} − P_{k−1}φφᵀP_{k−1}/(λ + φᵀP_{k−1}φ))/λ;  θ_k = θ_{k−1} + P_kφ·e_k.",
-            "A cada amostra: e_k = y(k) − φᵀθ_{k−1};  P_k = (P_{k−1} − P_{k−1}φφᵀP_{k−1}/(λ + φᵀP_{k−1}φ))/λ;  θ_k = θ_{k−1} + P_kφ·e_k."
+            "Each sample: e_k = y(k) − φ'θ_{k−1};  P_k = (P_{k−1} − P_{k−1}φφ'P_{k−1}/(λ + φ'P_{k−1}φ))/λ;  θ_k = θ_{k−1} + P_kφ·e_k.",
+            "A cada amostra: e_k = y(k) − φ'θ_{k−1};  P_k = (P_{k−1} − P_{k−1}φφ'P_{k−1}/(λ + φ'P_{k−1}φ))/λ;  θ_k = θ_{k−1} + P_kφ·e_k."
         ),
         Run => ("Run", "Executar"),
         Pause => ("Pause", "Pausar"),
@@ -89,7 +90,7 @@ crate::phrases! {
             "Pressione Executar para ver θ_k amostra a amostra, ou Passo para uma amostra."
         ),
         RlsProgress => ("{} of {} samples taken in.", "{} de {} amostras processadas."),
-        Batch => ("batch θ̂", "θ̂ em lote"),
+        Batch => ("batch θ", "θ em lote"),
         BatchOf => ("{} batch", "{} em lote"),
         RlsDone => (
             "Every sample taken in: with λ = 1 and a large α, θ_k ends at the batch solution.",
@@ -100,8 +101,8 @@ crate::phrases! {
             "Trajetórias dos parâmetros θ_k (tracejado: a solução em lote)"
         ),
         PrbsNote => (
-            "A maximal-length PRBS as MATLAB's idinput: each bit held for the clock period; one period is (2ⁿ − 1) bits.",
-            "Um PRBS de comprimento máximo como o idinput do MATLAB: cada bit mantido pelo período do relógio; um período tem (2ⁿ − 1) bits."
+            "A maximal-length PRBS as MATLAB's idinput: each bit held for the clock period; one period is (2^n − 1) bits.",
+            "Um PRBS de comprimento máximo como o idinput do MATLAB: cada bit mantido pelo período do relógio; um período tem (2^n − 1) bits."
         ),
         Length => ("Length N (samples)", "Comprimento N (amostras)"),
         Low => ("Low level", "Nível baixo"),

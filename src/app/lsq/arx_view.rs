@@ -1,4 +1,4 @@
-//! The ARX section: the orders and the operating point, Fit; θ̂ with standard errors, J, AIC,
+//! The ARX section: the orders and the operating point, Fit; θ with standard errors, J, AIC,
 //! the fit % of the one-step prediction and of the free simulation side by side, the ARX
 //! model's d2c G(s) beside the Identify mode's continuous fit, the AIC grid, and Φ and Y as the
 //! notes write them. The plot: the measured output, the prediction, the simulation and the
@@ -95,7 +95,7 @@ fn results(ui: &mut Ui, session: &Session, r: &ArxResult, look: &Look, out: &mut
     heading(ui, Phrase::Estimate.get(lang));
     parameter_table(ui, &fit.regression, &fit.lsq.theta, &fit.lsq.se, fit.model.orders.nk, look);
     egui::Grid::new("arx figures").num_columns(2).show(ui, |ui| {
-        ui.label(L::Cost.get(lang));
+        ui.label(Phrase::Cost.get(lang));
         ui.label(words::num(fit.lsq.j, lang));
         ui.end_row();
         ui.label(L::Rows.get(lang));
@@ -142,7 +142,7 @@ fn results(ui: &mut Ui, session: &Session, r: &ArxResult, look: &Look, out: &mut
     regressors(ui, &fit.regression, look);
 }
 
-/// θ̂ with its standard errors, one row per regressor.
+/// θ with its standard errors, one row per regressor.
 pub fn parameter_table(
     ui: &mut Ui,
     regression: &Regression,

@@ -10,7 +10,7 @@ use super::designer::PrbsSettings;
 /// The parts of the mode, in the order of the notes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Section {
-    /// ARX least squares on the record (Φ, θ̂, J, AIC, prediction and simulation, d2c).
+    /// ARX least squares on the record (Φ, θ, J, AIC, prediction and simulation, d2c).
     #[default]
     Arx,
     /// The notes' three-sample example, with its regressors.

@@ -1,7 +1,7 @@
 //! The notes' three-sample example (u = [0, 1, 2], y = [0, 0.9, 2.1]): the three models
 //! (a constant; θ0 + θ1·u(k); θ0 + θ1·u(k) + θ2·u(k−1)), each with its regressors Φ and Y on
-//! screen, θ̂ and J, and the three side by side so the student sees J fall as regressors are
-//! added. The plot: y(k) and each model's Φθ̂ against k.
+//! screen, θ and J, and the three side by side so the student sees J fall as regressors are
+//! added. The plot: y(k) and each model's Φθ against k.
 
 use eframe::egui::{self, Ui};
 use egui_plot::{Line, Plot, Points};
@@ -46,7 +46,7 @@ pub fn panel(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>
         .num_columns(3)
         .show(ui, |ui| {
             ui.label(Phrase::Model.get(lang));
-            ui.label("θ̂");
+            ui.label("θ");
             ui.label("J");
             ui.end_row();
             for fit in &session.examples {
@@ -66,7 +66,7 @@ pub fn panel(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>
         });
 }
 
-/// The chosen model: Φ and Y, θ̂ and J.
+/// The chosen model: Φ and Y, θ and J.
 fn chosen(ui: &mut Ui, fit: &ExampleFit, look: &Look) {
     let lang = look.lang;
     let regression = match &fit.regression {
@@ -79,10 +79,10 @@ fn chosen(ui: &mut Ui, fit: &ExampleFit, look: &Look) {
     arx_view::regressors(ui, regression, look);
     match &fit.lsq {
         Ok(l) => {
-            ui.label(format!("θ̂ = {}", words::vector(&l.theta, lang)));
+            ui.label(format!("θ = {}", words::vector(&l.theta, lang)));
             ui.label(format!(
                 "{} = {}",
-                L::Cost.get(lang),
+                Phrase::Cost.get(lang),
                 words::cost(l.j, y_scale(fit), lang)
             ));
             note(ui, look, Phrase::ExampleSolve.get(lang));
@@ -96,7 +96,7 @@ fn y_scale(fit: &ExampleFit) -> f64 {
     fit.regression.as_ref().map_or(1.0, |r| r.y.norm_squared())
 }
 
-/// y(k) and each model's fitted Φθ̂ against k.
+/// y(k) and each model's fitted Φθ against k.
 pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
     let (lang, palette) = (look.lang, &look.palette);
     ui.label(Phrase::ExamplePlot.get(lang));

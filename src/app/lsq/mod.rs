@@ -1,5 +1,5 @@
 //! The least-squares mode: the second half of the course notes on the Identify mode's record.
-//! ARX least squares as the notes write it (Φ, Y, θ̂ with standard errors, J, AIC over a small
+//! ARX least squares as the notes write it (Φ, Y, θ with standard errors, J, AIC over a small
 //! grid, one-step prediction against free simulation, the model's d2c G(s) beside the
 //! continuous fit), the notes' three-sample example with its regressors, recursive least
 //! squares animated sample by sample, a PRBS test designed on a model and exported or used

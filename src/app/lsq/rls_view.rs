@@ -71,7 +71,7 @@ fn buttons(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) 
     });
 }
 
-/// Where the run is: k, e_k, θ_k and the batch θ̂.
+/// Where the run is: k, e_k, θ_k and the batch θ.
 fn state(ui: &mut Ui, a: &Animation, look: &Look) {
     let lang = look.lang;
     ui.label(Phrase::RlsProgress.with(

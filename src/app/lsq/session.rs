@@ -539,8 +539,9 @@ mod tests {
 
     #[test]
     fn the_notes_example_models() {
+        // E = [−1, −0.1, 1.1] for the constant: J = 2.22 (the notes round it to 2.2).
         let want: [(&[f64], f64); 3] = [
-            (&[1.0], 2.2),
+            (&[1.0], 2.22),
             (&[-0.05, 1.05], 0.015),
             (&[0.0, 0.9, 0.3], 0.0),
         ];
