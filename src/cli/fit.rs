@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use crate::ident::data::{self, LoadOptions, StepTest};
 use crate::ident::excitation::{Excitation, Hold};
-use crate::ident::experiment::{Drive, Experiment, Offset, OperatingPoint};
+use crate::ident::experiment::{Drive, Experiment, ExperimentError, Offset, OperatingPoint};
 use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
 use crate::ident::models::{Param, Structure};
 use crate::ident::per_step::{StepFit, per_step_fits};
@@ -172,18 +172,7 @@ impl OpenArgs {
 impl DataArgs {
     /// Loads and prepares the test: the data, the choices and the fit data.
     pub fn prepare(&self) -> Result<(StepTest, Experiment, FitData), CliError> {
-        let text = |c: &Option<String>| c.clone().unwrap_or_default();
-        let options = LoadOptions::from_text(
-            &text(&self.time_col),
-            &text(&self.y_col),
-            &text(&self.u_col),
-            self.ts,
-            self.skip_rows,
-        );
-        let test = data::load_file(&self.file, &options).map_err(|error| CliError::Data {
-            path: self.file.display().to_string(),
-            error,
-        })?;
+        let test = self.read()?;
         let mut experiment = if self.single_step {
             Experiment::single_step(&test, self.t0, self.du, self.initial_input)?
         } else {
@@ -199,6 +188,45 @@ impl DataArgs {
         experiment.filter_hz = self.filter;
         let fit_data = experiment.fit_data(&test)?;
         Ok((test, experiment, fit_data))
+    }
+}
+
+impl DataArgs {
+    /// The file as loaded, before any window or filter.
+    pub fn read(&self) -> Result<StepTest, CliError> {
+        let text = |c: &Option<String>| c.clone().unwrap_or_default();
+        let options = LoadOptions::from_text(
+            &text(&self.time_col),
+            &text(&self.y_col),
+            &text(&self.u_col),
+            self.ts,
+            self.skip_rows,
+        );
+        data::load_file(&self.file, &options).map_err(|error| CliError::Data {
+            path: self.file.display().to_string(),
+            error,
+        })
+    }
+
+    /// The samples as they are, windowed and with the output filtered as `--window` and
+    /// `--filter` say: for the methods that read the input column itself (ARX, RLS).
+    pub fn samples(&self) -> Result<StepTest, CliError> {
+        let mut test = self.read()?;
+        if let Some(window) = self.window.as_deref() {
+            let (start, end) = parse_window(window)?;
+            test = crate::ident::prepare::apply_window(
+                &test,
+                crate::ident::prepare::Window::Time { start, end },
+            )
+            .map_err(ExperimentError::from)?;
+        }
+        if let Some(fc) = self.filter {
+            let ts = crate::ident::prepare::sampling_period(&test.time).unwrap_or(1.0);
+            let filter =
+                crate::ident::prepare::Ewma::try_new(fc, ts).map_err(ExperimentError::from)?;
+            test.output = filter.apply(&test.output);
+        }
+        Ok(test)
     }
 }
 

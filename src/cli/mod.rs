@@ -13,9 +13,13 @@ use std::io::{self, BufRead, BufWriter, Write};
 use std::process::ExitCode;
 
 pub mod approx;
+pub mod arx;
 pub mod diagnose;
+pub mod discrete;
 pub mod fit;
 pub mod loop_cmd;
+pub mod prbs;
+pub mod rls;
 
 use clap::{Args, Parser, Subcommand};
 use serde::{Deserialize, Serialize};
@@ -77,6 +81,16 @@ pub enum Command {
     Pade(approx::PadeArgs),
     /// Unity-feedback loop around Kp·G(s): closed loop, gain for specs, error constants, root locus.
     Loop(loop_cmd::LoopArgs),
+    /// Least squares on the samples: an ARX model (na, nb, nk), its parameters and errors.
+    Arx(arx::ArxArgs),
+    /// Recursive least squares on the samples, with the parameter trajectory.
+    Rls(rls::RlsArgs),
+    /// A PRBS test signal (as MATLAB's idinput), and a model's response to it.
+    Prbs(prbs::PrbsArgs),
+    /// Zero-order-hold discretisation of a system with its dead time.
+    C2d(discrete::C2dArgs),
+    /// Back from a discrete model B/A·z^−nk to G(s) with its dead time.
+    D2c(discrete::D2cArgs),
 }
 
 const STEP_EXAMPLES: &str = "\
@@ -535,6 +549,11 @@ pub fn main() -> ExitCode {
         Some(Command::Approx(args)) => approx::finish(approx::run_approx(&args, lang), lang),
         Some(Command::Pade(args)) => approx::finish(approx::run_pade(&args, lang), lang),
         Some(Command::Loop(args)) => loop_cmd::main(&args, lang),
+        Some(Command::Arx(args)) => arx::finish(arx::run_arx(&args, lang), lang),
+        Some(Command::Rls(args)) => arx::finish(rls::run_rls(&args, lang), lang),
+        Some(Command::Prbs(args)) => arx::finish(prbs::run_prbs(&args, lang), lang),
+        Some(Command::C2d(args)) => arx::finish(discrete::run_c2d(&args, lang), lang),
+        Some(Command::D2c(args)) => arx::finish(discrete::run_d2c(&args, lang), lang),
     }
 }
 

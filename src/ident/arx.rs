@@ -212,7 +212,11 @@ pub fn fit_percent(y: &[f64], yhat: &[f64]) -> f64 {
         return f64::NAN;
     }
     let mean = y[..n].iter().sum::<f64>() / n as f64;
-    let spread = y[..n].iter().map(|v| (v - mean).powi(2)).sum::<f64>().sqrt();
+    let spread = y[..n]
+        .iter()
+        .map(|v| (v - mean).powi(2))
+        .sum::<f64>()
+        .sqrt();
     let miss = y[..n]
         .iter()
         .zip(&yhat[..n])
@@ -449,7 +453,10 @@ pub fn arx_regression(
     if offset == Offset::Constant {
         regressors.push(Regressor::Constant);
     }
-    Ok((regression(&du, &dy, &regressors, Start::FirstFullRow)?, (u0, y0)))
+    Ok((
+        regression(&du, &dy, &regressors, Start::FirstFullRow)?,
+        (u0, y0),
+    ))
 }
 
 /// Fits an ARX model of `orders` to the record (`time` in s, `u`, `y`), Φ starting at the
@@ -557,11 +564,17 @@ mod tests {
         let (u, y) = ([0.0, 1.0, 2.0], [0.0, 0.9, 2.1]);
         let solve = |r: &[Regressor]| least_squares(&regression(&u, &y, r, Start::Zeros).unwrap());
         let c = solve(&[Regressor::Constant]).unwrap();
-        assert!((c.theta[0] - 1.0).abs() < 1e-14 && (c.j - 2.2).abs() < 1e-13);
+        // The notes print J = 2.2: 1² + 0.1² + 1.1² = 2.22, rounded to two digits.
+        assert!((c.theta[0] - 1.0).abs() < 1e-14 && (c.j - 2.22).abs() < 1e-13);
         let l = solve(&[Regressor::Constant, Regressor::Input(0)]).unwrap();
         assert!((l.theta[0] + 0.05).abs() < 1e-14 && (l.theta[1] - 1.05).abs() < 1e-14);
         assert!((l.j - 0.015).abs() < 1e-14);
-        let t = solve(&[Regressor::Constant, Regressor::Input(0), Regressor::Input(1)]).unwrap();
+        let t = solve(&[
+            Regressor::Constant,
+            Regressor::Input(0),
+            Regressor::Input(1),
+        ])
+        .unwrap();
         for (got, want) in t.theta.iter().zip([0.0, 0.9, 0.3]) {
             assert!((got - want).abs() < 1e-14, "{got} vs {want}");
         }
@@ -573,7 +586,12 @@ mod tests {
     fn collinear_regressors_are_refused() {
         let u = [1.0, 2.0, 3.0, 4.0];
         let y = [0.5, 1.0, 1.5, 2.1];
-        let r = regression(&u, &y, &[Regressor::Input(0), Regressor::Input(0)], Start::Zeros);
+        let r = regression(
+            &u,
+            &y,
+            &[Regressor::Input(0), Regressor::Input(0)],
+            Start::Zeros,
+        );
         assert_eq!(
             least_squares(&r.unwrap()),
             Err(LsqError::Singular { index: 1 })

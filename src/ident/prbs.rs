@@ -113,7 +113,12 @@ impl Prbs {
     }
 
     /// The shortest register whose period ((2ⁿ − 1)·clock samples) covers `samples`.
-    pub fn for_length(samples: usize, clock: usize, low: f64, high: f64) -> Result<Self, PrbsError> {
+    pub fn for_length(
+        samples: usize,
+        clock: usize,
+        low: f64,
+        high: f64,
+    ) -> Result<Self, PrbsError> {
         if samples == 0 || samples > MAX_SAMPLES {
             return Err(PrbsError::BadLength(samples));
         }

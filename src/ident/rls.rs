@@ -18,8 +18,7 @@ use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
 use super::arx::{
-    ArxModel, ArxOrders, LsqError, Offset, Regression, Scores, arx_regression,
-    sampling_period,
+    ArxModel, ArxOrders, LsqError, Offset, Regression, Scores, arx_regression, sampling_period,
 };
 
 /// The settings of a recursive estimate.
@@ -120,6 +119,8 @@ pub struct RlsRun {
     pub errors: Vec<f64>,
     /// θ_N.
     pub last: Vec<f64>,
+    /// P_N (at λ = 1 and a large α, (ΦᵀΦ)⁻¹: σ̂²·P_N is the covariance of θ̂).
+    pub covariance: DMatrix<f64>,
 }
 
 /// Runs RLS through the rows of `reg` in order.
@@ -139,6 +140,7 @@ pub fn run(reg: &Regression, options: &RlsOptions) -> Result<RlsRun, LsqError> {
         trajectory,
         errors,
         last: rls.theta().to_vec(),
+        covariance: rls.p,
     })
 }
 
@@ -190,7 +192,9 @@ mod tests {
         let u: Vec<f64> = (0..n).map(|k| ((k * 7919) % 13) as f64 - 6.0).collect();
         let mut y = vec![0.0; n];
         for k in 2..n {
-            y[k] = 1.2 * y[k - 1] - 0.4 * y[k - 2] + 0.3 * u[k - 1] + 0.1 * u[k - 2]
+            y[k] = 1.2 * y[k - 1] - 0.4 * y[k - 2]
+                + 0.3 * u[k - 1]
+                + 0.1 * u[k - 2]
                 + 0.01 * (((k * 31) % 7) as f64 - 3.0);
         }
         let orders = ArxOrders::new(2, 2, 1);

@@ -196,9 +196,9 @@ pub fn validate_continuous(
     let report = experiment
         .fit_prepared(&estimation, code, false, &[], options, &mut ())
         .map_err(ValidationError::Fit)?;
-    let residuals = report
-        .residuals(data)
-        .map_err(|e| ValidationError::Fit(ExperimentError::from(super::fit::FitError::BadGuess(e))))?;
+    let residuals = report.residuals(data).map_err(|e| {
+        ValidationError::Fit(ExperimentError::from(super::fit::FitError::BadGuess(e)))
+    })?;
     let score = |range: std::ops::Range<usize>| {
         let yhat: Vec<f64> = data.y[range.clone()]
             .iter()

@@ -172,7 +172,7 @@ impl DiscreteTf {
         let mut num_z = self.b.clone();
         num_z.resize(na, 0.0);
         let h = self.ts;
-        let sp: Vec<C64> = zp.iter().map(|z| z.ln() / h).collect();
+        let sp: Vec<C64> = zp.iter().map(|&z| continuous_pole(z, h)).collect();
         let residues: Vec<C64> = zp
             .iter()
             .zip(&sp)
@@ -191,7 +191,7 @@ impl DiscreteTf {
                 }
             })
             .collect();
-        let num = numerator_from_residues(&sp, &residues);
+        let num = trim_rounding(&numerator_from_residues(&sp, &residues), &sp, h);
         let den = poly::poly_from_roots(&sp);
         let tf = TransferFunction::from_coeffs(&num, &den)?;
         Ok(tf.with_delay((self.nk.saturating_sub(1)) as f64 * h)?)
@@ -203,7 +203,7 @@ impl DiscreteTf {
         let pole = -self.a[1];
         check_poles(&[C64::new(pole, 0.0)])?;
         let k = self.dc_gain();
-        let s = pole.ln() / h;
+        let s = continuous_pole(C64::new(pole, 0.0), h).re;
         let (b1, b2) = (self.b[0], self.b[1]);
         let tf = if s == 0.0 {
             // An integrator K/s: b1 = K(h − L), b2 = K·L.
@@ -222,13 +222,49 @@ impl DiscreteTf {
     }
 }
 
+/// Within this of z = 1 a pole is the integrator's, s = 0 (1e-12·h is rounding, not a time
+/// constant of 10¹² samples).
+const AT_ONE: f64 = 1e-12;
+
+/// s = ln(z)/h, exactly 0 for z within [`AT_ONE`] of 1.
+fn continuous_pole(z: C64, h: f64) -> C64 {
+    if (z - 1.0).norm() <= AT_ONE {
+        C64::new(0.0, 0.0)
+    } else {
+        z.ln() / h
+    }
+}
+
+/// Leading coefficients of N(s) (descending powers) that are rounding: |nⱼ|·ωʲ below 1e-9
+/// of the largest such term, ω the largest |pole| (1/h without one), so that a
+/// relative degree above 1 does not come back with a zero at 10¹⁵.
+fn trim_rounding(num: &[f64], poles: &[C64], h: f64) -> Vec<f64> {
+    let omega = poles.iter().map(|p| p.norm()).fold(0.0f64, f64::max);
+    let omega = if omega > 0.0 { omega } else { 1.0 / h };
+    let degree = num.len().saturating_sub(1);
+    let weighted: Vec<f64> = num
+        .iter()
+        .enumerate()
+        .map(|(j, c)| c.abs() * omega.powi((degree - j) as i32))
+        .collect();
+    let largest = weighted.iter().fold(0.0f64, |m, &x| m.max(x));
+    let first = weighted
+        .iter()
+        .position(|&w| w > 1e-9 * largest)
+        .unwrap_or(degree);
+    num[first..].to_vec()
+}
+
 /// Refuses poles with no continuous image, or repeated ones.
 fn check_poles(zp: &[C64]) -> Result<(), DiscreteError> {
     for (i, &z) in zp.iter().enumerate() {
         if z.norm() == 0.0 || (z.im == 0.0 && z.re < 0.0) {
             return Err(DiscreteError::NoContinuousPole { pole: z });
         }
-        if zp[..i].iter().any(|&w| (z - w).norm() <= 1e-8 * z.norm().max(1.0)) {
+        if zp[..i]
+            .iter()
+            .any(|&w| (z - w).norm() <= 1e-8 * z.norm().max(1.0))
+        {
             return Err(DiscreteError::RepeatedPoles { pole: z });
         }
     }
@@ -300,12 +336,7 @@ pub fn c2d(tf: &TransferFunction, ts: f64) -> Result<DiscreteTf, DiscreteError> 
     }
     let first = c.iter().position(|&x| x != 0.0).unwrap_or(0);
     let last = c.iter().rposition(|&x| x != 0.0).unwrap_or(first);
-    DiscreteTf::new(
-        a,
-        c[first..=last].to_vec(),
-        first + whole as usize,
-        ts,
-    )
+    DiscreteTf::new(a, c[first..=last].to_vec(), first + whole as usize, ts)
 }
 
 /// The notes' closed ZOH formulas for K·e^{−θs}/(τs + 1) at period h (s): a1 = −e^{−h/τ},

@@ -3,6 +3,7 @@
 //! in English and Brazilian Portuguese with the notes' terms (mínimos quadrados, regressores,
 //! função custo, estimador recursivo, fator de esquecimento, sinal PRBS, validação, …).
 
+use crate::cli::arx::LsqCliError;
 use crate::ident::arx::{LsqError, Regressor};
 use crate::ident::prbs::{MAX_ORDER, MIN_ORDER, PrbsError};
 use crate::ident::validation::{MIN_PART, ValidationError};
@@ -253,6 +254,27 @@ impl Localize for PrbsError {
     }
 }
 
+impl Localize for LsqCliError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            LsqCliError::Cli(e) => e.text(lang),
+            LsqCliError::NoInput => lang
+                .pick(
+                    "the file has no input column: least squares needs u(k) (give it with --u-col)",
+                    "o arquivo não tem coluna de entrada: mínimos quadrados precisam de u(k) (indique-a com --u-col)",
+                )
+                .into(),
+            LsqCliError::Levels(text) => lang.pick(
+                format!("--levels \"{text}\" must be two numbers, low then high, e.g. 0,1"),
+                format!("--levels \"{text}\" deve ter dois números, o baixo e o alto, p. ex. 0,1"),
+            ),
+            LsqCliError::Lsq(e) => e.text(lang),
+            LsqCliError::Discrete(e) => e.text(lang),
+            LsqCliError::Prbs(e) => e.text(lang),
+        }
+    }
+}
+
 impl Localize for ValidationError {
     fn text(&self, lang: Lang) -> String {
         match self {
@@ -305,13 +327,19 @@ pub fn messages() -> Vec<Message> {
         PrbsError::BadLength(0),
         PrbsError::BadSimulation,
     ];
-    all.extend(lsq.iter().map(|e| Message::of(format!("lsq::LsqError::{e:?}"), e)));
+    all.extend(
+        lsq.iter()
+            .map(|e| Message::of(format!("lsq::LsqError::{e:?}"), e)),
+    );
     all.extend(
         discrete
             .iter()
             .map(|e| Message::of(format!("lsq::DiscreteError::{e:?}"), e)),
     );
-    all.extend(prbs.iter().map(|e| Message::of(format!("lsq::PrbsError::{e:?}"), e)));
+    all.extend(
+        prbs.iter()
+            .map(|e| Message::of(format!("lsq::PrbsError::{e:?}"), e)),
+    );
     all
 }
 
