@@ -68,7 +68,10 @@ fn arx_on_the_tclab_record_shows_theta_and_both_fit_percents() {
     let app = h.state();
     let s = app.lsq.samples.as_ref().expect("the record is taken in");
     assert!(s.y.len() > 790, "{} samples", s.y.len());
-    let r = app.lsq.arx_fit().expect("the ARX orders are fitted on load");
+    let r = app
+        .lsq
+        .arx_fit()
+        .expect("the ARX orders are fitted on load");
     assert_eq!(r.fit.model.orders, ArxOrders::new(1, 1, 1));
     let (u0, y0) = operating_point(&s.time, &s.u, &s.y, r.fit.offset);
     let want = first_order_by_hand(&s.u, &s.y, u0, y0);
@@ -88,14 +91,20 @@ fn arx_on_the_tclab_record_shows_theta_and_both_fit_percents() {
     );
     // (each also in the AIC table's row of these orders)
     for x in [p, sim] {
-        assert!(h.query_all_by_label(&format!("{x:.1} %")).count() >= 1, "{x}");
+        assert!(
+            h.query_all_by_label(&format!("{x:.1} %")).count() >= 1,
+            "{x}"
+        );
     }
     assert!(p > sim && p > 90.0, "prediction {p} %, simulation {sim} %");
     h.get_by_label("Fit % (one-step prediction)");
     h.get_by_label("Fit % (free simulation)");
     h.get_by_label_contains("One-step prediction: each ŷ(k) from the measured past outputs");
     // Φ as the notes write it, and the ARX model's G(s) with its dead time.
-    assert!(h.query_all_by_label("−y(k−1)").count() >= 2, "θ table and Φ header");
+    assert!(
+        h.query_all_by_label("−y(k−1)").count() >= 2,
+        "θ table and Φ header"
+    );
     h.get_by_label_contains("G(s) = ");
 }
 
@@ -112,7 +121,10 @@ fn the_notes_three_sample_example_with_its_regressors() {
         assert!(h.query_all_by_label(regressor).count() >= 1, "{regressor}");
     }
     // (the models are also named in the table and the legend: the first is the selector)
-    h.get_all_by_label("y(k) = θ0 + θ1·u(k)").next().unwrap().click();
+    h.get_all_by_label("y(k) = θ0 + θ1·u(k)")
+        .next()
+        .unwrap()
+        .click();
     h.run_steps(2);
     h.get_by_label("θ = [-0.05, 1.05]");
     h.get_by_label("Cost J = Σe(k)² = 0.015");
@@ -135,7 +147,10 @@ fn rls_animates_to_the_batch_solution() {
         _ => panic!("no animation"),
     };
     let (partway, rows) = taken(&h);
-    assert!(partway > 0 && partway < rows, "{partway} of {rows} after 5 frames");
+    assert!(
+        partway > 0 && partway < rows,
+        "{partway} of {rows} after 5 frames"
+    );
     assert!(h.state().lsq.is_running());
     let mut frames = 0;
     while h.state().lsq.is_running() {
@@ -201,7 +216,11 @@ fn a_prbs_test_is_exported_and_used_as_the_record_and_arx_recovers_its_model() {
     h.run_steps(2);
     let fit = &h.state().lsq.arx_fit().unwrap().fit;
     let pole = (-1.0f64 / 20.0).exp();
-    assert!((fit.lsq.theta[0] + pole).abs() < 1e-9, "{:?}", fit.lsq.theta);
+    assert!(
+        (fit.lsq.theta[0] + pole).abs() < 1e-9,
+        "{:?}",
+        fit.lsq.theta
+    );
     assert!((fit.lsq.theta[1] - 2.0 * (1.0 - pole)).abs() < 1e-9);
 }
 
@@ -222,7 +241,10 @@ fn validation_shows_both_parts_and_the_split() {
         arx.estimation.fit_percent_simulation,
         arx.validation.fit_percent_simulation,
     ] {
-        assert!(h.query_all_by_label(&format!("{x:.1} %")).count() >= 1, "{x}");
+        assert!(
+            h.query_all_by_label(&format!("{x:.1} %")).count() >= 1,
+            "{x}"
+        );
     }
     h.get_by_label("ARX model — prediction");
     h.get_by_label("RLS (final θ) — simulation");
@@ -246,7 +268,11 @@ fn the_advisor_reads_the_notes_rules_with_the_record_numbers() {
     h.get_by_label("Sampling advisor").click();
     h.run_steps(2);
     let app = h.state();
-    let a = app.lsq.advice.as_ref().expect("the guess gives time scales");
+    let a = app
+        .lsq
+        .advice
+        .as_ref()
+        .expect("the guess gives time scales");
     assert!(!a.fitted);
     assert_eq!(a.h, 1.0);
     let tau = a.scales.time_constants[0];

@@ -7,8 +7,8 @@
 //! record plays in about [`FRAMES`] frames; Step takes one row, Reset starts again.
 
 use crate::ident::arx::{
-    ArxModel, ArxOrders, LeastSquares, LsqError, Offset, Regression, arx_regression,
-    least_squares, sampling_period,
+    ArxModel, ArxOrders, LeastSquares, LsqError, Offset, Regression, arx_regression, least_squares,
+    sampling_period,
 };
 use crate::ident::rls::{Rls, RlsOptions};
 
@@ -148,7 +148,9 @@ mod tests {
             .collect();
         let mut y = vec![80.0; n];
         for k in 2..n {
-            y[k] = 80.0 + 0.9 * (y[k - 1] - 80.0) + 0.25 * (u[k - 1] - 40.0)
+            y[k] = 80.0
+                + 0.9 * (y[k - 1] - 80.0)
+                + 0.25 * (u[k - 1] - 40.0)
                 + 0.02 * (((k * 37) % 11) as f64 - 5.0);
         }
         let samples = Samples { time, u, y };

@@ -31,7 +31,10 @@ pub fn panel(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>
     orders(ui, session.orders, look, out);
     offset(ui, session.offset, look, out);
     if ui
-        .add_enabled(session.samples.is_some(), egui::Button::new(Phrase::Fit.get(lang)))
+        .add_enabled(
+            session.samples.is_some(),
+            egui::Button::new(Phrase::Fit.get(lang)),
+        )
         .clicked()
     {
         out.push(Command::Fit);
@@ -93,30 +96,39 @@ fn results(ui: &mut Ui, session: &Session, r: &ArxResult, look: &Look, out: &mut
     let lang = look.lang;
     let fit = &r.fit;
     heading(ui, Phrase::Estimate.get(lang));
-    parameter_table(ui, &fit.regression, &fit.lsq.theta, &fit.lsq.se, fit.model.orders.nk, look);
-    egui::Grid::new("arx figures").num_columns(2).show(ui, |ui| {
-        ui.label(Phrase::Cost.get(lang));
-        ui.label(words::num(fit.lsq.j, lang));
-        ui.end_row();
-        ui.label(L::Rows.get(lang));
-        ui.label(fit.regression.y.len().to_string());
-        ui.end_row();
-        ui.label(L::Aic.get(lang));
-        ui.label(words::num(fit.aic, lang));
-        ui.end_row();
-        ui.label(L::SamplingPeriod.get(lang));
-        ui.label(words::num(fit.model.ts, lang));
-        ui.end_row();
-        if fit.offset == Offset::Initial {
-            ui.label(L::OperatingPoint.get(lang));
-            ui.label(format!(
-                "({}, {})",
-                words::num(fit.model.u0, lang),
-                words::num(fit.model.y0, lang)
-            ));
+    parameter_table(
+        ui,
+        &fit.regression,
+        &fit.lsq.theta,
+        &fit.lsq.se,
+        fit.model.orders.nk,
+        look,
+    );
+    egui::Grid::new("arx figures")
+        .num_columns(2)
+        .show(ui, |ui| {
+            ui.label(Phrase::Cost.get(lang));
+            ui.label(words::num(fit.lsq.j, lang));
             ui.end_row();
-        }
-    });
+            ui.label(L::Rows.get(lang));
+            ui.label(fit.regression.y.len().to_string());
+            ui.end_row();
+            ui.label(L::Aic.get(lang));
+            ui.label(words::num(fit.aic, lang));
+            ui.end_row();
+            ui.label(L::SamplingPeriod.get(lang));
+            ui.label(words::num(fit.model.ts, lang));
+            ui.end_row();
+            if fit.offset == Offset::Initial {
+                ui.label(L::OperatingPoint.get(lang));
+                ui.label(format!(
+                    "({}, {})",
+                    words::num(fit.model.u0, lang),
+                    words::num(fit.model.y0, lang)
+                ));
+                ui.end_row();
+            }
+        });
     heading(ui, Phrase::TwoFits.get(lang));
     egui::Grid::new("arx fit percent")
         .striped(true)
@@ -184,10 +196,10 @@ fn continuous(ui: &mut Ui, session: &Session, look: &Look) {
                     crate::text::approx::formula(&tf, lang)
                 ));
             }
-            ui.label(Phrase::ContinuousFitPercent.with(
-                lang,
-                &[words::percent(fit_percent(&s.y, yhat), lang)],
-            ));
+            ui.label(
+                Phrase::ContinuousFitPercent
+                    .with(lang, &[words::percent(fit_percent(&s.y, yhat), lang)]),
+            );
         }
         _ => note(ui, look, Phrase::NoContinuousFit.get(lang)),
     }
@@ -287,39 +299,41 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
     let Some(s) = &session.samples else { return };
     ui.label(Phrase::ArxPlot.get(lang));
     let fit = session.arx_fit().map(|r| &r.fit);
-    words::time_plot("arx plot", ui.available_height())
-        .show(ui, |plot| {
-            plot.points(
-                Points::new(Phrase::Measured.get(lang), words::pairs(&s.time, &s.y))
-                    .color(palette.data)
-                    .radius(2.0),
+    words::time_plot("arx plot", ui.available_height()).show(ui, |plot| {
+        plot.points(
+            Points::new(Phrase::Measured.get(lang), words::pairs(&s.time, &s.y))
+                .color(palette.data)
+                .radius(2.0),
+        );
+        if let Some(f) = fit {
+            let from = f.scores.from;
+            plot.line(
+                Line::new(
+                    Phrase::Prediction.get(lang),
+                    words::pairs(&s.time[from..], &f.scores.prediction[from..]),
+                )
+                .color(palette.main)
+                .width(1.5),
             );
-            if let Some(f) = fit {
-                let from = f.scores.from;
-                plot.line(
-                    Line::new(
-                        Phrase::Prediction.get(lang),
-                        words::pairs(&s.time[from..], &f.scores.prediction[from..]),
-                    )
-                    .color(palette.main)
-                    .width(1.5),
-                );
-                plot.line(
-                    Line::new(
-                        Phrase::Simulation.get(lang),
-                        words::pairs(&s.time[from..], &f.scores.simulation[from..]),
-                    )
-                    .color(palette.model)
-                    .width(2.0),
-                );
-            }
-            if let Some((_, yhat)) = &session.continuous {
-                plot.line(
-                    Line::new(Phrase::ContinuousCurve.get(lang), words::pairs(&s.time, yhat))
-                        .color(palette.compare)
-                        .width(1.5)
-                        .style(egui_plot::LineStyle::dashed_loose()),
-                );
-            }
-        });
+            plot.line(
+                Line::new(
+                    Phrase::Simulation.get(lang),
+                    words::pairs(&s.time[from..], &f.scores.simulation[from..]),
+                )
+                .color(palette.model)
+                .width(2.0),
+            );
+        }
+        if let Some((_, yhat)) = &session.continuous {
+            plot.line(
+                Line::new(
+                    Phrase::ContinuousCurve.get(lang),
+                    words::pairs(&s.time, yhat),
+                )
+                .color(palette.compare)
+                .width(1.5)
+                .style(egui_plot::LineStyle::dashed_loose()),
+            );
+        }
+    });
 }

@@ -124,7 +124,11 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
                 };
                 let theta = nalgebra::DVector::from_column_slice(&l.theta);
                 let yhat = &r.phi * theta;
-                let width = if fit.model == session.example { 2.5 } else { 1.0 };
+                let width = if fit.model == session.example {
+                    2.5
+                } else {
+                    1.0
+                };
                 plot.line(
                     Line::new(equation(fit.model), words::pairs(&k, yhat.as_slice()))
                         .color(colour)

@@ -91,12 +91,21 @@ fn count(ui: &mut Ui, label: &str, value: usize, min: f64, max: f64, look: &Look
 
 /// A number field within `limits`.
 fn number(ui: &mut Ui, label: &str, value: f64, limits: Limits, look: &Look) -> Option<f64> {
-    NumberField::new(label, value).limits(limits).show(ui, look.lang)
+    NumberField::new(label, value)
+        .limits(limits)
+        .show(ui, look.lang)
 }
 
 fn signal_fields(ui: &mut Ui, s: &mut PrbsSettings, look: &Look) {
     let lang = look.lang;
-    if let Some(v) = count(ui, Phrase::Length.get(lang), s.samples, 3.0, MAX_SAMPLES, look) {
+    if let Some(v) = count(
+        ui,
+        Phrase::Length.get(lang),
+        s.samples,
+        3.0,
+        MAX_SAMPLES,
+        look,
+    ) {
         s.samples = v;
     }
     if let Some(v) = count(ui, L::Clock.get(lang), s.clock, 1.0, 10_000.0, look) {
@@ -122,16 +131,19 @@ fn signal_fields(ui: &mut Ui, s: &mut PrbsSettings, look: &Look) {
     }
 }
 
-fn model_fields(
-    ui: &mut Ui,
-    s: &mut PrbsSettings,
-    design: Option<&TransferFunction>,
-    look: &Look,
-) {
+fn model_fields(ui: &mut Ui, s: &mut PrbsSettings, design: Option<&TransferFunction>, look: &Look) {
     let lang = look.lang;
     ui.horizontal_wrapped(|ui| {
-        ui.selectable_value(&mut s.source, ModelSource::Procest, Phrase::FromCode.get(lang));
-        ui.selectable_value(&mut s.source, ModelSource::Design, Phrase::FromDesign.get(lang));
+        ui.selectable_value(
+            &mut s.source,
+            ModelSource::Procest,
+            Phrase::FromCode.get(lang),
+        );
+        ui.selectable_value(
+            &mut s.source,
+            ModelSource::Design,
+            Phrase::FromDesign.get(lang),
+        );
     });
     match s.source {
         ModelSource::Procest => {
@@ -162,7 +174,13 @@ fn model_fields(
         max: 100.0,
         why: None,
     };
-    if let Some(v) = number(ui, Phrase::NoisePercent.get(lang), s.noise_percent, percent, look) {
+    if let Some(v) = number(
+        ui,
+        Phrase::NoisePercent.get(lang),
+        s.noise_percent,
+        percent,
+        look,
+    ) {
         s.noise_percent = v;
     }
     if let Some(v) = count(ui, Phrase::Seed.get(lang), s.seed as usize, 0.0, 1e12, look) {

@@ -74,10 +74,7 @@ fn buttons(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) 
 /// Where the run is: k, e_k, θ_k and the batch θ.
 fn state(ui: &mut Ui, a: &Animation, look: &Look) {
     let lang = look.lang;
-    ui.label(Phrase::RlsProgress.with(
-        lang,
-        &[a.taken().to_string(), a.rows().to_string()],
-    ));
+    ui.label(Phrase::RlsProgress.with(lang, &[a.taken().to_string(), a.rows().to_string()]));
     if let (Some(k), Some(e)) = (a.last_sample(), a.errors.last()) {
         ui.label(format!("k = {k}, e_k = {}", words::num(*e, lang)));
     }

@@ -19,9 +19,7 @@ use crate::ident::data::StepTest;
 use crate::ident::fit::{FitData, FitOptions};
 use crate::ident::models::Model;
 use crate::ident::rls::RlsOptions;
-use crate::ident::validation::{
-    self, ArxValidation, ContinuousValidation, Split, ValidationError,
-};
+use crate::ident::validation::{self, ArxValidation, ContinuousValidation, Split, ValidationError};
 use crate::lti::TransferFunction;
 use crate::lti::discrete::DiscreteError;
 
@@ -50,7 +48,10 @@ impl Samples {
     pub fn of(test: &StepTest, data: &FitData) -> Self {
         let n = data.times.len();
         let measured = test.input.as_ref().and_then(|u| {
-            let first = test.time.iter().position(|&t| Some(&t) == data.times.first())?;
+            let first = test
+                .time
+                .iter()
+                .position(|&t| Some(&t) == data.times.first())?;
             let rows = first..first + n;
             (test.time.get(rows.clone())? == data.times.as_slice()).then(|| u[rows].to_vec())
         });
@@ -112,7 +113,10 @@ pub fn solve_example(model: ExampleModel) -> ExampleFit {
         &example_regressors(model),
         Start::Zeros,
     );
-    let lsq = regression.as_ref().map_err(Clone::clone).and_then(arx::least_squares);
+    let lsq = regression
+        .as_ref()
+        .map_err(Clone::clone)
+        .and_then(arx::least_squares);
     ExampleFit {
         model,
         regression,
@@ -133,7 +137,10 @@ pub struct Validation {
 #[derive(Debug, Clone, PartialEq)]
 pub enum ExportNote {
     Saved(String),
-    Failed { path: String, reason: String },
+    Failed {
+        path: String,
+        reason: String,
+    },
     /// The record was handed to the Identify mode.
     Used,
 }
@@ -216,9 +223,7 @@ impl Session {
         if data != self.source.as_ref() {
             self.source = data.cloned();
             self.advice = None;
-            self.samples = loaded
-                .zip(data)
-                .map(|(l, d)| Samples::of(&l.test, d));
+            self.samples = loaded.zip(data).map(|(l, d)| Samples::of(&l.test, d));
             self.continuous = None;
             self.record_changed();
         }
@@ -439,16 +444,8 @@ impl Session {
         let (o, offset, split) = (self.orders, self.offset, self.split);
         self.validation = Some(Validation {
             arx: validation::validate_arx(&s.time, &s.u, &s.y, o, offset, split).map(|v| v.1),
-            rls: validation::validate_rls(
-                &s.time,
-                &s.u,
-                &s.y,
-                o,
-                offset,
-                &self.rls_options,
-                split,
-            )
-            .map(|v| v.1),
+            rls: validation::validate_rls(&s.time, &s.u, &s.y, o, offset, &self.rls_options, split)
+                .map(|v| v.1),
             split: validation::split_index(&s.time, split),
         });
     }

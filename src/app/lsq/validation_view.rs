@@ -131,12 +131,20 @@ fn arx_rows(
             ui.end_row();
         }
         Ok(v) => {
-            ui.label(format!("{} — {}", name.get(lang), Phrase::PredictionShort.get(lang)));
+            ui.label(format!(
+                "{} — {}",
+                name.get(lang),
+                Phrase::PredictionShort.get(lang)
+            ));
             ui.label(words::percent(v.estimation.fit_percent_prediction, lang));
             ui.label(words::percent(v.validation.fit_percent_prediction, lang));
             checks(ui, &v.residuals, look);
             ui.end_row();
-            ui.label(format!("{} — {}", name.get(lang), Phrase::SimulationShort.get(lang)));
+            ui.label(format!(
+                "{} — {}",
+                name.get(lang),
+                Phrase::SimulationShort.get(lang)
+            ));
             ui.label(words::percent(v.estimation.fit_percent_simulation, lang));
             ui.label(words::percent(v.validation.fit_percent_simulation, lang));
             for _ in 0..4 {
