@@ -157,7 +157,7 @@ mod tests {
         let mut a = Animation::new(
             &samples,
             ArxOrders::new(1, 1, 1),
-            Offset::Constant,
+            Offset::Initial,
             &RlsOptions::default(),
         )
         .unwrap();

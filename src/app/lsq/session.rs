@@ -53,7 +53,8 @@ impl Samples {
                 .iter()
                 .position(|&t| Some(&t) == data.times.first())?;
             let rows = first..first + n;
-            (test.time.get(rows.clone())? == data.times.as_slice()).then(|| u[rows].to_vec())
+            let same = test.time.get(rows.clone())? == data.times.as_slice();
+            u.get(rows).filter(|_| same).map(<[f64]>::to_vec)
         });
         Self {
             u: measured.unwrap_or_else(|| {
