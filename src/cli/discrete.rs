@@ -36,8 +36,7 @@ pub struct C2dArgs {
 /// `degrau d2c` options.
 #[derive(Debug, Clone, Args)]
 #[command(after_help = "Examples:
-  degrau d2c --num 0.1813,0.0952 --den 1,-0.9048 --nk 3 --ts 0.5
-  degrau d2c --num 0.0175,0.0153 --den 1,-1.6375,0.6703 --nk 1 --ts 0.1 --json")]
+  degrau d2c --num 0.0784211,0.111904 --den 1,-0.904837 --nk 3 --ts 0.5 --json")]
 pub struct D2cArgs {
     /// B: b1, b2, … (coefficients of z⁰, z⁻¹, … after the delay).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]

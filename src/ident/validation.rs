@@ -117,7 +117,7 @@ pub fn validate_arx(
     offset: Offset,
     split: Split,
 ) -> Result<(ArxFit, ArxValidation), LsqError> {
-    let (time, u, y) = same_length(time, u, y)?;
+    same_length(time, u, y)?;
     let s = split_index(time, split)?;
     let fit = arx(&time[..s], &u[..s], &y[..s], orders, offset)?;
     let v = score_arx(&fit.model, time, u, y, s);
@@ -134,26 +134,22 @@ pub fn validate_rls(
     options: &RlsOptions,
     split: Split,
 ) -> Result<(RlsFit, ArxValidation), LsqError> {
-    let (time, u, y) = same_length(time, u, y)?;
+    same_length(time, u, y)?;
     let s = split_index(time, split)?;
     let fit = rls_arx(&time[..s], &u[..s], &y[..s], orders, offset, options)?;
     let v = score_arx(&fit.model, time, u, y, s);
     Ok((fit, v))
 }
 
-/// The three columns, refused when they differ in length.
-fn same_length<'a>(
-    time: &'a [f64],
-    u: &'a [f64],
-    y: &'a [f64],
-) -> Result<(&'a [f64], &'a [f64], &'a [f64]), LsqError> {
+/// Refuses columns that differ in length.
+fn same_length(time: &[f64], u: &[f64], y: &[f64]) -> Result<(), LsqError> {
     if u.len() != y.len() || time.len() != y.len() {
         return Err(LsqError::LengthMismatch {
             u: u.len(),
             y: y.len(),
         });
     }
-    Ok((time, u, y))
+    Ok(())
 }
 
 /// The continuous fit estimated before the split and scored after it.
