@@ -21,6 +21,7 @@ pub mod grid;
 pub mod identify;
 pub mod job;
 pub mod look;
+pub mod lsq;
 pub mod persist;
 pub mod plot_span;
 
@@ -82,6 +83,8 @@ pub enum Mode {
     Design,
     /// Fit a process model to a measured step test.
     Identify,
+    /// Least squares on the samples: ARX, RLS, PRBS, validation.
+    LeastSquares,
 }
 
 /// What is kept between runs (the state file of [`persist`]). The Design mode's part is
@@ -137,6 +140,8 @@ pub struct DegrauApp {
     pub design: design::Session,
     /// The Identify mode's session (its settings are saved as `saved.ident`).
     pub ident: identify::Session,
+    /// The least-squares mode's session (on the Identify mode's record).
+    pub lsq: lsq::Session,
     /// Messages for the student (what could not be restored or saved), dismissable.
     pub notices: Vec<Notice>,
     export: ExportState,
@@ -233,6 +238,7 @@ impl DegrauApp {
             design: design::Session::new(&saved.design),
             saved,
             ident,
+            lsq: lsq::Session::default(),
             notices: Vec::new(),
             export: ExportState::default(),
             plot_rect: None,
@@ -318,6 +324,7 @@ impl DegrauApp {
         self.dropped_and_pasted(ui);
         match self.saved.mode {
             Mode::Identify => self.identify_frame(ui, &look),
+            Mode::LeastSquares => self.lsq_frame(ui, &look),
             Mode::Design => {
                 let shown = design::show(ui, &self.design, &self.saved.design, &look);
                 self.plot_rect = shown.plot_rect;
@@ -447,6 +454,11 @@ impl DegrauApp {
             let mut mode = self.saved.mode;
             ui.selectable_value(&mut mode, Mode::Design, T::ModeDesign.get(lang));
             ui.selectable_value(&mut mode, Mode::Identify, T::ModeIdentify.get(lang));
+            ui.selectable_value(
+                &mut mode,
+                Mode::LeastSquares,
+                crate::text::lsq_app::Phrase::ModeName.get(lang),
+            );
             if mode != self.saved.mode {
                 out.push(Command::SetMode(mode));
             }
@@ -631,6 +643,34 @@ impl DegrauApp {
         // differs from the last file).
         if self.ident.settings_to_save() != self.saved.ident {
             self.dirty = true;
+        }
+    }
+
+    /// The least-squares mode: the Identify mode's record and fit taken in, the background
+    /// validation polled and the RLS animation advanced (repaints asked only while it
+    /// runs), its views drawn, then their commands applied.
+    fn lsq_frame(&mut self, ui: &mut Ui, look: &Look) {
+        if !self.lsq.has_waker() {
+            let ctx = ui.ctx().clone();
+            self.lsq
+                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
+        }
+        if self.ident.poll() {
+            ui.ctx().request_repaint();
+        }
+        let design = self.design.analysis.tf.as_ref().ok();
+        self.lsq.sync(&self.ident, design);
+        if self.lsq.poll() | self.lsq.tick() {
+            ui.ctx().request_repaint();
+        }
+        for command in lsq::show(ui, &self.lsq, design, look) {
+            if let Some(lsq::Outcome::UseRecord(csv)) = self.lsq.apply(command, &self.ident, design)
+            {
+                self.ident.load_text(&csv);
+                self.lsq.sync(&self.ident, design);
+                self.dirty = true;
+            }
+            ui.ctx().request_repaint();
         }
     }
 

@@ -25,6 +25,7 @@ pub mod hand;
 pub mod ident;
 pub mod identify;
 pub mod lsq;
+pub mod lsq_app;
 pub mod lti;
 pub mod operating_point;
 pub mod report;
@@ -192,6 +193,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(lsq::messages());
     all.extend(hand::messages());
     all.extend(test_causes::messages());
+    all.extend(lsq_app::messages());
     all
 }
 
