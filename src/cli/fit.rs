@@ -14,7 +14,7 @@ use crate::ident::excitation::{Excitation, Hold};
 use crate::ident::experiment::{Drive, Experiment, ExperimentError, Offset, OperatingPoint};
 use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
 use crate::ident::models::{Param, Structure};
-use crate::ident::per_step::{StepFit, per_step_fits};
+use crate::ident::per_step::{MAX_PER_STEP, StepFit, per_step_fits};
 use crate::text::{Lang, Localize};
 
 use super::{CliError, finite_f64};
@@ -408,10 +408,6 @@ pub fn per_step_json(fits: &[StepFit]) -> Vec<FitJson> {
         })
         .collect()
 }
-
-/// The most changes a record may have for its per-step fits (each is a whole fit; a
-/// PRBS-like input has no step windows to compare).
-pub const MAX_PER_STEP: usize = 12;
 
 /// The per-step fits of `data` with `structure`, `None` when there are none to make (one
 /// change, or more than [`MAX_PER_STEP`]).

@@ -29,6 +29,10 @@ pub struct StepFit {
     pub fit: Result<FitReport, FitError>,
 }
 
+/// The most changes a record may have for its per-step fits (each is a whole fit; a
+/// PRBS-like input has no step windows to compare).
+pub const MAX_PER_STEP: usize = 12;
+
 /// The share of the stretch since the previous change a window keeps before its change.
 pub const BEFORE_SHARE: f64 = 1.0 / 3.0;
 

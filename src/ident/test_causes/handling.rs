@@ -5,7 +5,11 @@
 //! of every fit. Each exclusion is followed by a refit from the current optimum, so the next
 //! check sees the handled problem.
 
-use super::{TestCause, coloured_noise, disturbance, not_at_rest, outliers, saturation};
+use super::{
+    FittedRecord, TestCause, coloured_noise, disturbance, imperfect_step, nonlinearity,
+    not_at_rest, outliers, quantisation, sampling, saturation, small_step,
+};
+use crate::ident::per_step::{MAX_PER_STEP, per_step_fits};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
 use crate::ident::guess::auto_guess;
 use crate::ident::models::Structure;
@@ -144,8 +148,34 @@ pub fn finish(
         }
         causes.push(cause);
     }
+    causes.extend(reported(&handled.data, &last));
     causes.sort_by_key(|c| super::TestCauseKind::ALL.iter().position(|k| *k == c.kind));
     last
+}
+
+/// The causes that change nothing in the fit, read off the final model and the record:
+/// an imperfect step, the output's resolution, the sampling period against the notes'
+/// rules, a step small against the noise, and, on a record of 2 to
+/// [`MAX_PER_STEP`] changes, each change's own gain against the others.
+fn reported(data: &FitData, last: &FitReport) -> Vec<TestCause> {
+    let mut found: Vec<TestCause> = imperfect_step(data).into_iter().collect();
+    if let Some(record) = FittedRecord::new(data, last) {
+        found.extend(quantisation(&record));
+        found.extend(sampling(&record));
+        found.extend(small_step(&record));
+    }
+    let changes = data.input.changes.len();
+    if (2..=MAX_PER_STEP).contains(&changes) {
+        let options = FitOptions {
+            starts: 4,
+            ..FitOptions::default()
+        };
+        let mut structure = last.model.structure;
+        structure.transient = false;
+        let fits = per_step_fits(data, structure, &options);
+        found.extend(nonlinearity(last, &fits, data.sampling_period()));
+    }
+    found
 }
 
 fn robust(data: &FitData, last: &FitReport) -> Option<RobustFit> {
