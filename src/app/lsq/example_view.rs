@@ -8,7 +8,6 @@ use egui_plot::{Line, Plot, Points};
 
 use crate::app::look::Look;
 use crate::text::Localize;
-use crate::text::lsq::LsqPhrase as L;
 use crate::text::lsq_app::Phrase;
 
 use super::commands::{Command, ExampleModel};

@@ -70,7 +70,11 @@ pub fn panel(
         }
     }
     match &session.export_note {
-        Some(ExportNote::Saved(path)) => note(ui, look, &Phrase::Saved.with(lang, &[path.clone()])),
+        Some(ExportNote::Saved(path)) => note(
+            ui,
+            look,
+            &Phrase::Saved.with(lang, std::slice::from_ref(path)),
+        ),
         Some(ExportNote::Failed { path, reason }) => warn(
             ui,
             look,
