@@ -26,7 +26,7 @@ crate::phrases! {
         StandardError => ("Standard error", "Desvio padrão"),
         Regressors => ("Regressors φ(k)", "Regressores φ(k)"),
         Rows => ("Rows of Φ", "Linhas de Φ"),
-        Cost => ("Cost J = EᵀE", "Função custo J = EᵀE"),
+        Cost => ("Cost J = Σe(k)²", "Função custo J = Σe(k)²"),
         FitPrediction => ("Fit % (one-step prediction)", "Ajuste % (predição um passo à frente)"),
         FitSimulation => ("Fit % (free simulation)", "Ajuste % (simulação livre)"),
         Aic => ("AIC", "AIC (critério de Akaike)"),
@@ -111,10 +111,10 @@ impl Localize for LsqError {
                 let i = index + 1;
                 lang.pick(
                     format!(
-                        "ΦᵀΦ is singular: regressor {i} repeats the ones before it (the input does not excite enough, or the orders are too high)"
+                        "Φ'Φ is singular: regressor {i} repeats the ones before it (the input does not excite enough, or the orders are too high)"
                     ),
                     format!(
-                        "ΦᵀΦ é singular: o regressor {i} repete os anteriores (a entrada não excita o suficiente, ou as ordens são altas demais)"
+                        "Φ'Φ é singular: o regressor {i} repete os anteriores (a entrada não excita o suficiente, ou as ordens são altas demais)"
                     ),
                 )
             }
