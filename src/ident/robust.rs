@@ -33,7 +33,7 @@ pub struct RobustFit {
 
 /// The loss's weight of each residual on the scale `scale` (output units).
 pub fn weights(loss: Loss, residuals: &[f64], scale: f64) -> Vec<f64> {
-    if !(scale > 0.0) {
+    if scale.is_nan() || scale <= 0.0 {
         return vec![1.0; residuals.len()];
     }
     residuals

@@ -70,7 +70,8 @@ pub fn detect(
     let rho = lag_one(&e).clamp(0.0, 0.99);
     let correlation = (1.0 + rho) / (1.0 - rho);
     let n_eff = n as f64 / correlation;
-    if !(n_eff * (line.2 / sse).ln() > BIC_THRESHOLD + (n as f64).ln()) {
+    let gain = n_eff * (line.2 / sse).ln();
+    if gain.is_nan() || gain <= BIC_THRESHOLD + (n as f64).ln() {
         return None;
     }
     let s = (sse / (n as f64 - 3.0)).sqrt() * correlation.sqrt();
@@ -227,7 +228,7 @@ impl Sums {
         let (nn, sr) = (n as f64, Self::sum(&self.r, 0, n));
         let var_h = shh - sh * sh / nn;
         let cov = shr - sh * sr / nn;
-        if !(var_h > 0.0) {
+        if var_h.is_nan() || var_h <= 0.0 {
             return (0.0, 0.0, f64::INFINITY);
         }
         let b = cov / var_h;

@@ -9,10 +9,10 @@ use super::{
     FittedRecord, TestCause, coloured_noise, disturbance, imperfect_step, nonlinearity,
     not_at_rest, outliers, quantisation, sampling, saturation, small_step,
 };
-use crate::ident::per_step::{MAX_PER_STEP, per_step_fits};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
 use crate::ident::guess::auto_guess;
 use crate::ident::models::Structure;
+use crate::ident::per_step::{MAX_PER_STEP, per_step_fits};
 use crate::ident::robust::{RobustFit, robust_fit};
 
 /// A record with its test's artefacts handled.

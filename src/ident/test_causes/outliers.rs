@@ -35,7 +35,7 @@ pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize
         .collect();
     let scale = robust_scale(&deviation);
     let threshold = (THRESHOLD * scale).max(2.0 * quantum(&data.y));
-    if !(threshold > 0.0) {
+    if threshold.is_nan() || threshold <= 0.0 {
         return None;
     }
     let corner = near_changes(data);

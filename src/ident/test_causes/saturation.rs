@@ -70,7 +70,7 @@ fn clipped(data: &FitData, current: &FitReport, side: f64) -> Option<(TestCause,
         .map(|(y, r)| y - r)
         .collect::<Vec<f64>>();
     let beyond = held.iter().map(|&i| side * (model[i] - level)).sum::<f64>() / held.len() as f64;
-    if !(beyond > BEYOND * noise) {
+    if beyond.is_nan() || beyond <= BEYOND * noise {
         return None;
     }
     let t = |i: usize| data.times[i];
