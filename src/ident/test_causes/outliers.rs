@@ -5,7 +5,10 @@
 //! beyond [`THRESHOLD`] robust standard deviations (and two output quanta, so that a
 //! quantised record's level changes never count), in a run of at most [`MAX_RUN`] samples;
 //! more than [`MAX_SHARE`] of the record is not "isolated" and names nothing. The samples
-//! right after an input change are not judged: the response turns a corner there.
+//! right after an input change are not judged: the response turns a corner there. A sample
+//! must also stand out of the *data's* own running median by as much: a model that misses
+//! the shape of a fast transient (a start without its dead time) leaves residuals that jump
+//! where the data themselves are smooth, and those samples are not outliers.
 
 use super::{Handling, Loss, TestCause, TestCauseKind, TestEvidence};
 use crate::ident::fit::FitData;
@@ -17,30 +20,29 @@ pub const THRESHOLD: f64 = 5.0;
 pub const MAX_RUN: usize = 3;
 /// The largest share of the record that may be outliers.
 pub const MAX_SHARE: f64 = 0.15;
+/// The fewest samples a record needs for its outliers to be judged: below, a running median
+/// of seven spans a large part of the response (the LECI test's 35 samples: its first peak
+/// is three samples wide), and an isolated sample cannot be told from the response's shape.
+pub const MIN_SAMPLES: usize = 100;
 /// Half the running median's window (samples).
 const HALF_WINDOW: usize = 3;
 
 /// The outliers of `residuals` (of a fit on `data`) and their indices.
 pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize>)> {
     let n = residuals.len();
-    if n < 4 * HALF_WINDOW + 1 || n != data.times.len() {
+    if n < MIN_SAMPLES || n != data.times.len() {
         return None;
     }
-    let deviation: Vec<f64> = (0..n)
-        .map(|i| {
-            let lo = i.saturating_sub(HALF_WINDOW);
-            let hi = (i + HALF_WINDOW + 1).min(n);
-            residuals[i] - median(&residuals[lo..hi])
-        })
-        .collect();
+    let deviation = deviations(residuals);
     let scale = robust_scale(&deviation);
     let threshold = (THRESHOLD * scale).max(2.0 * quantum(&data.y));
     if threshold.is_nan() || threshold <= 0.0 {
         return None;
     }
     let corner = near_changes(data);
+    let own = deviations(&data.y);
     let wild: Vec<usize> = (0..n)
-        .filter(|&i| deviation[i].abs() > threshold && !corner[i])
+        .filter(|&i| deviation[i].abs() > threshold && own[i].abs() > threshold && !corner[i])
         .collect();
     let isolated: Vec<usize> = runs(&wild)
         .into_iter()
@@ -70,6 +72,18 @@ pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize
         handling: Handling::RobustLoss { loss: Loss::Huber },
     };
     Some((cause, isolated))
+}
+
+/// Each value less the running median of its neighbours ([`HALF_WINDOW`] each side).
+fn deviations(x: &[f64]) -> Vec<f64> {
+    let n = x.len();
+    (0..n)
+        .map(|i| {
+            let lo = i.saturating_sub(HALF_WINDOW);
+            let hi = (i + HALF_WINDOW + 1).min(n);
+            x[i] - median(&x[lo..hi])
+        })
+        .collect()
 }
 
 /// The samples within a window after an input change: the response turns a corner there
