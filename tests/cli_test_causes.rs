@@ -87,24 +87,31 @@ fn the_text_puts_the_test_before_the_model_and_the_verdict_names_both() {
     );
 }
 
+/// The LECI test was at rest, its output is not quantised coarsely and it has no outliers,
+/// but it samples an oscillation of ωn ≈ 1 rad/s every 1.025 s: by the notes' rules
+/// (h < 0.1·τmax; 0.01 < h/τ < 0.05) far too slowly, the only thing to say about the test.
 #[test]
-fn a_test_at_rest_has_nothing_to_say_about_the_test() {
+fn the_leci_test_is_only_sampled_too_slowly() {
     let args = [
         LECI, "--t0", "5", "--du", "10", "--y0", "50", "--start", "P2DU",
     ];
     let json = degrau(&[&args[..], &["--json"]].concat());
     let j: serde_json::Value = serde_json::from_str(&json).unwrap();
-    assert_eq!(j["test_causes"], serde_json::json!([]));
+    let causes = j["test_causes"].as_array().expect(&json);
+    assert_eq!(causes.len(), 1, "{json}");
+    assert_eq!(causes[0]["cause"], "sampling");
+    assert_eq!(causes[0]["facts"]["too_slow"], true);
+    assert!(causes[0]["facts"]["ts"].as_f64().unwrap() > 1.0);
     let pt = degrau(&[&args[..], &["--json", "--lang", "pt"]].concat());
     assert_eq!(pt, json, "--json is the same in every language");
     let text = degrau(&args);
     let test = text
-        .find("What the test got wrong:\n   Nothing")
+        .find("What the test got wrong:\n1. sampling")
         .expect(&text);
     assert!(test < text.find("What the model gets wrong:").expect(&text));
     let verdict = text
         .lines()
         .find(|l| l.starts_with("Verdict: structure P2DU"))
         .expect(&text);
-    assert!(verdict.ends_with("; test: no artefact found."), "{verdict}");
+    assert!(verdict.ends_with("; test: sampling."), "{verdict}");
 }

@@ -104,9 +104,15 @@ pub fn lag_one(v: &[f64]) -> f64 {
     if v.len() < 3 {
         return 0.0;
     }
-    let mean = v.iter().sum::<f64>() / v.len() as f64;
-    let c0: f64 = v.iter().map(|x| (x - mean).powi(2)).sum();
-    let c1: f64 = v.windows(2).map(|w| (w[0] - mean) * (w[1] - mean)).sum();
+    // In units of the largest value, so that residuals at 1e300 do not overflow their squares.
+    let unit = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    if !(unit.is_finite() && unit > 0.0) {
+        return 0.0;
+    }
+    let mean = v.iter().map(|x| x / unit).sum::<f64>() / v.len() as f64;
+    let d = |x: f64| x / unit - mean;
+    let c0: f64 = v.iter().map(|&x| d(x).powi(2)).sum();
+    let c1: f64 = v.windows(2).map(|w| d(w[0]) * d(w[1])).sum();
     if c0 > 0.0 { c1 / c0 } else { 0.0 }
 }
 
