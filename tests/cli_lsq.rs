@@ -1,29 +1,13 @@
 //! `degrau prbs`, `arx`, `rls`, `c2d` and `d2c` through the binary: a PRBS record of a known
 //! model written as CSV, fitted back by ARX and RLS, checked against c2d of the same model.
 
-use std::process::{Command, Output};
+mod run;
+use run::{degrau, json};
 
 const TCLAB: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/data/records/tclab_step_q1_50_synthetic.csv"
 );
-
-fn degrau(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_degrau"))
-        .args(args)
-        .output()
-        .expect("run degrau")
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let out = degrau(args);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("one JSON object")
-}
 
 fn numbers(v: &serde_json::Value) -> Vec<f64> {
     v.as_array()

@@ -27,3 +27,10 @@ pub fn stdout(out: &Output) -> String {
 pub fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
+
+/// `degrau args…` that must succeed, its standard output read as one JSON object.
+pub fn json(args: &[&str]) -> serde_json::Value {
+    let out = degrau(args);
+    assert!(out.status.success(), "{}", stderr(&out));
+    serde_json::from_slice(&out.stdout).expect("one JSON object")
+}

@@ -4,7 +4,7 @@
 //! model), and its handles: the tangent's point dragged along the curve, the two level lines
 //! dragged up and down. Everything reads the session and returns commands.
 
-use eframe::egui::{self, Id, Rect, RichText, Stroke, Ui, Vec2};
+use eframe::egui::{self, Id, Rect, RichText, Ui, Vec2};
 use egui_plot::{HLine, Line, LineStyle, MarkerShape, PlotPoint, PlotUi, Points, VLine};
 
 use crate::app::look::Look;
@@ -219,17 +219,7 @@ pub(super) fn handles(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> b
             out.push(Command::Hand(HandCommand::MoveTangent(time)));
         }
         held |= response.dragged() && !response.drag_stopped();
-        let color = if response.hovered() || response.dragged() {
-            look.palette.selected
-        } else {
-            look.palette.handle
-        };
-        ui.painter_at(frame.expand(GRAB)).circle(
-            at,
-            5.5,
-            color.gamma_multiply(0.35),
-            Stroke::new(2.0, color),
-        );
+        super::plot::paint_handle(ui, frame, at, &response, look);
     }
     for (phrase, y, command) in [
         (

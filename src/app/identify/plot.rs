@@ -526,18 +526,7 @@ fn guess_handles(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> bool {
             }));
         }
         held |= response.dragged() && !response.drag_stopped();
-        let active = response.hovered() || response.dragged();
-        let color = if active {
-            look.palette.selected
-        } else {
-            look.palette.handle
-        };
-        ui.painter_at(frame.expand(GRAB)).circle(
-            at,
-            5.5,
-            color.gamma_multiply(0.35),
-            Stroke::new(2.0, color),
-        );
+        paint_handle(ui, frame, at, &response, look);
     }
     held
 }
@@ -688,6 +677,27 @@ fn handle_key(h: Handle) -> u8 {
         Handle::TimeConstant => 2,
         Handle::FirstPeak => 3,
     }
+}
+
+/// A draggable handle's disc at `at`, highlighted while hovered or dragged.
+pub(super) fn paint_handle(
+    ui: &egui::Ui,
+    frame: egui::Rect,
+    at: egui::Pos2,
+    response: &egui::Response,
+    look: &Look,
+) {
+    let color = if response.hovered() || response.dragged() {
+        look.palette.selected
+    } else {
+        look.palette.handle
+    };
+    ui.painter_at(frame.expand(GRAB)).circle(
+        at,
+        5.5,
+        color.gamma_multiply(0.35),
+        Stroke::new(2.0, color),
+    );
 }
 
 #[cfg(test)]
