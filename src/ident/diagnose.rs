@@ -23,7 +23,7 @@ use serde::{Deserialize, Serialize};
 
 use super::fit::{FitData, FitError, FitOptions, FitReport, fit, search_fit};
 use super::guess::{auto_guess, features};
-use super::models::{Param, Structure, Values};
+use super::models::{Model, Param, Structure, Values};
 use super::residuals::{self, ResidualAnalysis};
 use super::stats::lag_one;
 use super::test_causes::{TestCause, TestCauseKind, handling};
@@ -101,7 +101,9 @@ impl Extension {
             Extension::Pole if s.poles < 3 => e.poles += 1,
             Extension::Zero if !s.zero => e.zero = true,
             Extension::Integrator if !s.integrator => e.integrator = true,
-            Extension::Drift if !s.drift => e.drift = true,
+            // A test not at rest has its initial transient: a drift would absorb the same
+            // motion before the step (an artefact of the test), not a trend of the process.
+            Extension::Drift if !s.drift && !s.transient => e.drift = true,
             _ => return None,
         }
         Some(e)
@@ -389,20 +391,16 @@ pub fn diagnose_from(
     options: &DiagnoseOptions,
 ) -> DiagnoseReport {
     let handled = handling::handle(data, start, &options.fit);
-    let mut current = handled.start.clone();
-    let mut steps = Vec::new();
-    let mut adequate = false;
-    for _ in 0..options.max_steps {
-        match next_step(&handled.data, &current) {
-            Some(step) => {
-                current = step.fit.clone();
-                steps.push(step);
-            }
-            None => {
-                adequate = true;
-                break;
-            }
-        }
+    let (mut current, mut steps, mut adequate) = run_loop(&handled, options, &EXTENSIONS);
+    if current.model.structure.underdamped && !oscillates(&current) {
+        // The pair ended overdamped (ζ ≥ 1 within its interval, once the other extensions
+        // took their part): it is two real poles, and the chain is made again without the
+        // oscillation, so that its steps name the extra pole.
+        let real: Vec<Extension> = EXTENSIONS
+            .into_iter()
+            .filter(|e| *e != Extension::Underdamped)
+            .collect();
+        (current, steps, adequate) = run_loop(&handled, options, &real);
     }
     let mut test_causes = handled.causes.clone();
     let current = handling::finish(&handled, current, adequate, &mut test_causes);
@@ -421,6 +419,27 @@ pub fn diagnose_from(
     }
 }
 
+/// The loop on the handled record from its start, with the extensions `allowed`: the last
+/// fit, the steps, and whether it ended because no extension paid.
+fn run_loop(
+    handled: &handling::Handled,
+    options: &DiagnoseOptions,
+    allowed: &[Extension],
+) -> (FitReport, Vec<Step>, bool) {
+    let mut current = handled.start.clone();
+    let mut steps = Vec::new();
+    for _ in 0..options.max_steps {
+        match next_step_with(&handled.data, &current, allowed) {
+            Some(step) => {
+                current = step.fit.clone();
+                steps.push(step);
+            }
+            None => return (current, steps, true),
+        }
+    }
+    (current, steps, false)
+}
+
 /// The leading cause of what `current` gets wrong and the extended fit, or `None` when no
 /// extension pays for itself. An extension is judged by the BIC corrected for its own fit's
 /// residual correlation ([`judged_change`]), so that coloured noise buys no structure; when
@@ -428,23 +447,44 @@ pub fn diagnose_from(
 /// tried ([`best_pair`]: P1 → P2Z, P1 → P2D, …), and a pair that pays is one step naming
 /// both causes.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
-    let single = best_extension(data, current);
-    let leader = single.as_ref().map(|(e, _)| *e);
+    next_step_with(data, current, &EXTENSIONS)
+}
+
+/// [`next_step`] with only the extensions `allowed`.
+fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) -> Option<Step> {
+    let candidates = candidates(data, current, allowed);
+    let lowest = |list: Vec<&(Extension, FitReport)>| {
+        list.into_iter()
+            .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
+            .cloned()
+    };
+    let leader = lowest(candidates.iter().collect());
     let far = far_from_white(data, current);
-    let single =
-        single.filter(|(_, c)| pays(data, current, c) || (far && plainly_pays(current, c)));
+    // The corrected BIC judges first: of the extensions that pay by it, the lowest BIC; only
+    // when none does, and what is left is far from white, the lowest BIC by the plain one.
+    let paying = lowest(
+        candidates
+            .iter()
+            .filter(|(_, c)| pays(data, current, c))
+            .collect(),
+    );
+    let leader_extension = leader.as_ref().map(|(e, _)| *e);
+    let single = paying
+        .or(leader.filter(|_| far))
+        .and_then(|w| on_every_sample(data, w))
+        .filter(|(_, c)| pays(data, current, c) || (far && plainly_pays(current, c)));
     let (extension, paired, candidate) = match single {
         Some((e, c)) => (e, None, c),
         None => {
             if !far {
                 return None;
             }
-            let ((mut e1, mut e2), c) = best_pair(data, current)?;
+            let ((mut e1, mut e2), c) = best_pair(data, current, allowed)?;
             if !pays(data, current, &c) {
                 return None;
             }
             // The pair's member that did best alone is named first.
-            if leader == Some(e2) {
+            if leader_extension == Some(e2) {
                 std::mem::swap(&mut e1, &mut e2);
             }
             (e1, Some(e2.cause(&c.model.values)), c)
@@ -516,14 +556,19 @@ const PAIRED: [Extension; 4] = [
 ];
 
 /// The pair of extensions whose refit has the lowest BIC, started from each one's starts.
-fn best_pair(data: &FitData, current: &FitReport) -> Option<((Extension, Extension), FitReport)> {
+fn best_pair(
+    data: &FitData,
+    current: &FitReport,
+    allowed: &[Extension],
+) -> Option<((Extension, Extension), FitReport)> {
     let options = FitOptions {
         starts: 1,
         ..FitOptions::default()
     };
     let mut best: Option<((Extension, Extension), FitReport)> = None;
-    for (i, &e1) in PAIRED.iter().enumerate() {
-        for &e2 in &PAIRED[i + 1..] {
+    let paired: Vec<Extension> = PAIRED.into_iter().filter(|e| allowed.contains(e)).collect();
+    for (i, &e1) in paired.iter().enumerate() {
+        for &e2 in &paired[i + 1..] {
             let Some(s) = e1.apply(current.model.structure).and_then(|s| e2.apply(s)) else {
                 continue;
             };
@@ -535,6 +580,7 @@ fn best_pair(data: &FitData, current: &FitReport) -> Option<((Extension, Extensi
                 .into_iter()
                 .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
                 .filter(|r| r.ln_mse.is_finite() && !aliased(r))
+                .filter(|r| !beyond_record(data, current, r))
                 .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse));
             if let Some(r) = fitted
                 && best.as_ref().is_none_or(|(_, b)| bic(&r) < bic(b))
@@ -575,20 +621,39 @@ pub fn best_extension_bic(data: &FitData, current: &FitReport) -> Option<f64> {
 
 /// The extension whose refit has the lowest BIC (aliased fits excluded).
 fn best_extension(data: &FitData, current: &FitReport) -> Option<(Extension, FitReport)> {
-    EXTENSIONS
+    candidates(data, current, &EXTENSIONS)
+        .into_iter()
+        .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
+        .and_then(|winner| on_every_sample(data, winner))
+}
+
+/// Every extension of `current` that can be fitted, with its refit (on the record's
+/// reduction for a long record, [`search_fit`]); aliased fits, lags beyond the record and
+/// "pairs" fitted overdamped left out.
+fn candidates(
+    data: &FitData,
+    current: &FitReport,
+    allowed: &[Extension],
+) -> Vec<(Extension, FitReport)> {
+    allowed
         .iter()
         .filter_map(|&e| {
             let s = e.apply(current.model.structure)?;
             let r = refit(data, current, e, s)?;
-            // A "pair" fitted with ζ ≥ 1 is two real poles: that is the extra-pole extension,
-            // not an oscillation, and must not take its name.
-            let overdamped =
-                e == Extension::Underdamped && r.model.get(Param::Zeta) >= OVERDAMPED_ZETA;
-            (!overdamped).then_some((e, r))
+            (e != Extension::Underdamped || oscillates(&r)).then_some((e, r))
         })
         .filter(|(_, r)| bic(r).is_finite())
-        .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
-        .and_then(|winner| on_every_sample(data, winner))
+        .collect()
+}
+
+/// Whether a fitted pair oscillates: ζ below [`OVERDAMPED_ZETA`], and its 95 % interval
+/// below 1. A "pair" fitted with ζ ≥ 1 is two real poles, and one whose interval reaches 1
+/// cannot be told from them (a dead time and two close poles make an S-shape a pair with
+/// ζ ≈ 0.85 also draws): that is the extra-pole extension, not an oscillation, and must not
+/// take its name.
+fn oscillates(r: &FitReport) -> bool {
+    r.model.get(Param::Zeta) < OVERDAMPED_ZETA
+        && r.interval(Param::Zeta).is_none_or(|(_, hi)| hi < 1.0)
 }
 
 /// Scale (issue 10): on a long record the candidates are fitted on its reduction
@@ -627,9 +692,35 @@ fn refit(
     starts
         .into_iter()
         .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
-        .filter(|r| !aliased(r))
+        .filter(|r| !aliased(r) && !beyond_record(data, current, r))
         .filter(|r| r.ln_mse.is_finite())
         .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse))
+}
+
+/// The slowest time constant of `model` (s): its real lags, |Tz|, and a pair's Tw (not its
+/// envelope Tw/ζ: a lightly damped ringing shows its period however slowly it decays); 0
+/// for a model without any.
+pub fn slowest_lag(model: &Model) -> f64 {
+    let params = model.structure.params();
+    let mut lags: Vec<f64> = [Param::Tp1, Param::Tp2, Param::Tp3, Param::Tz]
+        .into_iter()
+        .filter(|p| params.contains(p))
+        .map(|p| model.get(p).abs())
+        .collect();
+    if params.contains(&Param::Tw) {
+        lags.push(model.get(Param::Tw));
+    }
+    lags.into_iter().fold(0.0, f64::max)
+}
+
+/// Whether `candidate` leans on a time constant slower than the record can show: longer
+/// than the record after its first change, and more than twice `current`'s slowest. Such a
+/// lag (a pole or zero of thousands of seconds on a record of minutes) is not identifiable:
+/// it only bends the tail, as a drift would, and its static gain is an extrapolation. It is
+/// the mirror of [`aliased`], a lag too fast for the sampling.
+fn beyond_record(data: &FitData, current: &FitReport, candidate: &FitReport) -> bool {
+    let slowest = slowest_lag(&candidate.model);
+    slowest > data.duration() && slowest > 2.0 * slowest_lag(&current.model)
 }
 
 /// The current values with the new parameter set to a few plausible values.

@@ -1374,7 +1374,7 @@ fn alias_in(model: &Model, data: &FitData, ts: f64, span: Option<usize>) -> Opti
     };
     let between = spans
         .iter()
-        .map(|&span| between_sample_swing(model, data, span))
+        .map(|&span| between_sample_swing(model, data, ts, span))
         .fold(0.0, f64::max)
         / effect;
     (omega_d >= nyquist || between > 0.1).then_some(FitWarning::Alias {
@@ -1417,10 +1417,19 @@ fn frequencies_out(w: FitWarning, units: &Scale) -> FitWarning {
     }
 }
 
+/// An interval between kept samples longer than this many sampling periods is a gap where
+/// samples were left out, not a sampling interval.
+const GAP: f64 = 1.5;
+
 /// The largest distance between the model on a 16× finer grid and the straight lines
 /// through the model's values at the sample instants, over the windows between samples
 /// `first` and `last` that end after the step; evaluated a piece of the record at a time.
-fn between_sample_swing(model: &Model, data: &FitData, (first, last): (usize, usize)) -> f64 {
+fn between_sample_swing(
+    model: &Model,
+    data: &FitData,
+    ts: f64,
+    (first, last): (usize, usize),
+) -> f64 {
     const REFINE: usize = 16;
     let t = &data.times;
     let Ok(simulator) = model.simulator(&data.input) else {
@@ -1447,7 +1456,9 @@ fn between_sample_swing(model: &Model, data: &FitData, (first, last): (usize, us
         values.resize(fine.len(), 0.0);
         simulator.fill(&fine, &mut values);
         for (w, i) in (start..end).enumerate() {
-            if t[i + 1] <= data.input.t0() {
+            // Before the response, or across a gap where samples were left out (outliers,
+            // a clipped span): not a sampling interval.
+            if t[i + 1] <= data.input.t0() || t[i + 1] - t[i] > GAP * ts {
                 continue;
             }
             let (ya, yb) = (values[w * REFINE], values[(w + 1) * REFINE]);

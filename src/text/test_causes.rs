@@ -10,7 +10,7 @@ use crate::ident::diagnose::{Cause, DiagnoseReport};
 use crate::ident::rest::Motion;
 use crate::ident::test_causes::{
     DisturbanceShape, Handling, Loss, RuleCheck, SamplingRule, Signal, StepGain, StepShape,
-    TestCause, TestCauseKind, TestEvidence,
+    TestCause, TestCauseKind, TestEvidence, outliers,
 };
 
 use super::{Lang, Localize, Message};
@@ -269,17 +269,40 @@ impl Localize for TestEvidence {
                     n4(lang, *threshold),
                     n4(lang, *worst),
                 );
-                let k = n4(lang, threshold / scale);
+                // The threshold is THRESHOLD robust σ, or two output quanta when the
+                // residuals' scale is below the resolution (a quantised record's MAD is 0).
+                let by_quanta = *threshold > outliers::THRESHOLD * scale * (1.0 + 1e-9);
+                let why = match (by_quanta, lang) {
+                    (true, Lang::En) => format!(
+                        "two output quanta: the residuals' robust scale, {scale_w}, is below \
+                         the resolution"
+                    ),
+                    (true, Lang::Pt) => format!(
+                        "dois quanta da saída: a escala robusta dos resíduos, {scale_w}, está \
+                         abaixo da resolução"
+                    ),
+                    (false, _) => {
+                        let k = n4(lang, threshold / scale);
+                        lang.pick(
+                            format!(
+                                "{k} × the residuals' robust scale {scale_w}, from the median \
+                                 absolute deviation"
+                            ),
+                            format!(
+                                "{k} × a escala robusta dos resíduos, {scale_w}, pelo desvio \
+                                 absoluto mediano"
+                            ),
+                        )
+                    }
+                };
                 lang.pick(
                     format!(
-                        "{count} samples lie more than {thr} from the model ({k} × the \
-                         residuals' robust scale {scale_w}, from the median absolute \
-                         deviation), the worst by {worst}: t = {list}{more} s."
+                        "{count} samples lie more than {thr} from the model ({why}), the worst \
+                         by {worst}: t = {list}{more} s."
                     ),
                     format!(
-                        "{count} amostras estão a mais de {thr} do modelo ({k} × a escala \
-                         robusta dos resíduos, {scale_w}, pelo desvio absoluto mediano), a pior \
-                         a {worst}: t = {list}{more} s."
+                        "{count} amostras estão a mais de {thr} do modelo ({why}), a pior a \
+                         {worst}: t = {list}{more} s."
                     ),
                 )
             }

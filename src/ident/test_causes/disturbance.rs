@@ -14,7 +14,7 @@
 
 use super::{DisturbanceShape, Handling, TestCause, TestCauseKind, TestEvidence};
 use crate::ident::diagnose::{BIC_THRESHOLD, best_extension_bic};
-use crate::ident::fit::{FitData, FitReport};
+use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
 use crate::ident::models::{Model, Param};
 use crate::ident::stats::lag_one;
 
@@ -29,23 +29,54 @@ const CANDIDATES: usize = 200;
 const FLAT_SHARE: f64 = 0.25;
 
 /// A disturbance in `residuals` of `current` on `data`, and the samples from it on.
+///
+/// A model fitted on the whole record has leant towards the disturbed samples (its gain or
+/// lag took part of the load), so the tail it leaves is not flat before the instant. When
+/// the first look finds nothing, the model is refitted without the samples from the
+/// likeliest instant on, and the test is made again on what the refit leaves.
 pub fn detect(
     data: &FitData,
     current: &FitReport,
     residuals: &[f64],
 ) -> Option<(TestCause, Vec<usize>)> {
+    if let Some(found) = judge(data, current, residuals) {
+        return Some(found);
+    }
+    let (first, tail) = settled_tail(data, current)?;
+    let sums = Sums::new(&data.times[first..], &residuals[first..]);
+    let (_, k, _) = best_instant(&sums, tail)?;
+    let keep: Vec<bool> = (0..data.y.len()).map(|i| i < first + k).collect();
+    let options = FitOptions {
+        starts: 1,
+        ..FitOptions::default()
+    };
+    let before = data.keeping(&keep);
+    let refit = fit(
+        &before,
+        current.model.structure,
+        current.model.values,
+        &options,
+        &mut (),
+    )
+    .ok()?;
+    let r = refit.residuals(data).ok()?;
+    judge(data, &refit, &r)
+}
+
+/// The index of the first sample of the settled tail after the last input change, and the
+/// tail's length; `None` when the model never settles or the tail is too short.
+fn settled_tail(data: &FitData, current: &FitReport) -> Option<(usize, usize)> {
     let settled = data.input.changes.last()?.t + settling(&current.model)?;
     let first = data.times.partition_point(|&t| t < settled);
-    let (t, r) = (&data.times[first..], &residuals[first..]);
-    let n = r.len();
-    if n < MIN_TAIL {
-        return None;
-    }
-    let sums = Sums::new(t, r);
-    let line = sums.line(0, n);
+    let n = data.times.len() - first;
+    (n >= MIN_TAIL).then_some((first, n))
+}
+
+/// The tail's best disturbance: its shape, instant (index in the tail) and SSE.
+fn best_instant(sums: &Sums, n: usize) -> Option<(DisturbanceShape, usize, f64)> {
     let m = (n / 20).max(5);
     let stride = ((n - 2 * m) / CANDIDATES).max(1);
-    let best = (m..n - m)
+    (m..n - m)
         .step_by(stride)
         .flat_map(|k| {
             [
@@ -54,8 +85,20 @@ pub fn detect(
             ]
         })
         .filter(|c| c.2.is_finite())
-        .min_by(|a, b| a.2.total_cmp(&b.2))?;
-    let (shape, k, sse) = best;
+        .min_by(|a, b| a.2.total_cmp(&b.2))
+}
+
+/// The test of the module doc on the residuals of `current`.
+fn judge(
+    data: &FitData,
+    current: &FitReport,
+    residuals: &[f64],
+) -> Option<(TestCause, Vec<usize>)> {
+    let (first, n) = settled_tail(data, current)?;
+    let (t, r) = (&data.times[first..], &residuals[first..]);
+    let sums = Sums::new(t, r);
+    let line = sums.line(0, n);
+    let (shape, k, sse) = best_instant(&sums, n)?;
     let fitted: Vec<f64> = match shape {
         DisturbanceShape::Step => {
             let (a, b) = (sums.mean(0, k), sums.mean(k, n));
@@ -241,7 +284,6 @@ impl Sums {
 mod tests {
     use super::*;
     use crate::ident::excitation::Excitation;
-    use crate::ident::fit::{FitOptions, fit};
     use crate::ident::models::{Structure, Values};
 
     fn record(load: impl Fn(f64) -> f64) -> (FitData, FitReport) {

@@ -1,9 +1,9 @@
 //! The test's causes handled before the model's are judged (the order of reasoning of
 //! [`crate::ident::diagnose`], in [`super::TestCauseKind::ALL`]'s order): a test not at rest
-//! gets an initial transient and a free Y0; a clipped span is left out; outliers are left out of the structural search (and the final fit uses a robust loss on
-//! them, [`crate::ident::robust`]); a clipped span and a disturbance's window are left out
-//! of every fit. Each exclusion is followed by a refit from the current optimum, so the next
-//! check sees the handled problem.
+//! gets an initial transient and a free Y0; outliers are left out of the structural search
+//! (and the final fit weighs them with a robust loss, [`outliers::LOSS`]); a clipped span
+//! and a disturbance's window are left out of every fit. Each exclusion is followed by a
+//! refit from the current optimum, so the next check sees the handled problem.
 
 use super::{
     FittedRecord, TestCause, coloured_noise, disturbance, imperfect_step, nonlinearity,
@@ -126,7 +126,7 @@ fn refit(data: &FitData, current: &FitReport) -> Option<FitReport> {
 }
 
 /// The loop's final fit with the handling that comes after it: the robust loss on the
-/// outliers (Huber), and, when the loop ended because no extension paid (`adequate`), the
+/// outliers ([`outliers::LOSS`]), and, when the loop ended because no extension paid (`adequate`), the
 /// intervals widened for correlated residuals, which names `coloured_noise`; the causes
 /// found are appended to `causes`, then all are put in [`super::TestCauseKind::ALL`]'s order.
 pub fn finish(
@@ -183,7 +183,7 @@ fn robust(data: &FitData, last: &FitReport) -> Option<RobustFit> {
         data,
         last.model.structure,
         last.model.values,
-        super::Loss::Huber,
+        outliers::LOSS,
     )
     .ok()
 }
