@@ -120,24 +120,22 @@ fn tclab_dropouts_are_outliers_and_the_robust_gain_matches_the_cleaned_record() 
 /// DaISy's heating system (a halogen lamp heating a steel plate; six input steps 6 → 9 → 4
 /// → 8 → 3 → 7 → 6 V, the first at the record's start, `--initial-input 6`), as
 /// `degrau diagnose daisy_heating_system.dat --u-col 2 --y-col 3 --initial-input 6` reads
-/// it: the diagnosis names `nonlinearity` with every change's own gain, at the change's
-/// instant and size. The gains fall from about 20 (output units per volt) on the first two
-/// changes to about 15 on the 3 → 7 V one; the ends' intervals do not overlap.
+/// it (start P1, the command's default): the diagnosis names `nonlinearity` with every
+/// change's own gain, at the change's instant and size. The gains fall from about 19.5
+/// (output units per volt) on the first three changes to about 15.5 on the 3 → 7 V one;
+/// the ends' intervals do not overlap.
 ///
 /// Each gain is checked against the change's level shift read off the record by hand: the
 /// mean of the last quarter of the samples before the next change (or the end) minus that
-/// before the change, over Δu; the first change, at the record's first sample, is read
-/// from that sample. The plate still creeps (about 1 unit in 20 s at the end of a 200-s
-/// hold), so the hand reading is only good to 10 % on the changes of 3 V or more; the 1-V
-/// change at 1400 s (an effect of about 15 units) is left out of that comparison.
+/// before the change, over Δu (the first change, at the record's first sample, from that
+/// sample). The first two changes are held 400 s, over five of their own lags (66–76 s):
+/// the plate has settled and the hand reading is good to 10 %. The later ones are held
+/// 200 s (about four lags) and the plate still creeps at the end, toward the new level, and
+/// from the previous one before the change: a hand reading then falls short of the shift,
+/// so it is a lower bound (the 1-V change, an effect of about 15 units, is left out).
 #[test]
 fn daisy_heating_names_nonlinearity_with_its_per_step_gains() {
-    let (data, report) = diagnosed(
-        "daisy_heating_system.dat",
-        ("1", "3", "2"),
-        Some(6.0),
-        "P1D",
-    );
+    let (data, report) = diagnosed("daisy_heating_system.dat", ("1", "3", "2"), Some(6.0), "P1");
     let ids: Vec<&str> = report.test_causes.iter().map(|c| c.kind.id()).collect();
     let cause = report
         .test_causes
@@ -170,13 +168,16 @@ fn daisy_heating_names_nonlinearity_with_its_per_step_gains() {
             s.ci95.map(|(a, b)| (format!("{a:.3}"), format!("{b:.3}")))
         );
     }
-    for (s, h) in steps
-        .iter()
-        .zip(&by_hand)
-        .filter(|(s, _)| s.du.abs() >= 3.0)
-    {
+    for (k, (s, h)) in steps.iter().zip(&by_hand).enumerate() {
+        let settled = k < 2;
+        let close = ((s.kp - h) / h).abs() <= 0.10;
+        let above = s.kp >= *h;
         assert!(
-            ((s.kp - h) / h).abs() <= 0.10,
+            if settled {
+                close
+            } else {
+                above || s.du.abs() < 3.0
+            },
             "DaISy: the change at {} s has gain {} against {h} by hand",
             s.t,
             s.kp
