@@ -196,20 +196,25 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
 /// lags bent to suit. So when the changes' own gains differ, the cause is named and the
 /// model is sought where a linear model holds: on the first change's window (the step from
 /// the operating point the test started at, the notes' advice of a step about one
-/// operating point), starting from that change's own fit; the per-step table in the
-/// evidence shows the others. The robust fit's data are cut the same way.
+/// operating point), starting from that change's own fit; the samples from the second
+/// change on are left out of the fit (the cause's handling says so), and the per-step
+/// table in the evidence shows every change. The robust fit's data are cut the same way.
 fn on_first_step_when_nonlinear(handled: &mut Handled) {
-    let Some((cause, fits)) = step_gains_differ(&handled.data, &handled.start) else {
+    let Some((mut cause, fits)) = step_gains_differ(&handled.data, &handled.start) else {
         return;
     };
-    handled.causes.push(cause);
     let first = fits.into_iter().next().and_then(|f| f.fit.ok());
-    let (Some(first), Some(window)) = (first, window_data(&handled.data, 0)) else {
-        return;
-    };
-    handled.robust_data = handled.robust_data.take().and_then(|d| window_data(&d, 0));
-    handled.data = window;
-    handled.start = first;
+    let cut = handled.data.input.changes.get(1).map(|c| c.t);
+    let end = handled.data.times.last().copied();
+    if let (Some(first), Some(window), Some(start), Some(end)) =
+        (first, window_data(&handled.data, 0), cut, end)
+    {
+        handled.robust_data = handled.robust_data.take().and_then(|d| window_data(&d, 0));
+        handled.data = window;
+        handled.start = first;
+        cause.handling = super::Handling::Excluded { start, end };
+    }
+    handled.causes.push(cause);
 }
 
 fn robust(data: &FitData, last: &FitReport) -> Option<RobustFit> {
