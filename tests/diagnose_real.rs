@@ -121,7 +121,8 @@ fn tclab_dropouts_are_outliers_and_the_robust_gain_matches_the_cleaned_record() 
 /// → 8 → 3 → 7 → 6 V, the first at the record's start, `--initial-input 6`), as
 /// `degrau diagnose daisy_heating_system.dat --u-col 2 --y-col 3 --initial-input 6` reads
 /// it (start P1, the command's default): the diagnosis names `nonlinearity` with every
-/// change's own gain, at the change's instant and size. The gains fall from about 19.5
+/// change's own gain, at the change's instant and size, and seeks the model on the first
+/// change's 400 s. The gains fall from about 19.5
 /// (output units per volt) on the first three changes to about 15.5 on the 3 → 7 V one;
 /// the ends' intervals do not overlap.
 ///
@@ -145,6 +146,16 @@ fn daisy_heating_names_nonlinearity_with_its_per_step_gains() {
     let TestEvidence::Nonlinearity { steps } = &cause.evidence else {
         panic!("{cause:?}")
     };
+    // The model is the first change's, on the 400 s before the second (what the student
+    // is told: the samples from 400 s on are left out of the fit).
+    assert_eq!(
+        cause.handling,
+        degrau::ident::test_causes::Handling::Excluded {
+            start: 400.0,
+            end: 1600.0
+        }
+    );
+    assert_eq!(report.final_fit.n, 200);
     let changes = &data.input.changes;
     let sizes: Vec<(f64, f64)> = steps.iter().map(|s| (s.u_before, s.du)).collect();
     let levels = [6.0, 9.0, 4.0, 8.0, 3.0, 7.0, 6.0];
