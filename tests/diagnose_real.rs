@@ -156,6 +156,10 @@ fn daisy_heating_names_nonlinearity_with_its_per_step_gains() {
         }
     );
     assert_eq!(report.final_fit.n, 200);
+    // Every gain has its interval, the first change's too (at the record's first sample,
+    // from the input before it: its instant is exact, so its window's Y0 is known).
+    assert!(steps.iter().all(|s| s.ci95.is_some()), "{steps:?}");
+    assert!(report.static_gain.1.is_some());
     let changes = &data.input.changes;
     let sizes: Vec<(f64, f64)> = steps.iter().map(|s| (s.u_before, s.du)).collect();
     let levels = [6.0, 9.0, 4.0, 8.0, 3.0, 7.0, 6.0];
