@@ -16,12 +16,13 @@
 //!   the range of the fit's step-instant parameter `Ta`, or of a negative `Td`); a typed step
 //!   and a first-order hold have exact instants.
 //! - **The changes** ([`InputChange`]): the input's significant jumps, for the plot, the
-//!   per-step table and the JSON. A jump is significant when it exceeds both 5 % of the
-//!   input's range and eight times the input's own sample-to-sample noise (the median
-//!   absolute first difference, robust to the jumps themselves; at most half the range,
-//!   for inputs that change at most samples, as a PRBS); consecutive significant
-//!   jumps of one sign (a ramped step, a slow actuator) are one change, at the first sample
-//!   that shows it, of their total size.
+//!   per-step table and the JSON. A jump is a move of the input when it exceeds eight
+//!   times the input's own sample-to-sample noise (the median absolute first difference,
+//!   robust to the jumps themselves; at most half the range, for inputs that change at most
+//!   samples, as a PRBS); consecutive moves of one sign (a ramped step, a slow actuator
+//!   that moves a little at every sample) are one change, at the first sample that shows
+//!   it, of their total size, when that total exceeds both 5 % of the input's range and
+//!   the noise term.
 
 use serde::{Deserialize, Serialize};
 
@@ -313,8 +314,8 @@ fn significant_changes(time: &[f64], u: &[f64], initial: Option<f64>) -> Vec<Inp
     }
     // The noise term is capped at half the range: on a short or busy input (a PRBS changes
     // at every other sample) the median difference is a jump itself.
-    let threshold =
-        (CHANGE_SHARE * range).max((CHANGE_NOISE * difference_noise(u)).min(0.5 * range));
+    let moves = (CHANGE_NOISE * difference_noise(u)).min(0.5 * range);
+    let threshold = (CHANGE_SHARE * range).max(moves);
     if let Some(before) = initial {
         changes.push(InputChange {
             t: time[0],
@@ -327,7 +328,7 @@ fn significant_changes(time: &[f64], u: &[f64], initial: Option<f64>) -> Vec<Inp
     let mut k = 1;
     while k < u.len() {
         let jump = u[k] - u[k - 1];
-        if jump.abs() <= threshold {
+        if jump.abs() <= moves {
             k += 1;
             continue;
         }
@@ -335,19 +336,22 @@ fn significant_changes(time: &[f64], u: &[f64], initial: Option<f64>) -> Vec<Inp
         let mut end = k;
         while end + 1 < u.len() {
             let next = u[end + 1] - u[end];
-            if next.abs() > threshold && next.signum() == jump.signum() {
+            if next.abs() > moves && next.signum() == jump.signum() {
                 end += 1;
             } else {
                 break;
             }
         }
-        changes.push(InputChange {
-            t: time[start],
-            du: u[end] - u[start - 1],
-            u_before: u[start - 1],
-            earliest: time[start - 1],
-            index: Some(start),
-        });
+        let du = u[end] - u[start - 1];
+        if du.abs() > threshold {
+            changes.push(InputChange {
+                t: time[start],
+                du,
+                u_before: u[start - 1],
+                earliest: time[start - 1],
+                index: Some(start),
+            });
+        }
         k = end + 1;
     }
     changes
@@ -402,6 +406,24 @@ mod tests {
         assert!((c.du - 5.0).abs() < 0.02);
         // Every sample-to-sample change is still in the model's input.
         assert!(e.steps.len() > 10);
+    }
+
+    #[test]
+    fn a_slow_ramp_is_one_change_and_jitter_is_none() {
+        // 20 → 60 over 50 samples (0.8 a sample, 2 % of the range): one change of 40 at the
+        // first sample that moved; a 0.1 back-and-forth on the levels is none.
+        let time: Vec<f64> = (0..200).map(|k| k as f64).collect();
+        let u: Vec<f64> = (0..200)
+            .map(|k| {
+                let ramp = (k as f64 - 30.0).clamp(0.0, 50.0) * 0.8;
+                20.0 + ramp + if k % 7 == 3 { 0.1 } else { 0.0 }
+            })
+            .collect();
+        let e = Excitation::measured(&time, &u, None, Hold::Zoh).unwrap();
+        assert_eq!(e.changes.len(), 1, "{:?}", e.changes);
+        let c = e.changes[0];
+        assert_eq!((c.t, c.index), (31.0, Some(31)));
+        assert!((c.du - 40.0).abs() < 0.2, "{c:?}");
     }
 
     #[test]

@@ -11,7 +11,8 @@
 //! is one step from that level: Y0 estimated (the level before it is not the record's
 //! operating point), an initial transient estimated after the first change (the previous
 //! response's tail, exactly the free response of the same poles) and on the first when the
-//! output moved before it ([`super::rest`]), the same step-instant lead as the joint fit.
+//! output moved before it ([`super::rest`]), the same step-instant lead as the joint fit
+//! (none for a change at the record's first sample from the input before the record).
 
 use super::excitation::{Excitation, InputChange};
 use super::fit::{FitData, FitError, FitObserver, FitOptions, FitReport, fit};
@@ -50,7 +51,10 @@ pub fn window_data(data: &FitData, k: usize) -> Option<FitData> {
     let mut input = Excitation::step(change.t, change.du);
     input.changes[0] = change;
     input.u0 = change.u_before;
-    input.lead_range = data.input.lead_range;
+    // The change's own uncertainty about its instant: none for the change at the record's
+    // first sample from the input before it (nothing earlier is in the record, and its Y0
+    // and a lead would be one unknown).
+    input.lead_range = data.input.lead_range.min(change.t - change.earliest);
     Some(FitData {
         times: keep.iter().map(|&i| data.times[i]).collect(),
         y: keep.iter().map(|&i| data.y[i]).collect(),

@@ -3,16 +3,18 @@
 //! gets an initial transient and a free Y0; outliers are left out of the structural search
 //! (and the final fit weighs them with a robust loss, [`outliers::LOSS`]); a clipped span
 //! and a disturbance's window are left out of every fit. Each exclusion is followed by a
-//! refit from the current optimum, so the next check sees the handled problem.
+//! refit from the current optimum, so the next check sees the handled problem. When the
+//! changes' own gains differ (`nonlinearity`), the model is sought on the first change's
+//! window ([`on_first_step_when_nonlinear`]).
 
 use super::{
     FittedRecord, TestCause, coloured_noise, disturbance, imperfect_step, nonlinearity,
-    not_at_rest, outliers, quantisation, sampling, saturation, small_step,
+    not_at_rest, outliers, quantisation, sampling, saturation, small_step, steps_held,
 };
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
 use crate::ident::guess::auto_guess;
 use crate::ident::models::Structure;
-use crate::ident::per_step::{MAX_PER_STEP, per_step_fits};
+use crate::ident::per_step::{MAX_PER_STEP, StepFit, per_step_fits, window_data};
 use crate::ident::robust::{RobustFit, robust_fit};
 
 /// A record with its test's artefacts handled.
@@ -92,12 +94,14 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
         outlier_samples.iter().for_each(|&i| keep[i] = true);
         data.keeping(&keep)
     });
-    Handled {
+    let mut handled = Handled {
         data: handled,
         robust_data,
         start: current,
         causes,
-    }
+    };
+    on_first_step_when_nonlinear(&mut handled);
+    handled
 }
 
 /// The start structure with an initial transient and a free Y0, fitted from its guess.
@@ -155,8 +159,8 @@ pub fn finish(
 
 /// The causes that change nothing in the fit, read off the final model and the record:
 /// an imperfect step, the output's resolution, the sampling period against the notes'
-/// rules, a step small against the noise, and, on a record of 2 to
-/// [`MAX_PER_STEP`] changes, each change's own gain against the others.
+/// rules, a step small against the noise, and each change's own gain against the others
+/// (on a record [`on_first_step_when_nonlinear`] did not already cut to its first step).
 fn reported(data: &FitData, last: &FitReport) -> Vec<TestCause> {
     let mut found: Vec<TestCause> = imperfect_step(data).into_iter().collect();
     if let Some(record) = FittedRecord::new(data, last) {
@@ -164,18 +168,54 @@ fn reported(data: &FitData, last: &FitReport) -> Vec<TestCause> {
         found.extend(sampling(&record));
         found.extend(small_step(&record));
     }
-    let changes = data.input.changes.len();
-    if (2..=MAX_PER_STEP).contains(&changes) {
-        let options = FitOptions {
-            starts: 4,
-            ..FitOptions::default()
-        };
-        let mut structure = last.model.structure;
-        structure.transient = false;
-        let fits = per_step_fits(data, structure, &options);
-        found.extend(nonlinearity(last, &fits, data.sampling_period()));
-    }
+    found.extend(step_gains_differ(data, last).map(|(cause, _)| cause));
     found
+}
+
+/// `nonlinearity` on a record of 2 to [`MAX_PER_STEP`] changes, each held long enough to
+/// show its response ([`steps_held`]): each change fitted on its own window with `fitted`'s process
+/// model, against `fitted` itself; the cause with the per-step fits.
+fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, Vec<StepFit>)> {
+    let changes = data.input.changes.len();
+    if !(2..=MAX_PER_STEP).contains(&changes) || !steps_held(data, &fitted.model) {
+        return None;
+    }
+    let options = FitOptions {
+        starts: 4,
+        ..FitOptions::default()
+    };
+    let mut structure = fitted.model.structure;
+    structure.transient = false;
+    let fits = per_step_fits(data, structure, &options);
+    let cause = nonlinearity(fitted, &fits, data.sampling_period())?;
+    Some((cause, fits))
+}
+
+/// `nonlinearity` checked before the model's causes. A gain that differs between the up
+/// and the down step (or from one operating point to another) leaves a joint linear fit
+/// levels it cannot reach, and a drift, a zero or a pole would be kept to absorb them, with
+/// lags bent to suit. So when the changes' own gains differ, the cause is named and the
+/// model is sought where a linear model holds: on the first change's window (the step from
+/// the operating point the test started at, the notes' advice of a step about one
+/// operating point), starting from that change's own fit; the samples from the second
+/// change on are left out of the fit (the cause's handling says so), and the per-step
+/// table in the evidence shows every change. The robust fit's data are cut the same way.
+fn on_first_step_when_nonlinear(handled: &mut Handled) {
+    let Some((mut cause, fits)) = step_gains_differ(&handled.data, &handled.start) else {
+        return;
+    };
+    let first = fits.into_iter().next().and_then(|f| f.fit.ok());
+    let cut = handled.data.input.changes.get(1).map(|c| c.t);
+    let end = handled.data.times.last().copied();
+    if let (Some(first), Some(window), Some(start), Some(end)) =
+        (first, window_data(&handled.data, 0), cut, end)
+    {
+        handled.robust_data = handled.robust_data.take().and_then(|d| window_data(&d, 0));
+        handled.data = window;
+        handled.start = first;
+        cause.handling = super::Handling::Excluded { start, end };
+    }
+    handled.causes.push(cause);
 }
 
 fn robust(data: &FitData, last: &FitReport) -> Option<RobustFit> {

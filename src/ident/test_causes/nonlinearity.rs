@@ -3,14 +3,34 @@
 //! process gives the same one every time. Named when a change's gain differs from the joint
 //! fit's beyond both 95 % intervals and by more than the record resolves (the per-step
 //! table's rule, [`agreement`]): up against down, small against large, one operating point
-//! against another. The evidence lists every change's gain with its interval. Cost: nothing
-//! beyond the per-step fits the diagnosis already has.
+//! against another. The evidence lists every change's gain with its interval. Only on a
+//! record whose changes were each held long enough to show their response ([`steps_held`]).
+//! Cost: nothing beyond the per-step fits the diagnosis already has.
 
-use crate::ident::fit::FitReport;
-use crate::ident::models::Param;
+use crate::ident::fit::{FitData, FitReport};
+use crate::ident::models::{Model, Param};
 use crate::ident::per_step::{Agreement, StepFit, agreement};
 
-use super::{Handling, StepGain, TestCause, TestCauseKind, TestEvidence};
+use super::{Handling, StepGain, TestCause, TestCauseKind, TestEvidence, TimeScales};
+
+/// Whether every change of `data` was held long enough for its own gain to be read: until
+/// the next change (or the record's end) at least `model`'s dead time plus its slowest time
+/// constant, so that each window shows at least 63 % of its response. A shorter hold is an
+/// actuator's overshoot settling or a wobble's swing (or a busy input): cut into such
+/// windows, each piece's "gain" is the actuator's motion, not the process's.
+pub fn steps_held(data: &FitData, model: &Model) -> bool {
+    let scales = TimeScales::of(model);
+    let Some(&slowest) = scales.time_constants.first() else {
+        return false;
+    };
+    let needed = scales.dead_time + slowest;
+    let end = data.times.last().copied().unwrap_or(f64::NEG_INFINITY);
+    let changes = &data.input.changes;
+    changes.iter().enumerate().all(|(k, c)| {
+        let until = changes.get(k + 1).map_or(end, |next| next.t);
+        until - c.t >= needed
+    })
+}
 
 /// Each fitted change's own static gain and its 95 % interval (failed fits left out).
 pub fn step_gains(fits: &[StepFit]) -> Vec<StepGain> {
@@ -88,6 +108,24 @@ mod tests {
         assert!((steps[1].kp - 0.9).abs() < 0.05, "{steps:?}");
         assert!((steps[1].u_before - 40.0).abs() < 1e-9 && steps[1].du == -10.0);
         assert_eq!(cause.handling, Handling::PerStepTable);
+    }
+
+    #[test]
+    fn only_steps_held_through_their_response_are_compared() {
+        // τ = 20 s, θ = 3 s: a change must be held 23 s.
+        let held = |second: f64| {
+            let m = messy(Messy {
+                steps: vec![(30.4, 10.0, 1.2), (second, -10.0, 0.9)],
+                n: 280,
+                ..Messy::default()
+            });
+            steps_held(&m.data, &m.fit.model)
+        };
+        assert!(held(150.6));
+        // An overshoot settling 10 s after the jump is the actuator's, not a step.
+        assert!(!held(40.6));
+        // The last change must be held to the record's end (279 s) as well.
+        assert!(!held(262.6));
     }
 
     #[test]
