@@ -563,19 +563,16 @@ fn accept(artefact: Artefact) {
 }
 
 #[test]
-#[ignore = "below the acceptance today (15/20 no structure, 15/20 named): run with --ignored"]
 fn a_load_disturbance_is_named_and_not_taken_for_structure() {
     accept(Artefact::Disturbance);
 }
 
 #[test]
-#[ignore = "below the acceptance today (17/20 no structure, 17/20 named): run with --ignored"]
 fn a_clipped_output_is_named_and_left_out() {
     accept(Artefact::Saturation);
 }
 
 #[test]
-#[ignore = "20/20 named, no structure; P2's two lags within 10 % in 17/20: run with --ignored"]
 fn spikes_and_dropouts_are_named_and_fitted_robustly() {
     accept(Artefact::Outliers);
 }

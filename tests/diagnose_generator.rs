@@ -1023,20 +1023,17 @@ fn the_generator_keeps_its_ranges() {
 
 /// Two effects hidden at once, from a P1 start: one of them is named first.
 #[test]
-#[ignore = "below the acceptance today (17/20 right first): run with --ignored"]
 fn a_dead_time_and_an_extra_pole_at_once_are_found() {
     accept(Kind::DeadTimeAndPole);
 }
 
 #[test]
-#[ignore = "below the acceptance today (17/20 right first): run with --ignored"]
 fn a_dead_time_and_an_oscillation_at_once_are_found() {
     accept(Kind::DeadTimeAndOscillation);
 }
 
 /// A strong lead zero from P1: no single extension may pay, the pair P1 → P2Z does.
 #[test]
-#[ignore = "below the acceptance today (7/20 right first): run with --ignored"]
 fn a_strong_lead_zero_from_p1_is_found() {
     accept(Kind::LeadZero);
 }

@@ -346,6 +346,23 @@ impl DiagnoseReport {
             .chain(self.steps.iter().map(|s| &s.fit))
             .collect()
     }
+
+    /// Whether the final fit differs from the chain's last (refitted with a robust loss,
+    /// its intervals widened for coloured noise): it is then shown as a row of its own.
+    pub fn final_differs(&self) -> bool {
+        let last = self.steps.last().map_or(&self.start, |s| &s.fit);
+        let kp = |r: &FitReport| (r.model.get(Param::Kp), r.interval(Param::Kp));
+        self.final_fit.model != last.model || kp(&self.final_fit) != kp(last)
+    }
+
+    /// The rows of the chain table: the chain, then the final fit when it differs.
+    pub fn rows(&self) -> Vec<&FitReport> {
+        let mut rows = self.chain();
+        if self.final_differs() {
+            rows.push(&self.final_fit);
+        }
+        rows
+    }
 }
 
 /// BIC of a fit: N·ln(MSE) + p·ln(N), from the fit's ln MSE (finite at any scale).

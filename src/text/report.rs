@@ -30,6 +30,9 @@ crate::phrases! {
         Interval => ("95 % interval", "Intervalo de 95 %"),
         NoInterval => ("none", "nenhum"),
         Warning => ("Warning", "Atenção"),
+        FinalRow => ("final", "final"),
+        RobustRow => ("robust fit", "ajuste robusto"),
+        WidenedRow => ("intervals", "intervalos"),
     }
 }
 
@@ -58,23 +61,31 @@ pub fn chain_header(lang: Lang) -> [String; CHAIN_COLUMNS] {
     ]
 }
 
-/// The chain table: its header, and one row per model (the start, then each step's):
-/// model, RMSE, fit %, BIC change (empty for the start), Kp ± half its 95 % interval.
+/// The chain table: its header, and one row per model (the start, then each step's, then
+/// the final fit when it differs, [`DiagnoseReport::rows`]): model, RMSE, fit %, BIC change
+/// (empty for the start and the final row), Kp ± half its 95 % interval.
 pub fn chain_rows(
     d: &DiagnoseReport,
     lang: Lang,
 ) -> ([String; CHAIN_COLUMNS], Vec<[String; CHAIN_COLUMNS]>) {
+    let chain = d.chain().len();
     let rows = d
-        .chain()
+        .rows()
         .iter()
         .enumerate()
         .map(|(k, f)| {
             let delta = k
                 .checked_sub(1)
+                .filter(|_| k < chain)
                 .and_then(|i| d.steps.get(i))
                 .map_or(String::new(), |s| num(lang, s.gain.criterion_delta, 4));
+            let name = f.model.structure.text(lang);
             [
-                f.model.structure.text(lang),
+                if k < chain {
+                    name
+                } else {
+                    format!("{name}, {}", final_handling(d, lang))
+                },
                 num(lang, f.rmse, 4),
                 num(lang, f.fit_percent, 4),
                 delta,
@@ -83,6 +94,34 @@ pub fn chain_rows(
         })
         .collect();
     (chain_header(lang), rows)
+}
+
+/// What the final row's fit had done to it: `final (robust fit, Cauchy; intervals × 2.9)`.
+fn final_handling(d: &DiagnoseReport, lang: Lang) -> String {
+    use crate::ident::test_causes::Handling;
+    let done: Vec<String> = d
+        .test_causes
+        .iter()
+        .filter_map(|c| match c.handling {
+            Handling::RobustLoss { loss } => Some(format!(
+                "{}, {}",
+                ReportPhrase::RobustRow.get(lang),
+                loss.name()
+            )),
+            Handling::IntervalsWidened { factor } => Some(format!(
+                "{} × {}",
+                ReportPhrase::WidenedRow.get(lang),
+                num(lang, factor, 3)
+            )),
+            _ => None,
+        })
+        .collect();
+    let final_word = ReportPhrase::FinalRow.get(lang);
+    if done.is_empty() {
+        final_word.to_string()
+    } else {
+        format!("{final_word} ({})", done.join("; "))
+    }
 }
 
 /// The chain table as tab-separated text, for a spreadsheet or a report.

@@ -470,10 +470,7 @@ impl Localize for Handling {
                 )
             }
             Handling::RobustLoss { loss } => {
-                let name = match loss {
-                    Loss::Huber => "Huber",
-                    Loss::Cauchy => "Cauchy",
-                };
+                let name = loss.name();
                 lang.pick(
                     format!("Degrau fitted with a robust loss ({name}) instead of least squares."),
                     format!(

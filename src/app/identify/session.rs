@@ -606,7 +606,7 @@ impl Session {
                 .or_else(|| self.guess_model().map(|m| (m, Shown::Fitting)));
         }
         if let (Some(k), Some(d)) = (self.selected_step, &self.diagnosis) {
-            return d.chain().get(k).map(|f| (f.model, Shown::ChainRow(k)));
+            return d.rows().get(k).map(|f| (f.model, Shown::ChainRow(k)));
         }
         let l = self.loaded.as_ref()?;
         match (&self.report, &self.fitted) {
@@ -958,7 +958,7 @@ impl Session {
     }
 
     fn select_step(&mut self, k: usize) {
-        if self.diagnosis.as_ref().is_some_and(|d| k < d.chain().len()) {
+        if self.diagnosis.as_ref().is_some_and(|d| k < d.rows().len()) {
             self.selected_step = Some(k);
         }
     }

@@ -184,6 +184,16 @@ pub enum Loss {
     Cauchy,
 }
 
+impl Loss {
+    /// Its author's name, the same in every language.
+    pub fn name(self) -> &'static str {
+        match self {
+            Loss::Huber => "Huber",
+            Loss::Cauchy => "Cauchy",
+        }
+    }
+}
+
 /// The evidence for a cause of the test, with its numbers; times in seconds, levels in the
 /// signal's units.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
