@@ -30,7 +30,7 @@ crate::phrases! {
         Interval => ("95 % interval", "Intervalo de 95 %"),
         NoInterval => ("none", "nenhum"),
         Warning => ("Warning", "Atenção"),
-        FinalRow => ("final", "final"),
+        FinalRow => ("final fit", "ajuste final"),
         RobustRow => ("robust fit", "ajuste robusto"),
         WidenedRow => ("intervals", "intervalos"),
     }
@@ -96,7 +96,7 @@ pub fn chain_rows(
     (chain_header(lang), rows)
 }
 
-/// What the final row's fit had done to it: `final (robust fit, Cauchy; intervals × 2.9)`.
+/// What the final row's fit had done to it: `final fit (robust fit, Cauchy; intervals × 2.9)`.
 fn final_handling(d: &DiagnoseReport, lang: Lang) -> String {
     use crate::ident::test_causes::Handling;
     let done: Vec<String> = d
