@@ -282,6 +282,7 @@ fn generate_with(
     let exact = Excitation {
         steps: input.steps,
         lead_range: 0.0,
+        start: None,
         ..logged
     };
     let s = Structure::parse(code).unwrap();
@@ -476,6 +477,7 @@ fn clean_step(seed: u64) -> Case {
             du,
         }],
         lead_range: 0.0,
+        start: None,
         ..measured
     };
     let s = Structure::parse("P1").unwrap();

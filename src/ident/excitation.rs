@@ -76,6 +76,10 @@ pub struct Excitation {
     pub changes: Vec<InputChange>,
     /// How long before its instant each change may have happened (s): 0 for exact instants.
     pub lead_range: f64,
+    /// The record's first instant (s), the origin of an initial transient's coefficients;
+    /// `None` for a typed step (the first change is the origin).
+    #[serde(default)]
+    pub start: Option<f64>,
 }
 
 /// Share of the input's range a jump must exceed to be a change.
@@ -99,6 +103,7 @@ impl Excitation {
                 index: None,
             }],
             lead_range: 0.0,
+            start: None,
         }
     }
 
@@ -170,6 +175,7 @@ impl Excitation {
             ramps,
             changes,
             lead_range,
+            start: time.first().copied(),
         })
     }
 
@@ -271,6 +277,7 @@ impl Excitation {
                 })
                 .collect(),
             lead_range: self.lead_range / t_unit,
+            start: self.start.map(time),
         }
     }
 

@@ -18,11 +18,14 @@
 //!   (0 ≤ Ta < Ts), or, with a dead time, lets Td go down to −Ts (the response starting
 //!   before the sample that first shows the change);
 //! - **the initial transient** (`X1`, `X2`, `X3`, output units): a test not at rest at its
-//!   first change carries the free response of G's own poles, x(t) = Σ Xᵢ·φᵢ(t − t0), with
+//!   first change carries the free response of G's own poles, x(t) = Σ Xᵢ·φᵢ(t − ts), with
 //!   φ the Newton basis of the poles' exponentials (e^{p₁τ}, the divided differences
 //!   e^{pτ}[p₁, p₂], e^{pτ}[p₁, p₂, p₃]; e^{στ}cos ωdτ and e^{στ}sin(ωdτ)/ωd for an
 //!   underdamped pair), which stays well conditioned when two poles meet; Xᵢ are the
-//!   coefficients at the first change. An integrator's own mode is Y0 itself.
+//!   coefficients at the record's first sample ts (the first change for a typed step):
+//!   taken from the first change, a fast mode extrapolated back over the samples before it
+//!   grows as e^{|p|·t} and the fit loses itself (a 15 s lag 250 s back: 10⁷). An
+//!   integrator's own mode is Y0 itself.
 
 use serde::{Deserialize, Serialize};
 
@@ -511,6 +514,7 @@ impl Model {
             ramp,
             ramps,
             t0: input.t0(),
+            origin: input.start.map_or(input.t0(), |s| s.min(input.t0())),
             y0: self.values.get(Param::Y0),
             drift: if self.structure.drift {
                 self.values.get(Param::Drift)
@@ -549,8 +553,10 @@ pub struct Simulator {
     /// G(s)/s's unit step response, for the slope changes of a first-order hold.
     ramp: Option<StepResponse>,
     ramps: Vec<(f64, f64)>,
-    /// The first change's instant (s): the origin of the drift and of the transient.
+    /// The first change's instant (s): the origin of the drift.
     t0: f64,
+    /// The origin of the transient (s): the record's first instant, else the first change.
+    origin: f64,
     y0: f64,
     drift: f64,
     transient: Option<Transient>,
@@ -581,7 +587,7 @@ impl Simulator {
         }
         if let Some(x) = &self.transient {
             for (o, &t) in out.iter_mut().zip(times) {
-                *o += x.value(t - t0);
+                *o += x.value(t - self.origin);
             }
         }
     }
@@ -606,7 +612,8 @@ impl Simulator {
     }
 }
 
-/// The initial transient x(τ) = Σ Xᵢ·φᵢ(τ), τ from the first change (see the module docs).
+/// The initial transient x(τ) = Σ Xᵢ·φᵢ(τ), τ from the record's first instant (see the
+/// module docs).
 #[derive(Debug, Clone)]
 struct Transient {
     /// The coefficients X1… (output units).
