@@ -152,7 +152,13 @@ impl Scale {
             Param::Kp if structure.integrator => self.y_unit / self.du_unit / self.t_unit,
             Param::Kp => self.y_unit / self.du_unit,
             Param::Zeta => 1.0,
-            Param::Y0 | Param::X1 | Param::X2 | Param::X3 => self.y_unit,
+            // The transient's basis (models.rs): X1 multiplies a unitless mode; X2 a first
+            // divided difference or sin(ωτ)/ω (time); X3 a second divided difference
+            // (time²), or the third pole's own mode beside a pair (unitless).
+            Param::Y0 | Param::X1 => self.y_unit,
+            Param::X2 => self.y_unit / self.t_unit,
+            Param::X3 if structure.underdamped => self.y_unit,
+            Param::X3 => self.y_unit / (self.t_unit * self.t_unit),
             Param::Drift => self.y_unit / self.t_unit,
             _ => self.t_unit, // the times (Param::is_time)
         }
@@ -283,6 +289,40 @@ mod tests {
         assert_eq!(n.input, Excitation::step(0.0, -1.0));
         assert!((n.y[0] + 1.0).abs() < 1e-15 && (n.y[10] - 1.0).abs() < 1e-15);
         assert!((n.times[10] - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn an_initial_transient_is_the_same_curve_in_either_units() {
+        // X2 multiplies a mode in seconds, X3 one in s² (or a unitless one beside a pair):
+        // scaled as the output alone, the model in the record's units was another curve.
+        let d = data(3.0, 40.0, 2.0);
+        let s = Scale::of(&d, 40.0).unwrap();
+        let n = s.data_in(&d);
+        for code in ["P2", "P3", "P2U", "P3U"] {
+            let mut st = Structure::parse(code).unwrap();
+            st.transient = true;
+            let mut v = Values::default();
+            for (p, x) in [
+                (Param::Kp, 1.5),
+                (Param::Tp1, 50.0),
+                (Param::Tp2, 20.0),
+                (Param::Tp3, 8.0),
+                (Param::Tw, 30.0),
+                (Param::Zeta, 0.4),
+                (Param::Y0, 10.0),
+                (Param::X1, 2.0),
+                (Param::X2, -0.05),
+                (Param::X3, 0.003),
+            ] {
+                v.set(p, x);
+            }
+            let model = Model::new(st, v);
+            let outside = model.simulate(&d.input, &d.times).unwrap();
+            let inside = s.model_in(&model).simulate(&n.input, &n.times).unwrap();
+            for (a, b) in outside.iter().zip(&inside) {
+                assert!((s.output_in(*a) - b).abs() < 1e-12, "{code}: {a} vs {b}");
+            }
+        }
     }
 
     #[test]
