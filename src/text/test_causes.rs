@@ -295,14 +295,24 @@ impl Localize for TestEvidence {
                         )
                     }
                 };
+                let (en, pt) = if *count == 1 {
+                    ("1 sample lies", "1 amostra está")
+                } else {
+                    ("samples lie", "amostras estão")
+                };
+                let n = if *count == 1 {
+                    String::new()
+                } else {
+                    format!("{count} ")
+                };
                 lang.pick(
                     format!(
-                        "{count} samples lie more than {thr} from the model ({why}), the worst \
-                         by {worst}: t = {list}{more} s."
+                        "{n}{en} more than {thr} from the model ({why}), the worst by \
+                         {worst}: t = {list}{more} s."
                     ),
                     format!(
-                        "{count} amostras estão a mais de {thr} do modelo ({why}), a pior a \
-                         {worst}: t = {list}{more} s."
+                        "{n}{pt} a mais de {thr} do modelo ({why}), a pior a {worst}: t = \
+                         {list}{more} s."
                     ),
                 )
             }
