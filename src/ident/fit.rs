@@ -217,7 +217,22 @@ impl FitObserver for () {}
 pub struct Estimate {
     pub param: Param,
     pub value: f64,
+    /// The Wald interval, cut to the parameter's feasible range (a step-instant lead Ta in
+    /// [0, Ts), a lag above zero): what lies outside it is no value the model can take.
     pub ci95: Option<(f64, f64)>,
+    /// The feasible range the fit searched (record units); not written out.
+    #[serde(skip)]
+    pub bounds: Option<(f64, f64)>,
+}
+
+impl Estimate {
+    /// `(lo, hi)` cut to the feasible range, when known.
+    fn within_bounds(&self, (lo, hi): (f64, f64)) -> (f64, f64) {
+        match self.bounds {
+            Some((a, b)) => (lo.max(a), hi.min(b)),
+            None => (lo, hi),
+        }
+    }
 }
 
 /// The result of a fit.
@@ -262,10 +277,10 @@ impl FitReport {
     pub fn widen_intervals(&mut self, factor: f64) {
         for e in &mut self.params {
             if let Some((lo, hi)) = e.ci95 {
-                e.ci95 = Some((
+                e.ci95 = Some(e.within_bounds((
                     e.value - factor * (e.value - lo),
                     e.value + factor * (hi - e.value),
-                ));
+                )));
             }
         }
     }
@@ -1217,12 +1232,22 @@ impl Problem {
                 .iter()
                 .zip(&run.x)
                 .zip(intervals)
-                .map(|((&param, &value), ci95)| Estimate {
-                    param,
-                    value: out(param, value),
-                    ci95: ci95
-                        .map(|(lo, hi)| (out(param, lo), out(param, hi)))
-                        .filter(|(lo, hi)| lo.is_finite() && hi.is_finite()),
+                .enumerate()
+                .map(|(i, ((&param, &value), ci95))| {
+                    let estimate = Estimate {
+                        param,
+                        value: out(param, value),
+                        ci95: None,
+                        bounds: Some((out(param, self.lower[i]), out(param, self.upper[i]))),
+                    };
+                    Estimate {
+                        ci95: ci95
+                            .map(|(lo, hi)| {
+                                estimate.within_bounds((out(param, lo), out(param, hi)))
+                            })
+                            .filter(|(lo, hi)| lo.is_finite() && hi.is_finite()),
+                        ..estimate
+                    }
                 })
                 .collect(),
             model,
@@ -1528,6 +1553,35 @@ mod tests {
             structure,
             v,
         )
+    }
+
+    #[test]
+    fn intervals_stay_within_what_the_parameters_can_be() {
+        // A step between samples logged at the next one: the lead Ta ∈ [0, Ts) is barely
+        // determined by noisy data, and its Wald interval (before and after widening for
+        // coloured noise) must not reach below 0 or past Ts.
+        let truth = [(Param::Kp, 1.5), (Param::Tp1, 4.0), (Param::Y0, 3.0)];
+        let (mut data, mut s, v) = synthetic("P1", &truth, 0.05);
+        let u: Vec<f64> = data
+            .times
+            .iter()
+            .map(|&t| if t >= 2.05 { 2.0 } else { 0.0 })
+            .collect();
+        data.input =
+            Excitation::measured(&data.times, &u, None, crate::ident::excitation::Hold::Zoh)
+                .unwrap();
+        s.lead = true;
+        let mut r = fit(&data, s, v, &FitOptions::default(), &mut ()).unwrap();
+        let inside = |r: &FitReport| {
+            r.params.iter().all(|e| {
+                let (lo, hi) = bounds(e.param, &data);
+                e.ci95.is_none_or(|(a, b)| a >= lo && b <= hi)
+            })
+        };
+        assert!(r.interval(Param::Ta).is_some());
+        assert!(inside(&r), "{:?}", r.params);
+        r.widen_intervals(5.0);
+        assert!(inside(&r), "{:?}", r.params);
     }
 
     #[test]

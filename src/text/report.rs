@@ -422,6 +422,7 @@ mod tests {
                     param: p,
                     value: values.get(p),
                     ci95: Some((values.get(p) - 0.01, values.get(p) + 0.01)),
+                    bounds: None,
                 })
                 .collect(),
             model,
