@@ -59,6 +59,23 @@ fn leci_from_p2u_names_the_dead_time_and_ends_at_the_notes_model() {
     );
 }
 
+/// From the default start P1 the LECI test needs two effects at once: P2U alone still lacks
+/// the dead time, so its residuals stay correlated and the corrected BIC refuses it; the
+/// pair pays, and the chain ends at the notes' model.
+#[test]
+fn leci_from_p1_reaches_the_notes_model_through_a_pair() {
+    let j = diagnose(&[LECI, "--t0", "5", "--du", "10", "--y0", "50"]);
+    assert_eq!(j["start"]["model"], "P1");
+    let fin = &j["final"];
+    assert_eq!(fin["model"], "P2DU", "{}", j["steps"]);
+    let p = &fin["params"];
+    let close = |v: f64, truth: f64| (v - truth).abs() <= 0.02 * truth;
+    assert!(close(p["Kp"].as_f64().unwrap(), 1.0021), "{p}");
+    assert!(close(p["Td"].as_f64().unwrap(), 1.759), "{p}");
+    assert!(close(p["Zeta"].as_f64().unwrap(), 0.1948), "{p}");
+    assert!(fin["fit_percent"].as_f64().unwrap() > 85.0, "{fin}");
+}
+
 #[test]
 fn tclab_from_p1_names_a_dead_time_or_a_pole_and_finds_the_gain() {
     let j = diagnose(&[TCLAB, "--y-col", "T1", "--u-col", "Q1", "--start", "P1"]);

@@ -486,6 +486,13 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
             .collect(),
     );
     let leader_extension = leader.as_ref().map(|(e, _)| *e);
+    // The leader pays by the plain BIC but not by the corrected one: its residuals are
+    // correlated, which coloured noise does, and so does a second effect still missing
+    // (P2U without its dead time on the LECI test); pairs may tell, judged by the corrected
+    // BIC, which coloured noise does not pass.
+    let leader_plainly = leader
+        .as_ref()
+        .is_some_and(|(_, c)| plainly_pays(current, c));
     let single = paying
         .or(leader.filter(|_| far))
         .and_then(|w| on_every_sample(data, w))
@@ -493,7 +500,7 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
     let (extension, paired, candidate) = match single {
         Some((e, c)) => (e, None, c),
         None => {
-            if !far {
+            if !far && !leader_plainly {
                 return None;
             }
             let ((mut e1, mut e2), c) = best_pair(data, current, allowed)?;
