@@ -90,3 +90,32 @@ fn bad_input_is_refused_in_words() {
         );
     }
 }
+
+/// A test not at rest fitted with the app's default structure: the initial transient's
+/// coefficients are taken at the record's first sample, so X1 is where the output started,
+/// from Y0 (taken at the step, a fast mode extrapolated back over the 250 s before it blew
+/// the fit up). That X2 is in the record's units is checked in `ident::scale`.
+#[test]
+fn a_p2du_on_a_test_not_at_rest_fits_and_starts_where_the_output_did() {
+    let sbhs = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/records/sbhs_step_not_at_rest_synthetic.txt"
+    );
+    let j = fit(&[
+        sbhs,
+        "--time-col",
+        "1",
+        "--u-col",
+        "2",
+        "--y-col",
+        "4",
+        "--model",
+        "P2DU",
+    ]);
+    assert!(j["fit_percent"].as_f64().unwrap() > 90.0, "{j}");
+    let p = &j["params"];
+    // The stand-in's process: 0.23/(58s + 1) °C/%, from 29.2 °C at the first sample.
+    assert!((p["Kp"].as_f64().unwrap() - 0.23).abs() < 0.01, "{p}");
+    let start = p["Y0"].as_f64().unwrap() + p["X1"].as_f64().unwrap();
+    assert!((start - 29.2).abs() < 0.3, "{p}");
+}

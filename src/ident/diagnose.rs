@@ -26,7 +26,7 @@ use super::guess::{auto_guess, features};
 use super::models::{Model, Param, Structure, Values};
 use super::residuals::{self, ResidualAnalysis};
 use super::stats::lag_one;
-use super::test_causes::{TestCause, TestCauseKind, handling};
+use super::test_causes::{TestCause, TestCauseKind, handling, time_constants};
 
 /// An extension must lower BIC by more than this to be kept.
 pub const BIC_THRESHOLD: f64 = 10.0;
@@ -721,20 +721,20 @@ fn refit(
         .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse))
 }
 
-/// The slowest time constant of `model` (s): its real lags, |Tz|, and a pair's Tw (not its
-/// envelope Tw/ζ: a lightly damped ringing shows its period however slowly it decays); 0
-/// for a model without any.
-pub fn slowest_lag(model: &Model) -> f64 {
-    let params = model.structure.params();
-    let mut lags: Vec<f64> = [Param::Tp1, Param::Tp2, Param::Tp3, Param::Tz]
-        .into_iter()
-        .filter(|p| params.contains(p))
-        .map(|p| model.get(p).abs())
-        .collect();
-    if params.contains(&Param::Tw) {
-        lags.push(model.get(Param::Tw));
-    }
-    lags.into_iter().fold(0.0, f64::max)
+/// The slowest time constant of `model` (s): its poles' ([`time_constants`]: a pair's Tw,
+/// not its envelope Tw/ζ, for a lightly damped ringing shows its period however slowly it
+/// decays) and a zero's |Tz|; 0 for a model without any.
+fn slowest_lag(model: &Model) -> f64 {
+    let zero = if model.structure.zero {
+        model.get(Param::Tz).abs()
+    } else {
+        0.0
+    };
+    time_constants(model)
+        .first()
+        .copied()
+        .unwrap_or(0.0)
+        .max(zero)
 }
 
 /// Whether `candidate` leans on a time constant slower than the record can show: longer

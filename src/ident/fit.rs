@@ -1556,6 +1556,29 @@ mod tests {
     }
 
     #[test]
+    fn a_gap_where_samples_were_left_out_is_no_alias() {
+        // A ringing pair sampled 30 times a period: no alias. With 40 samples of its
+        // transient left out (a disturbance's window, a clipped span), the straight line
+        // across the gap misses the ringing, but that is no sampling interval.
+        let truth = [
+            (Param::Kp, 1.0),
+            (Param::Tw, 1.0),
+            (Param::Zeta, 0.2),
+            (Param::Y0, 0.0),
+        ];
+        let (data, s, v) = synthetic("P2U", &truth, 0.0);
+        let model = Model::new(s, v);
+        assert!(alias_warning(&model, &data).is_none());
+        let keep: Vec<bool> = (0..data.y.len()).map(|i| !(40..80).contains(&i)).collect();
+        let gapped = data.keeping(&keep);
+        assert!(
+            alias_warning(&model, &gapped).is_none(),
+            "{:?}",
+            alias_warning(&model, &gapped)
+        );
+    }
+
+    #[test]
     fn intervals_stay_within_what_the_parameters_can_be() {
         // A step between samples logged at the next one: the lead Ta ∈ [0, Ts) is barely
         // determined by noisy data, and its Wald interval (before and after widening for

@@ -560,6 +560,39 @@ mod tests {
     }
 
     #[test]
+    fn a_final_fit_with_widened_intervals_is_a_row_of_its_own() {
+        use crate::ident::test_causes::{Handling, TestCause, TestCauseKind, TestEvidence};
+        let mut d = chain();
+        assert_eq!(
+            chain_rows(&d, Lang::En).1.len(),
+            2,
+            "the same fit: no extra row"
+        );
+        d.final_fit.widen_intervals(3.0);
+        d.test_causes.push(TestCause {
+            kind: TestCauseKind::ColouredNoise,
+            evidence: TestEvidence::ColouredNoise {
+                lag1: 0.8,
+                widening: 3.0,
+            },
+            interval: None,
+            handling: Handling::IntervalsWidened { factor: 3.0 },
+        });
+        let (_, rows) = chain_rows(&d, Lang::En);
+        assert_eq!(rows.len(), 3);
+        assert_eq!(rows[2][0], "P2DU, final fit (intervals × 3)");
+        assert_eq!(rows[2][3], "", "the final row is no step");
+        // ±0.01 widened three times: the Kp the verdict quotes, with its interval.
+        assert_eq!(rows[2][4], "1.002 ± 0.03");
+        let (_, pt) = chain_rows(&d, Lang::Pt);
+        assert!(
+            pt[2][0].ends_with("ajuste final (intervalos × 3)"),
+            "{}",
+            pt[2][0]
+        );
+    }
+
+    #[test]
     fn a_parameter_interval_keeps_its_two_numbers_apart() {
         let (_, rows) = param_rows(&report(), Lang::Pt);
         assert_eq!(rows[0][0], "Kp");

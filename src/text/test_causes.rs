@@ -272,46 +272,45 @@ impl Localize for TestEvidence {
                 // The threshold is THRESHOLD robust σ, or two output quanta when the
                 // residuals' scale is below the resolution (a quantised record's MAD is 0).
                 let by_quanta = *threshold > outliers::THRESHOLD * scale * (1.0 + 1e-9);
-                let why = match (by_quanta, lang) {
-                    (true, Lang::En) => format!(
-                        "two output quanta: the residuals' robust scale, {scale_w}, is below \
-                         the resolution"
-                    ),
-                    (true, Lang::Pt) => format!(
-                        "dois quanta da saída: a escala robusta dos resíduos, {scale_w}, está \
-                         abaixo da resolução"
-                    ),
-                    (false, _) => {
-                        let k = n4(lang, threshold / scale);
-                        lang.pick(
-                            format!(
-                                "{k} × the residuals' robust scale {scale_w}, from the median \
-                                 absolute deviation"
-                            ),
-                            format!(
-                                "{k} × a escala robusta dos resíduos, {scale_w}, pelo desvio \
-                                 absoluto mediano"
-                            ),
-                        )
-                    }
+                let why = if by_quanta {
+                    lang.pick(
+                        format!(
+                            "two output quanta: the residuals' robust scale, {scale_w}, is \
+                             below the resolution"
+                        ),
+                        format!(
+                            "dois quanta da saída: a escala robusta dos resíduos, {scale_w}, \
+                             está abaixo da resolução"
+                        ),
+                    )
+                } else {
+                    let k = n4(lang, threshold / scale);
+                    lang.pick(
+                        format!(
+                            "{k} × the residuals' robust scale {scale_w}, from the median \
+                             absolute deviation"
+                        ),
+                        format!(
+                            "{k} × a escala robusta dos resíduos, {scale_w}, pelo desvio \
+                             absoluto mediano"
+                        ),
+                    )
                 };
                 let (en, pt) = if *count == 1 {
-                    ("1 sample lies", "1 amostra está")
+                    ("1 sample lies".to_string(), "1 amostra está".to_string())
                 } else {
-                    ("samples lie", "amostras estão")
-                };
-                let n = if *count == 1 {
-                    String::new()
-                } else {
-                    format!("{count} ")
+                    (
+                        format!("{count} samples lie"),
+                        format!("{count} amostras estão"),
+                    )
                 };
                 lang.pick(
                     format!(
-                        "{n}{en} more than {thr} from the model ({why}), the worst by \
-                         {worst}: t = {list}{more} s."
+                        "{en} more than {thr} from the model ({why}), the worst by {worst}: \
+                         t = {list}{more} s."
                     ),
                     format!(
-                        "{n}{pt} a mais de {thr} do modelo ({why}), a pior a {worst}: t = \
+                        "{pt} a mais de {thr} do modelo ({why}), a pior a {worst}: t = \
                          {list}{more} s."
                     ),
                 )
@@ -948,6 +947,34 @@ mod tests {
                 "{h} has no example"
             );
         }
+    }
+
+    #[test]
+    fn one_outlier_on_a_quantised_record_is_said_without_an_infinite_ratio() {
+        // A quantised record's MAD is 0: the threshold is two quanta, not k × 0.
+        let e = TestEvidence::Outliers {
+            count: 1,
+            times: vec![93.82],
+            scale: 0.0,
+            threshold: 0.64,
+            worst: -15.68,
+        };
+        let en = e.text(Lang::En);
+        assert!(en.starts_with("1 sample lies more than 0.64"), "{en}");
+        assert!(en.contains("two output quanta"), "{en}");
+        assert!(!en.contains("inf"), "{en}");
+        let pt = e.text(Lang::Pt);
+        assert!(pt.starts_with("1 amostra está a mais de 0,64"), "{pt}");
+        let many = TestEvidence::Outliers {
+            count: 3,
+            times: vec![1.0, 2.0, 3.0],
+            scale: 0.1,
+            threshold: 0.5,
+            worst: 2.0,
+        };
+        let en = many.text(Lang::En);
+        assert!(en.starts_with("3 samples lie more than 0.5"), "{en}");
+        assert!(en.contains("5 × the residuals' robust scale 0.1"), "{en}");
     }
 
     #[test]

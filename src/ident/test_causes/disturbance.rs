@@ -9,8 +9,11 @@
 //! N·(1 − ρ)/(1 + ρ) independent samples, so coloured noise wandering about does not count),
 //! be flat before its instant, be significant (z above [`MIN_Z`], with the same
 //! correction), and explain the record better than any structural extension of the model
-//! (a drift, an integrator, a zero, …) would (BIC). The samples from that instant on are then left out of the fit: they are not
-//! the process's answer to the input, and not a drift.
+//! (a drift, an integrator, a zero, …) would (BIC). A fit of the whole record leans towards
+//! the disturbed samples, so when this first look finds nothing the model is refitted
+//! without the samples from the likeliest instant on and the test made again on what the
+//! refit leaves. The samples from the instant on are then left out of the fit: they are
+//! not the process's answer to the input, and not a drift.
 
 use super::{DisturbanceShape, Handling, TestCause, TestCauseKind, TestEvidence};
 use crate::ident::diagnose::{BIC_THRESHOLD, best_extension_bic};

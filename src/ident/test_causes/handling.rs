@@ -130,9 +130,10 @@ fn refit(data: &FitData, current: &FitReport) -> Option<FitReport> {
 }
 
 /// The loop's final fit with the handling that comes after it: the robust loss on the
-/// outliers ([`outliers::LOSS`]), and, when the loop ended because no extension paid (`adequate`), the
-/// intervals widened for correlated residuals, which names `coloured_noise`; the causes
-/// found are appended to `causes`, then all are put in [`super::TestCauseKind::ALL`]'s order.
+/// outliers ([`outliers::LOSS`]), and, when the loop ended because no extension paid
+/// (`adequate`), the intervals widened for correlated residuals, which names
+/// `coloured_noise`; the causes found are appended to `causes`, then all are put in
+/// [`super::TestCauseKind::ALL`]'s order.
 pub fn finish(
     handled: &Handled,
     last: FitReport,
@@ -173,8 +174,8 @@ fn reported(data: &FitData, last: &FitReport) -> Vec<TestCause> {
 }
 
 /// `nonlinearity` on a record of 2 to [`MAX_PER_STEP`] changes, each held long enough to
-/// show its response ([`steps_held`]): each change fitted on its own window with `fitted`'s process
-/// model, against `fitted` itself; the cause with the per-step fits.
+/// show its response ([`steps_held`]): each change fitted on its own window with
+/// `fitted`'s process model, against `fitted` itself; the cause with the per-step fits.
 fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, Vec<StepFit>)> {
     let changes = data.input.changes.len();
     if !(2..=MAX_PER_STEP).contains(&changes) || !steps_held(data, &fitted.model) {

@@ -37,7 +37,7 @@ mod testing;
 pub use imperfect_step::{imperfect_step, input_at};
 pub use nonlinearity::{nonlinearity, step_gains, steps_held};
 pub use quantisation::{COARSE_SHARE, quantisation, resolution};
-pub use sampling::{TimeScales, sampling, sampling_checks};
+pub use sampling::{TimeScales, sampling, sampling_checks, time_constants};
 pub use small_step::{SMALL_STEP_RATIO, small_step};
 
 /// A cause of the test, with a stable identifier.

@@ -47,22 +47,7 @@ pub struct TimeScales {
 impl TimeScales {
     /// The time scales of `model`'s G(s).
     pub fn of(model: &Model) -> Self {
-        let s = &model.structure;
-        let mut taus: Vec<f64> = if s.underdamped {
-            let mut t = vec![model.get(Param::Tw)];
-            if s.poles == 3 {
-                t.push(model.get(Param::Tp3));
-            }
-            t
-        } else {
-            [Param::Tp1, Param::Tp2, Param::Tp3]
-                .into_iter()
-                .take(s.poles as usize)
-                .map(|p| model.get(p))
-                .collect()
-        };
-        taus.retain(|t| t.is_finite() && *t > 0.0);
-        taus.sort_by(|a, b| b.total_cmp(a));
+        let taus = time_constants(model);
         let options = StepInfoOptions {
             settling_threshold: 0.05,
             ..StepInfoOptions::default()
@@ -78,6 +63,28 @@ impl TimeScales {
             settling_time,
         }
     }
+}
+
+/// The time constants of `model`'s poles (s): Tp1…Tp3, or Tw for a pair and Tp3; finite
+/// and positive ones, slowest first. Cheap: no response is computed.
+pub fn time_constants(model: &Model) -> Vec<f64> {
+    let s = &model.structure;
+    let mut taus: Vec<f64> = if s.underdamped {
+        let mut t = vec![model.get(Param::Tw)];
+        if s.poles == 3 {
+            t.push(model.get(Param::Tp3));
+        }
+        t
+    } else {
+        [Param::Tp1, Param::Tp2, Param::Tp3]
+            .into_iter()
+            .take(s.poles as usize)
+            .map(|p| model.get(p))
+            .collect()
+    };
+    taus.retain(|t| t.is_finite() && *t > 0.0);
+    taus.sort_by(|a, b| b.total_cmp(a));
+    taus
 }
 
 /// Each of the notes' rules that applies to `scales`, with the ratio of sampling period

@@ -97,15 +97,15 @@ fn clipped(data: &FitData, current: &FitReport, side: f64) -> Option<(TestCause,
     Some((cause, held))
 }
 
-/// Whether the record piles up at `level` as only a limit makes it: more samples held there
-/// (`held`, in runs or not) than within one noise standard deviation (at least one quantum) short of it.
-/// A live signal's extreme is the top of its noise, a thin tail: a continuous record never
-/// repeats it, and a quantised one dithered by its noise (σ ≥ q/2) holds fewer samples at
-/// its top level than at the levels just under it, once the noise spans a few levels
-/// (σ ≥ [`DITHERED`]·q). A clipped record holds there every sample the limit caught, even
-/// when the limit sits within the noise of the final value and the model goes past it by
-/// less than [`BEYOND`] σ. A coarser record (a TCLab's 0.32 °C under σ ≈ 0.2 °C) can rest
-/// on its top level, or end there still rising: it is left to the model's test.
+/// Whether the record piles up at `level` as only a limit makes it: more samples there
+/// (`held`, in runs or not) than within one noise standard deviation (at least one quantum)
+/// short of it. A live signal's extreme is the top of its noise, a thin tail: a continuous
+/// record never repeats it, and a quantised one whose noise spans a few levels
+/// (σ ≥ [`DITHERED`]·q) holds fewer samples at its top level than at the levels just under
+/// it. A clipped record holds there every sample the limit caught, even when the limit sits
+/// within the noise of the final value and the model goes past it by less than [`BEYOND`] σ.
+/// A coarser record (a TCLab's 0.32 °C under σ ≈ 0.2 °C) can rest on its top level, or end
+/// there still rising: it is left to the model's test.
 fn piled_up(y: &[f64], level: f64, side: f64, held: usize, noise: f64) -> bool {
     let q = resolution(y);
     if q.is_some_and(|q| noise < DITHERED * q) {
