@@ -604,7 +604,7 @@ fn best_pair(
                 .into_iter()
                 .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
                 .filter(|r| r.ln_mse.is_finite() && !aliased(r))
-                .filter(|r| !beyond_record(data, current, r))
+                .filter(|r| !beyond_record(data, &current.model, &r.model))
                 .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse));
             if let Some(r) = fitted
                 && best.as_ref().is_none_or(|(_, b)| bic(&r) < bic(b))
@@ -716,7 +716,7 @@ fn refit(
     starts
         .into_iter()
         .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
-        .filter(|r| !aliased(r) && !beyond_record(data, current, r))
+        .filter(|r| !aliased(r) && !beyond_record(data, &current.model, &r.model))
         .filter(|r| r.ln_mse.is_finite())
         .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse))
 }
@@ -742,9 +742,9 @@ fn slowest_lag(model: &Model) -> f64 {
 /// lag (a pole or zero of thousands of seconds on a record of minutes) is not identifiable:
 /// it only bends the tail, as a drift would, and its static gain is an extrapolation. It is
 /// the mirror of [`aliased`], a lag too fast for the sampling.
-fn beyond_record(data: &FitData, current: &FitReport, candidate: &FitReport) -> bool {
-    let slowest = slowest_lag(&candidate.model);
-    slowest > data.duration() && slowest > 2.0 * slowest_lag(&current.model)
+fn beyond_record(data: &FitData, current: &Model, candidate: &Model) -> bool {
+    let slowest = slowest_lag(candidate);
+    slowest > data.duration() && slowest > 2.0 * slowest_lag(current)
 }
 
 /// The current values with the new parameter set to a few plausible values.
@@ -1027,5 +1027,44 @@ fn verdict(data: &FitData, report: &FitReport, adequate: bool) -> Verdict {
             lags: a.autocorrelation.len().saturating_sub(1),
             runs_z: a.runs.z,
         }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ident::excitation::Excitation;
+
+    fn model(code: &str, params: &[(Param, f64)]) -> Model {
+        let mut v = Values::default();
+        params.iter().for_each(|&(p, x)| v.set(p, x));
+        Model::new(Structure::parse(code).unwrap(), v)
+    }
+
+    #[test]
+    fn a_lag_slower_than_the_record_is_refused_and_a_ringing_is_not() {
+        // 100 s after the step at 20 s.
+        let times: Vec<f64> = (0..=120).map(f64::from).collect();
+        let data = FitData {
+            y: vec![0.0; times.len()],
+            times,
+            input: Excitation::step(20.0, 1.0),
+        };
+        let p1 = model("P1", &[(Param::Tp1, 10.0)]);
+        let slow = model("P2", &[(Param::Tp1, 10.0), (Param::Tp2, 900.0)]);
+        assert!(beyond_record(&data, &p1, &slow));
+        // A slow zero as well: SBHS's P2Z with Tz = 758 s and a pole of 8,464 s.
+        let zero = model("P1Z", &[(Param::Tp1, 10.0), (Param::Tz, -300.0)]);
+        assert!(beyond_record(&data, &p1, &zero));
+        let second = model("P2", &[(Param::Tp1, 10.0), (Param::Tp2, 40.0)]);
+        assert!(!beyond_record(&data, &p1, &second));
+        // A lightly damped pair: its envelope Tw/ζ = 200 s outlasts the record, but the
+        // ringing shows its period; Tw = 10 s is what counts.
+        let ringing = model("P2U", &[(Param::Tw, 10.0), (Param::Zeta, 0.05)]);
+        assert!(!beyond_record(&data, &p1, &ringing));
+        // A start already slower than the record is not refused its own lag.
+        let long = model("P1", &[(Param::Tp1, 300.0)]);
+        let longer = model("P2", &[(Param::Tp1, 300.0), (Param::Tp2, 20.0)]);
+        assert!(!beyond_record(&data, &long, &longer));
     }
 }
