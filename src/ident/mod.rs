@@ -11,6 +11,7 @@ pub mod fit;
 pub mod guess;
 pub mod hand;
 pub mod handles;
+pub mod lag_pair;
 pub mod landscape;
 pub mod models;
 pub mod per_step;

@@ -1054,6 +1054,20 @@ impl Localize for FitWarning {
                      ajuste não depende dela): não se pode dar um intervalo",
                 )
                 .into(),
+            FitWarning::LagsNotResolved { larger, smaller } => lang.pick(
+                format!(
+                    "{larger} and {smaller} cannot be told apart from this data: two equal time \
+                     constants explain it as well. Their intervals are read together (the range \
+                     of each wherever the other may be); a larger step or a longer record \
+                     separates them"
+                ),
+                format!(
+                    "{larger} e {smaller} não se distinguem com estes dados: duas constantes de \
+                     tempo iguais os explicam igualmente bem. Seus intervalos são lidos juntos \
+                     (a faixa de cada uma onde quer que a outra esteja); um degrau maior ou um \
+                     registro mais longo as separa"
+                ),
+            ),
             FitWarning::NotConverged => lang
                 .pick(
                     "the optimiser did not converge: the values are not an optimum",
@@ -1880,6 +1894,10 @@ fn fit_warnings() -> Vec<FitWarning> {
         },
         FitWarning::NotIdentifiable { param: "Tz".into() },
         FitWarning::CombinationNotIdentifiable,
+        FitWarning::LagsNotResolved {
+            larger: "Tp1".into(),
+            smaller: "Tp2".into(),
+        },
         FitWarning::NotConverged,
         FitWarning::NoImprovement,
         FitWarning::Unrepresentable {
@@ -1939,6 +1957,7 @@ fn fit_warning_id(w: &FitWarning) -> &'static str {
         FitWarning::Alias { .. } => "Alias",
         FitWarning::NotIdentifiable { .. } => "NotIdentifiable",
         FitWarning::CombinationNotIdentifiable => "CombinationNotIdentifiable",
+        FitWarning::LagsNotResolved { .. } => "LagsNotResolved",
         FitWarning::NotConverged => "NotConverged",
         FitWarning::NoImprovement => "NoImprovement",
         FitWarning::Unrepresentable { .. } => "Unrepresentable",
@@ -2112,7 +2131,7 @@ mod tests {
         assert_eq!(distinct(&model_errors(), model_error_id), 6);
         assert_eq!(distinct(&fit_errors(), fit_error_id), 7);
         assert_eq!(distinct(&experiment_errors(), experiment_error_id), 5);
-        assert_eq!(distinct(&fit_warnings(), fit_warning_id), 8);
+        assert_eq!(distinct(&fit_warnings(), fit_warning_id), 9);
     }
 
     #[test]
