@@ -151,7 +151,8 @@ fn a_step_between_samples_holds_the_mean_before_it() {
             fact,
             OperatingPoint::MeanBefore {
                 y0: mean,
-                samples: 41
+                samples: 41,
+                wild: 0
             },
             "{}",
             process.code
@@ -199,7 +200,8 @@ fn messy_records_hold_the_measured_mean_before_the_step() {
                     e.operating_point_fact(&data),
                     OperatingPoint::MeanBefore {
                         y0: mean,
-                        samples: 41
+                        samples: 41,
+                        wild: 0
                     }
                 );
                 // The standard deviation of a mean of 41 AR(1) samples is about
@@ -307,7 +309,8 @@ fn tclab_holds_y0_at_its_first_samples_level() {
             e.operating_point_fact(&data),
             OperatingPoint::MeanBefore {
                 y0: 20.9,
-                samples: 1
+                samples: 1,
+                wild: 0
             }
         );
         let report = fit(&e, &test, "P1");

@@ -37,8 +37,14 @@ pub enum Offset {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum OperatingPoint {
-    /// [`Offset::Auto`]: Y0 held at the mean of the `samples` samples before the step.
-    MeanBefore { y0: f64, samples: usize },
+    /// [`Offset::Auto`]: Y0 held at the mean of the `samples` samples before the step,
+    /// `wild` of them (spikes, dropouts) left out.
+    MeanBefore {
+        y0: f64,
+        samples: usize,
+        #[serde(default)]
+        wild: usize,
+    },
     /// [`Offset::Auto`] on a record that starts with the step: Y0 held at the sample at
     /// the step instant, where the output has not moved yet.
     AtStep { y0: f64 },
@@ -251,6 +257,7 @@ impl Experiment {
                 Some(rest) => OperatingPoint::MeanBefore {
                     y0: rest.y0,
                     samples: rest.samples,
+                    wild: rest.wild,
                 },
                 None => OperatingPoint::Estimated {
                     reason: EstimateReason::NoSampleBeforeStep,

@@ -12,6 +12,8 @@ use super::excitation::Excitation;
 use super::fit::FitData;
 use super::models::{Model, Param, Structure, Values};
 use super::scale::Scale;
+use super::stats::tame;
+use super::test_causes::outliers::THRESHOLD;
 
 /// What the curve shows, relative to the operating point y0 and the final level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,14 +44,18 @@ pub struct CurveFeatures {
 pub struct RestLevel {
     /// The mean of the samples at rest (output units).
     pub y0: f64,
-    /// How many samples were averaged.
+    /// How many samples were before the step.
     pub samples: usize,
+    /// How many of them were wild (a spike, a dropout) and left out of the mean.
+    pub wild: usize,
     /// True when the only sample is the one at the step instant t0 itself: the record
     /// starts with the step, so none is before it.
     pub at_step: bool,
 }
 
-/// The output at rest: the mean of the samples before t0, counted as
+/// The output at rest: the mean of the samples before t0 that are not wild (beyond the
+/// outliers' [`THRESHOLD`] robust standard deviations of their median: a spike before the
+/// step would otherwise shift the held Y0 and make the whole record look offset), counted as
 /// [`super::prepare::samples_before`] counts them (a sample at t0 counts when the next one
 /// has the same time, the pre-step row of a log that writes the step instant twice), so the
 /// fit holds Y0 where the data panel says it is. When none is before t0 but the first sample
@@ -61,9 +67,11 @@ pub struct RestLevel {
 /// `None` when the data start after t0.
 pub fn rest_level(data: &FitData) -> Option<RestLevel> {
     let (samples, at_step) = rest_samples(&data.times, data.input.t0(), data.y.len())?;
+    let kept = tame(&data.y[..samples], THRESHOLD);
     Some(RestLevel {
-        y0: mean(&data.y[..samples]),
+        y0: mean(&kept),
         samples,
+        wild: samples - kept.len(),
         at_step,
     })
 }
@@ -630,6 +638,59 @@ fn own_five_percent_time(structure: Structure, values: Values, data: &FitData) -
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A record at rest at 20 before a step at 6 s: white noise ±0.05 (or rounded to a
+    /// 0.32 quantum), the spikes given added.
+    fn rest_record(spikes: &[(usize, f64)], quantum: Option<f64>) -> FitData {
+        let times: Vec<f64> = (0..100).map(|k| 0.1 * k as f64).collect();
+        let mut rng = super::super::fit::Lcg(5);
+        let mut y: Vec<f64> = times
+            .iter()
+            .map(|_| 20.0 + 0.05 * rng.symmetric())
+            .collect();
+        for &(i, size) in spikes {
+            y[i] += size;
+        }
+        if let Some(q) = quantum {
+            y.iter_mut().for_each(|v| *v = (*v / q).round() * q);
+        }
+        FitData {
+            times,
+            y,
+            input: Excitation::step(6.0, 1.0),
+        }
+    }
+
+    #[test]
+    fn spikes_before_the_step_are_left_out_of_the_rest_level() {
+        let data = rest_record(&[(7, 40.0), (33, -25.0)], None);
+        let rest = rest_level(&data).unwrap();
+        assert_eq!((rest.samples, rest.wild), (60, 2));
+        let tame: Vec<f64> = (0..60)
+            .filter(|i| ![7, 33].contains(i))
+            .map(|i| data.y[i])
+            .collect();
+        let expected = tame.iter().sum::<f64>() / 58.0;
+        assert!((rest.y0 - expected).abs() < 1e-12, "{} {expected}", rest.y0);
+        // The plain mean would have been off by (40 − 25)/60 = 0.25, five times the noise.
+        assert!((rest.y0 - 20.0).abs() < 0.03, "{}", rest.y0);
+        // No spike: every sample counts, the plain mean.
+        let clean = rest_record(&[], None);
+        let rest = rest_level(&clean).unwrap();
+        assert_eq!(rest.wild, 0);
+        assert!((rest.y0 - clean.y[..60].iter().sum::<f64>() / 60.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_quantised_rest_keeps_all_its_levels() {
+        // Noise of ±0.05 rounded to 0.32 stays on one or two levels: none is wild, even
+        // with a robust scale of 0; a dropout of 5 °C still is.
+        let data = rest_record(&[(12, -5.0)], Some(0.32));
+        let rest = rest_level(&data).unwrap();
+        assert_eq!(rest.wild, 1);
+        let data = rest_record(&[(12, 0.32)], Some(0.32));
+        assert_eq!(rest_level(&data).unwrap().wild, 0);
+    }
 
     #[test]
     fn guesses_a_p1d_close_to_the_truth() {

@@ -98,6 +98,32 @@ pub fn robust_scale(v: &[f64]) -> f64 {
     1.4826 * median(&dev)
 }
 
+/// The quantum of a quantised signal as the median of the nonzero first differences' sizes:
+/// a quantised record's level step; on continuous noise about σ.
+pub fn quantum(y: &[f64]) -> f64 {
+    let d: Vec<f64> = y
+        .windows(2)
+        .map(|w| (w[1] - w[0]).abs())
+        .filter(|d| *d > 0.0)
+        .collect();
+    if d.is_empty() { 0.0 } else { median(&d) }
+}
+
+/// The values of `v` that are not wild: within `sigmas` robust standard deviations
+/// ([`robust_scale`]) of the median, and within two quanta ([`quantum`]) at least, so that a
+/// quantised signal's levels are never wild; every value when fewer than five.
+pub fn tame(v: &[f64], sigmas: f64) -> Vec<f64> {
+    if v.len() < 5 {
+        return v.to_vec();
+    }
+    let m = median(v);
+    let limit = (sigmas * robust_scale(v)).max(2.0 * quantum(v));
+    v.iter()
+        .copied()
+        .filter(|x| limit.is_nan() || (x - m).abs() <= limit)
+        .collect()
+}
+
 /// The lag-one autocorrelation of `v` about its mean (the AR(1) coefficient's estimate);
 /// 0 for fewer than three samples or no spread.
 pub fn lag_one(v: &[f64]) -> f64 {

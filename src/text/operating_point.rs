@@ -34,17 +34,36 @@ impl Localize for OperatingPoint {
     fn text(&self, lang: Lang) -> String {
         let value = |y0: f64| lang.num(y0, 6);
         match *self {
-            OperatingPoint::MeanBefore { y0, samples: 1 } => match lang {
+            OperatingPoint::MeanBefore { y0, samples: 1, .. } => match lang {
                 Lang::En => format!("Y0 held at the sample before the step: {}", value(y0)),
                 Lang::Pt => format!("Y0 mantido na amostra antes do degrau: {}", value(y0)),
             },
-            OperatingPoint::MeanBefore { y0, samples } => match lang {
+            OperatingPoint::MeanBefore {
+                y0,
+                samples,
+                wild: 0,
+            } => match lang {
                 Lang::En => format!(
                     "Y0 held at the mean of the {samples} samples before the step: {}",
                     value(y0)
                 ),
                 Lang::Pt => format!(
                     "Y0 mantido na média das {samples} amostras antes do degrau: {}",
+                    value(y0)
+                ),
+            },
+            OperatingPoint::MeanBefore { y0, samples, wild } => match lang {
+                Lang::En => format!(
+                    "Y0 held at the mean of the {samples} samples before the step, {wild} wild \
+                     one{} (a spike, a dropout) left out: {}",
+                    if wild == 1 { "" } else { "s" },
+                    value(y0)
+                ),
+                Lang::Pt => format!(
+                    "Y0 mantido na média das {samples} amostras antes do degrau, {wild} \
+                     {} (um pico, uma queda) deixada{} de fora: {}",
+                    if wild == 1 { "espúria" } else { "espúrias" },
+                    if wild == 1 { "" } else { "s" },
                     value(y0)
                 ),
             },
@@ -115,10 +134,17 @@ pub fn messages() -> Vec<Message> {
         OperatingPoint::MeanBefore {
             y0: 20.9,
             samples: 1,
+            wild: 0,
         },
         OperatingPoint::MeanBefore {
             y0: 250.03,
             samples: 41,
+            wild: 0,
+        },
+        OperatingPoint::MeanBefore {
+            y0: 21.54,
+            samples: 60,
+            wild: 2,
         },
         OperatingPoint::AtStep { y0: 23.48 },
         OperatingPoint::Given { y0: 50.0 },
@@ -140,7 +166,8 @@ pub fn messages() -> Vec<Message> {
         // Exhaustive: a new fact does not compile until it has an example above.
         let id = match fact {
             OperatingPoint::MeanBefore { samples: 1, .. } => "MeanBefore(1)",
-            OperatingPoint::MeanBefore { .. } => "MeanBefore",
+            OperatingPoint::MeanBefore { wild: 0, .. } => "MeanBefore",
+            OperatingPoint::MeanBefore { .. } => "MeanBefore(wild)",
             OperatingPoint::AtStep { .. } => "AtStep",
             OperatingPoint::Given { .. } => "Given",
             OperatingPoint::Estimated {
@@ -172,6 +199,7 @@ mod tests {
                 OperatingPoint::MeanBefore {
                     y0: 250.03,
                     samples: 41,
+                    wild: 0,
                 },
                 Lang::En,
                 "Y0 held at the mean of the 41 samples before the step: 250.03",
@@ -180,14 +208,36 @@ mod tests {
                 OperatingPoint::MeanBefore {
                     y0: 250.03,
                     samples: 41,
+                    wild: 0,
                 },
                 Lang::Pt,
                 "Y0 mantido na média das 41 amostras antes do degrau: 250,03",
             ),
             (
                 OperatingPoint::MeanBefore {
+                    y0: 21.54,
+                    samples: 60,
+                    wild: 2,
+                },
+                Lang::En,
+                "Y0 held at the mean of the 60 samples before the step, 2 wild ones (a spike, a \
+                 dropout) left out: 21.54",
+            ),
+            (
+                OperatingPoint::MeanBefore {
+                    y0: 21.54,
+                    samples: 60,
+                    wild: 1,
+                },
+                Lang::Pt,
+                "Y0 mantido na média das 60 amostras antes do degrau, 1 espúria (um pico, uma \
+                 queda) deixada de fora: 21,54",
+            ),
+            (
+                OperatingPoint::MeanBefore {
                     y0: 20.9,
                     samples: 1,
+                    wild: 0,
                 },
                 Lang::En,
                 "Y0 held at the sample before the step: 20.9",

@@ -17,7 +17,7 @@
 
 use super::{Handling, Loss, TestCause, TestCauseKind, TestEvidence};
 use crate::ident::fit::FitData;
-use crate::ident::stats::{median, robust_scale};
+use crate::ident::stats::{median, quantum, robust_scale};
 
 /// The robust loss the final fit weighs the outliers with.
 pub const LOSS: Loss = Loss::Cauchy;
@@ -104,17 +104,6 @@ fn near_changes(data: &FitData) -> Vec<bool> {
         near[from..to].iter_mut().for_each(|x| *x = true);
     }
     near
-}
-
-/// The output's quantum as the median of the nonzero first differences' sizes: a quantised
-/// record's level step; on continuous noise about σ, well under the threshold.
-fn quantum(y: &[f64]) -> f64 {
-    let d: Vec<f64> = y
-        .windows(2)
-        .map(|w| (w[1] - w[0]).abs())
-        .filter(|d| *d > 0.0)
-        .collect();
-    if d.is_empty() { 0.0 } else { median(&d) }
 }
 
 /// Consecutive runs of sorted indices.
