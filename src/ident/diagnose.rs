@@ -25,6 +25,7 @@ use super::fit::{FitData, FitError, FitOptions, FitReport, fit, search_fit};
 use super::guess::{auto_guess, features};
 use super::models::{Model, Param, Structure, Values};
 use super::residuals::{self, ResidualAnalysis};
+use super::staircase::Staircase;
 use super::stats::lag_one;
 use super::test_causes::{TestCause, TestCauseKind, handling, time_constants};
 
@@ -445,8 +446,16 @@ fn run_loop(
 ) -> (FitReport, Vec<Step>, bool) {
     let mut current = handled.start.clone();
     let mut steps = Vec::new();
+    let staircase = Staircase::of(&handled.data, &current);
     for _ in 0..options.max_steps {
         match next_step_with(&handled.data, &current, allowed) {
+            // On a staircase, an extension must gain more than rounding alone lets it.
+            Some(step)
+                if staircase
+                    .is_some_and(|s| !s.beyond_rounding(&handled.data, &current, &step.fit)) =>
+            {
+                return (current, steps, true);
+            }
             Some(step) => {
                 current = step.fit.clone();
                 steps.push(step);

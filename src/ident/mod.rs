@@ -23,6 +23,7 @@ pub mod rest;
 pub mod rls;
 pub mod robust;
 pub mod scale;
+pub mod staircase;
 pub mod stats;
 pub mod test_causes;
 pub mod validation;
