@@ -502,10 +502,17 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
     let leader_plainly = leader
         .as_ref()
         .is_some_and(|(_, c)| plainly_pays(current, c));
+    // A free Y0 pays by the corrected BIC only: one constant absorbs a share of any misfit
+    // that is far from white (an actuator's motion the held input does not show, a model
+    // still short of a pole), and an operating point that is really off leaves residuals
+    // biased everywhere, which pay by both.
     let single = paying
         .or(leader.filter(|_| far))
         .and_then(|w| on_every_sample(data, w))
-        .filter(|(_, c)| pays(data, current, c) || (far && plainly_pays(current, c)));
+        .filter(|(e, c)| {
+            pays(data, current, c)
+                || (far && *e != Extension::FreeOffset && plainly_pays(current, c))
+        });
     let (extension, paired, candidate) = match single {
         Some((e, c)) => (e, None, c),
         None => {

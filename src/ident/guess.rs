@@ -256,8 +256,17 @@ fn slope(t: &[f64], y: &[f64]) -> f64 {
     if den > 0.0 { num / den } else { 0.0 }
 }
 
-/// An initial guess for `structure`; `y0` is the operating point when known.
+/// An initial guess for `structure`; `y0` is the operating point when known. A structure
+/// that holds Y0 (not `free_offset`) holds it at the level at rest ([`rest_level`]) when
+/// none is given, as the app and the CLI do: the least-squares guess of a record with
+/// several changes (an actuator's motion, a second step) would otherwise fix it where the
+/// regression put it, off the samples before the step by several times their noise.
 pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Values {
+    let y0 = y0.or_else(|| {
+        (!structure.free_offset)
+            .then(|| level_before(data))
+            .flatten()
+    });
     internal(data)
         .and_then(|(u, inside)| {
             let guess = guess_as_given(&inside, structure, y0.map(|y| u.output_in(y)));
