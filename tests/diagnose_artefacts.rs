@@ -449,39 +449,36 @@ fn generate(artefact: Artefact, index: usize) -> Case {
 
 /// The true lags: the real poles as a sorted set, and Tw.
 fn lags(m: &Model) -> Vec<f64> {
+    lag_params(m).into_iter().map(|p| m.get(p)).collect()
+}
+
+/// The parameters of [`lags`], in its order.
+fn lag_params(m: &Model) -> Vec<Param> {
     let ps = m.structure.params();
-    let mut real: Vec<f64> = [Param::Tp1, Param::Tp2, Param::Tp3]
+    let mut real: Vec<Param> = [Param::Tp1, Param::Tp2, Param::Tp3]
         .into_iter()
         .filter(|p| ps.contains(p))
-        .map(|p| m.get(p))
         .collect();
-    real.sort_by(f64::total_cmp);
+    real.sort_by(|a, b| m.get(*a).total_cmp(&m.get(*b)));
     if ps.contains(&Param::Tw) {
-        real.push(m.get(Param::Tw));
+        real.push(Param::Tw);
     }
     real
 }
 
-/// The lags of a fit (as [`lags`]) with their 95 % intervals.
+/// The 95 % intervals of a fit's lags, in [`lags`]' order.
 fn lag_intervals(r: &FitReport) -> Vec<Option<(f64, f64)>> {
-    let m = &r.model;
-    let ps = m.structure.params();
-    let mut real: Vec<(f64, Option<(f64, f64)>)> = [Param::Tp1, Param::Tp2, Param::Tp3]
+    lag_params(&r.model)
         .into_iter()
-        .filter(|p| ps.contains(p))
-        .map(|p| (m.get(p), r.interval(p)))
-        .collect();
-    real.sort_by(|a, b| a.0.total_cmp(&b.0));
-    if ps.contains(&Param::Tw) {
-        real.push((m.get(Param::Tw), r.interval(Param::Tw)));
-    }
-    real.into_iter().map(|(_, ci)| ci).collect()
+        .map(|p| r.interval(p))
+        .collect()
 }
 
 /// Whether any estimator could place every lag within 10 % of the truth in 90 % of such
 /// records: the Cramér–Rao bound at the truth (white noise of the case's σ, on the logged
-/// input, Jacobian of the exact response by central differences, the lead not estimated:
-/// each makes the bound smaller, so a case is only excused when even it is too wide) puts
+/// input, Jacobian of the exact response by central differences, the lead (and a held Y0)
+/// not estimated: each makes the bound smaller, so a case is only excused when even it is
+/// too wide) puts
 /// 1.645 σ of every lag within 10 % of it.
 fn resolvable(case: &Case) -> bool {
     let truth = &case.truth;

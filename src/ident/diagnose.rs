@@ -236,6 +236,9 @@ pub enum Ending {
     Adequate,
     /// No extension lowers BIC by [`BIC_THRESHOLD`], although the residuals are not white.
     NotWhite,
+    /// On a staircase (a resolution coarse against the noise), no extension gains more
+    /// than rounding gives a model that lacks nothing ([`Staircase`]).
+    WithinRounding,
     /// The step limit was reached.
     StepLimit,
 }
@@ -446,16 +449,8 @@ fn run_loop(
 ) -> (FitReport, Vec<Step>, bool) {
     let mut current = handled.start.clone();
     let mut steps = Vec::new();
-    let staircase = Staircase::of(&handled.data, &current);
     for _ in 0..options.max_steps {
         match next_step_with(&handled.data, &current, allowed) {
-            // On a staircase, an extension must gain more than rounding alone lets it.
-            Some(step)
-                if staircase
-                    .is_some_and(|s| !s.beyond_rounding(&handled.data, &current, &step.fit)) =>
-            {
-                return (current, steps, true);
-            }
             Some(step) => {
                 current = step.fit.clone();
                 steps.push(step);
@@ -530,6 +525,10 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
             (e1, Some(e2.cause(&c.model.values)), c)
         }
     };
+    // On a staircase, an extension must gain more than rounding alone lets it.
+    if Staircase::of(data, current).is_some_and(|s| !s.beyond_rounding(data, current, &candidate)) {
+        return None;
+    }
     let cause = extension.cause(&candidate.model.values);
     let (evidence, interval) = explain(cause, data, current, &candidate);
     Some(Step {
@@ -1034,6 +1033,7 @@ fn verdict(data: &FitData, report: &FitReport, adequate: bool) -> Verdict {
         structure: None,
         artefacts: Artefacts::default(),
         ending: match (adequate, white) {
+            (true, _) if Staircase::of(data, report).is_some() => Ending::WithinRounding,
             (true, true) => Ending::Adequate,
             (true, false) => Ending::NotWhite,
             (false, _) => Ending::StepLimit,

@@ -796,15 +796,19 @@ impl Problem {
     fn coordinate_directions(&self, x: &[f64]) -> Vec<Direction> {
         (0..x.len())
             .map(|i| {
-                let mut h = f64::EPSILON.sqrt() * x[i].abs().max(self.typical[i]);
-                if x[i] + h > self.upper[i] {
-                    h = -h;
-                }
+                let h = self.difference_step(i, x[i]);
                 let mut moved = x.to_vec();
                 moved[i] = x[i] + h;
                 Direction { moved, h }
             })
             .collect()
+    }
+
+    /// The finite-difference step of parameter `i` at `value`: √ε of its size (or of its
+    /// typical magnitude), backward when forward would pass its upper bound.
+    fn difference_step(&self, i: usize, value: f64) -> f64 {
+        let h = f64::EPSILON.sqrt() * value.abs().max(self.typical[i]);
+        if value + h > self.upper[i] { -h } else { h }
     }
 
     /// [`Problem::normal_equations`] with the Jacobian's columns along `directions` (the
@@ -1370,10 +1374,8 @@ impl Problem {
         let (i, j) = self.closest_lags(x)?;
         let (m, q) = lag_pair::mean_and_square(x[i], x[j]);
         let mut directions = self.coordinate_directions(x);
-        let mut h = f64::EPSILON.sqrt() * m.abs().max(self.typical[i]);
-        if x[i] + h > self.upper[i] {
-            h = -h;
-        }
+        // Both lags move by the larger's step (backward when it would pass its bound).
+        let h = self.difference_step(i, x[i]);
         let mut moved = x.to_vec();
         (moved[i], moved[j]) = (x[i] + h, x[j] + h);
         directions[i] = Direction { moved, h };
@@ -1453,7 +1455,6 @@ fn damping_after_success(lambda: f64, rho: f64) -> f64 {
     }
 }
 
-/// True for a number above zero (false for NaN).
 /// (JᵀJ)⁻¹ from A = JᵀJ, inverted with its columns scaled so that the conditioning
 /// reflects the model, not the units; its diagonal's roots when A is singular (an
 /// eigenvalue under 1e-13 of the largest of the scaled A, or a column of zeros).
@@ -1483,6 +1484,7 @@ fn inverse_scaled(a: &DMatrix<f64>) -> Result<DMatrix<f64>, Vec<f64>> {
     Ok(inverse)
 }
 
+/// True for a number above zero (false for NaN).
 fn is_positive(x: f64) -> bool {
     x > 0.0
 }

@@ -30,7 +30,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::excitation::Excitation;
-use crate::lti::{C64, LtiError, StepResponse, TransferFunction};
+use crate::lti::{C64, LtiError, StepInfo, StepInfoOptions, StepResponse, TransferFunction};
 
 /// One parameter of a process model, with procest's name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -467,6 +467,20 @@ impl Model {
             0.0
         };
         td - ta
+    }
+
+    /// The settling time of G's step response into a band of ± `threshold` of its final
+    /// value (s from the step, dead time included; MATLAB's stepinfo, 0.02 its default),
+    /// exact; `None` when it does not settle (an integrator, an undamped pair) or G cannot
+    /// be formed. It does not depend on the step's size or sign: a unit step is used.
+    pub fn settling_time(&self, threshold: f64) -> Option<f64> {
+        let options = StepInfoOptions {
+            settling_threshold: threshold,
+            ..StepInfoOptions::default()
+        };
+        let tf = self.transfer_function().ok()?;
+        let response = StepResponse::new(&tf, 1.0).ok()?;
+        StepInfo::of_response(&response, &options).settling_time
     }
 
     /// The dead time of G (s): Td when the structure has one and it is positive, else 0.

@@ -27,7 +27,7 @@ use super::fit::FitData;
 use super::models::{Model, Param};
 use super::prepare::sampling_period;
 use super::stats::normal_quantile;
-use crate::lti::{StepInfo, StepInfoOptions, StepResponse};
+use crate::lti::StepInfoOptions;
 
 /// Which part of the record a region is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -211,12 +211,7 @@ pub fn boundaries(model: &Model, data: &FitData) -> Boundaries {
     } else {
         0.0
     };
-    // The settling time does not depend on the step's size or sign: use a unit step.
-    let settling = model
-        .transfer_function()
-        .ok()
-        .and_then(|tf| StepResponse::new(&tf, 1.0).ok())
-        .and_then(|r| StepInfo::of_response(&r, &StepInfoOptions::default()).settling_time);
+    let settling = model.settling_time(StepInfoOptions::default().settling_threshold);
     let response_start = clamp(t0 + td, first, last);
     // With several changes the response settles after the last one's transient.
     let last_change = data.input.changes.last().map_or(t0, |c| c.t.max(t0));

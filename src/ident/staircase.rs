@@ -79,10 +79,12 @@ impl Staircase {
             starts: 1,
             ..FitOptions::default()
         };
+        let Ok(clean) = current.model.simulate(&data.input, &data.times) else {
+            return true;
+        };
         let mut rng = Lcg(0x5EED_57A1);
         (0..REPLICATES)
             .filter_map(|_| {
-                let clean = current.model.simulate(&data.input, &data.times).ok()?;
                 let y = clean
                     .iter()
                     .map(|c| self.round(c + self.noise * gaussian(&mut rng)))
@@ -102,7 +104,7 @@ impl Staircase {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ident::diagnose::{DiagnoseOptions, diagnose};
+    use crate::ident::diagnose::{DiagnoseOptions, Ending, diagnose};
     use crate::ident::excitation::Excitation;
     use crate::ident::models::{Model, Param, Structure, Values};
 
@@ -126,36 +128,40 @@ mod tests {
         FitData { times, y, input }
     }
 
-    fn chain(data: &FitData) -> Vec<&'static str> {
+    /// The staircase of `data` under a P1 fitted from its automatic guess.
+    fn staircase_of(data: &FitData) -> Option<Staircase> {
+        let s = Structure::parse("P1").unwrap();
+        let guess = crate::ident::guess::auto_guess(data, s, None);
+        let start = fit(data, s, guess, &FitOptions::default(), &mut ()).unwrap();
+        Staircase::of(data, &start)
+    }
+
+    /// The diagnosis from P1: the chain's causes and how the loop ended.
+    fn chain(data: &FitData) -> (Vec<&'static str>, Ending) {
         let p1 = Structure::parse("P1").unwrap();
         let r = diagnose(data, p1, None, &DiagnoseOptions::default()).unwrap();
-        r.steps.iter().map(|s| s.cause.id()).collect()
+        let ending = r.verdict.map(|v| v.ending).unwrap();
+        (r.steps.iter().map(|s| s.cause.id()).collect(), ending)
     }
 
     #[test]
     fn a_staircase_buys_no_structure_and_a_real_dead_time_still_pays() {
         // q = 1.5 is 15 % of the 10-unit effect, the noise 0.15 a tenth of it: a staircase,
-        // on which a P1 start gained a zero and a drift by the plain BIC.
+        // on which a P1 start gained a zero by the plain BIC; the verdict says why it ends.
         let data = record(1.5, 0.15, 0.0);
-        let s = Structure::parse("P1").unwrap();
-        let guess = crate::ident::guess::auto_guess(&data, s, None);
-        let start = fit(&data, s, guess, &FitOptions::default(), &mut ()).unwrap();
-        assert!(Staircase::of(&data, &start).is_some());
-        assert!(chain(&data).is_empty(), "{:?}", chain(&data));
-        // A dead time of 4 s (four samples of the rise) is no rounding.
+        assert!(staircase_of(&data).is_some());
+        assert_eq!(chain(&data), (vec![], Ending::WithinRounding));
+        // A dead time of 4 s (13 samples) on the same staircase is no rounding.
         let data = record(1.5, 0.15, 4.0);
-        assert_eq!(chain(&data), ["dead_time"]);
+        assert!(staircase_of(&data).is_some());
+        assert_eq!(chain(&data).0, ["dead_time"]);
     }
 
     #[test]
     fn the_grid_is_the_records_own() {
         let data = record(1.5, 0.15, 0.0);
-        let s = Structure::parse("P1").unwrap();
-        let v = crate::ident::guess::auto_guess(&data, s, None);
-        let f = fit(&data, s, v, &FitOptions::default(), &mut ()).unwrap();
-        let stair = Staircase::of(&data, &f).expect("a staircase");
+        let stair = staircase_of(&data).expect("a staircase");
         assert!((stair.resolution - 1.5).abs() < 1e-9, "{stair:?}");
-
         for y in &data.y {
             assert!((stair.round(*y) - y).abs() < 1e-9, "{y}");
         }

@@ -1520,6 +1520,15 @@ impl Localize for Ending {
                  brancos: o que resta não é um dos efeitos que o Degrau conhece (não linearidade, \
                  um distúrbio, ou ruído que não é branco).",
             ),
+            Ending::WithinRounding => (
+                "Adequate to the output's resolution: the output is a staircase (its noise under \
+                 half a quantum), and no extension gains more than rounding gives on records \
+                 simulated from this model; what is left is the rounding, not structure.",
+                "Adequado à resolução da saída: a saída é uma escada (seu ruído abaixo de meio \
+                 quantum), e nenhuma extensão ganha mais do que o arredondamento dá em \
+                 registros simulados com este modelo; o que resta é o arredondamento, não \
+                 estrutura.",
+            ),
             Ending::StepLimit => (
                 "Stopped at the step limit: the model may still miss something.",
                 "Parou no limite de passos: pode ainda faltar algo ao modelo.",
@@ -2060,7 +2069,12 @@ pub fn messages() -> Vec<Message> {
         lags: 40,
         runs_z: -2.5,
     });
-    for ending in [Ending::Adequate, Ending::NotWhite, Ending::StepLimit] {
+    for ending in [
+        Ending::Adequate,
+        Ending::NotWhite,
+        Ending::WithinRounding,
+        Ending::StepLimit,
+    ] {
         all.push(Message::of(
             format!("ident::Verdict::{ending:?}"),
             &Verdict {

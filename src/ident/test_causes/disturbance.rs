@@ -21,7 +21,7 @@ use crate::ident::diagnose::{BIC_THRESHOLD, best_extension_bic};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
 use crate::ident::models::{Model, Param};
 use crate::ident::stats::lag_one;
-use crate::lti::{StepInfo, StepInfoOptions, StepResponse};
+use crate::lti::StepInfoOptions;
 
 /// The least significance of a disturbance's size (z, correlation-corrected).
 pub const MIN_Z: f64 = 5.0;
@@ -41,8 +41,8 @@ const FLAT_SHARE: f64 = 0.25;
 /// lag took part of the load: a large one can double the gain and push the model's
 /// settling past the record's end), so the tail it leaves is not flat before the instant,
 /// or there is no tail at all. When the first look finds nothing, the model is refitted on
-/// the samples before each of a few cuts (the likeliest instant of the current
-/// tail, and [`CUTS`] spread over the span after the change), and the test made again on
+/// the samples before each of a few cuts ([`cuts`]: the likeliest instants of a step or a
+/// bend, and [`CUTS`] spread over the span after the change), and the test made again on
 /// what each refit leaves; the refit that explains the record best with its disturbance is
 /// kept, if no structural extension explains the record as well.
 pub fn detect(
@@ -261,11 +261,7 @@ pub fn settling(model: &Model) -> Option<f64> {
     if s.integrator {
         return None;
     }
-    let exact = model
-        .transfer_function()
-        .ok()
-        .and_then(|tf| StepResponse::new(&tf, 1.0).ok())
-        .and_then(|r| StepInfo::of_response(&r, &StepInfoOptions::default()).settling_time);
+    let exact = model.settling_time(StepInfoOptions::default().settling_threshold);
     if let Some(ts) = exact.filter(|t| t.is_finite() && *t > 0.0) {
         return Some(ts);
     }

@@ -23,7 +23,6 @@
 use serde::{Deserialize, Serialize};
 
 use crate::ident::models::{Model, Param};
-use crate::lti::{StepInfo, StepInfoOptions, StepResponse};
 
 use super::{
     FittedRecord, Handling, RuleCheck, SamplingRule, TestCause, TestCauseKind, TestEvidence,
@@ -47,20 +46,10 @@ pub struct TimeScales {
 impl TimeScales {
     /// The time scales of `model`'s G(s).
     pub fn of(model: &Model) -> Self {
-        let taus = time_constants(model);
-        let options = StepInfoOptions {
-            settling_threshold: 0.05,
-            ..StepInfoOptions::default()
-        };
-        let settling_time = model
-            .transfer_function()
-            .ok()
-            .and_then(|tf| StepResponse::new(&tf, 1.0).ok())
-            .and_then(|r| StepInfo::of_response(&r, &options).settling_time);
         Self {
-            time_constants: taus,
+            time_constants: time_constants(model),
             dead_time: model.dead_time(),
-            settling_time,
+            settling_time: model.settling_time(0.05),
         }
     }
 }
