@@ -21,6 +21,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::drift_evidence::read_drift;
 use super::fit::{FitData, FitError, FitOptions, FitReport, fit, search_fit};
 use super::guess::{auto_guess, features};
 use super::models::{Model, Param, Structure, Values};
@@ -679,10 +680,22 @@ fn candidates(
         .filter_map(|&e| {
             let s = e.apply(current.model.structure)?;
             let r = refit(data, current, e, s)?;
-            (e != Extension::Underdamped || oscillates(&r)).then_some((e, r))
+            let shown = match e {
+                Extension::Underdamped => oscillates(&r),
+                Extension::Drift => drift_shown(data, &current.model, &r),
+                _ => true,
+            };
+            shown.then_some((e, r))
         })
         .filter(|(_, r)| bic(r).is_finite())
         .collect()
+}
+
+/// Whether a fit with a drift term shows it where only a drift explains it
+/// ([`read_drift`]: on the stretches where no input change is still answered, the same
+/// slope whatever the change, in a straight line).
+fn drift_shown(data: &FitData, current: &Model, r: &FitReport) -> bool {
+    read_drift(data, current, r).is_some_and(|d| d.shows(r.model.get(Param::Drift)))
 }
 
 /// Whether a fitted pair oscillates: ζ below [`OVERDAMPED_ZETA`], and its 95 % interval
@@ -1012,13 +1025,23 @@ fn explain(
             )
         }
         Cause::Drift => {
-            let tail = region(residuals::RegionKind::Tail);
+            let reading = read_drift(data, &current.model, extended);
+            let models = [&current.model, &extended.model];
+            let stretches = crate::ident::drift_evidence::settled_stretches(&models, data);
+            let span = stretches
+                .iter()
+                .map(|s| (s.start.max(t_first), s.end.min(t_last)))
+                .filter(|(a, b)| a < b)
+                .fold(None, |acc: Option<(f64, f64)>, (a, b)| match acc {
+                    None => Some((a, b)),
+                    Some((lo, hi)) => Some((lo.min(a), hi.max(b))),
+                });
             (
                 Evidence::Drift {
-                    tail: tail.map(|g| (g.slope, g.slope_z)),
+                    tail: reading.map(|d| (d.slope, d.z)),
                     drift: v.get(Param::Drift),
                 },
-                tail.map(|g| (g.start, g.end)),
+                span,
             )
         }
         Cause::None => (Evidence::None, None),

@@ -5,6 +5,7 @@
 pub mod arx;
 pub mod data;
 pub mod diagnose;
+pub mod drift_evidence;
 pub mod excitation;
 pub mod experiment;
 pub mod fit;

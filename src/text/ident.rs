@@ -1474,13 +1474,16 @@ impl Localize for Evidence {
                 });
                 lang.pick(
                     format!(
-                        "After the response settles the residuals still trend{t}: a slow drift of \
-                         {d} units/s rides on the output. A drift term takes it."
+                        "Where no input change is still answered (before the first, and after \
+                         each response has settled) the residuals trend alike, in a straight \
+                         line{t}: a slow drift of {d} units/s rides on the output. A drift term \
+                         takes it."
                     ),
                     format!(
-                        "Depois que a resposta se acomoda os resíduos ainda têm tendência{t}: uma \
-                         deriva lenta de {d} unidades/s se soma à saída. Um termo de deriva a \
-                         absorve."
+                        "Onde nenhuma variação da entrada ainda está sendo respondida (antes da \
+                         primeira e depois que cada resposta se acomoda) os resíduos têm a mesma \
+                         tendência, em linha reta{t}: uma deriva lenta de {d} unidades/s se soma \
+                         à saída. Um termo de deriva a absorve."
                     ),
                 )
             }

@@ -16,6 +16,10 @@ crate::phrases! {
         Step => ("step", "degrau"),
         Failed => ("no fit", "sem ajuste"),
         NotAtRest => ("not at rest before", "fora do repouso antes"),
+        NotHeld => (
+            "held under 3 τ: not compared",
+            "mantido menos de 3 τ: não comparado"
+        ),
         PerStepHeading => (
             "Each change fitted on its own window (a linear process gives the same values within their intervals):",
             "Cada mudança ajustada na sua própria janela (um processo linear dá os mesmos valores dentro dos seus intervalos):"
@@ -150,6 +154,9 @@ pub fn per_step_lines(fits: &[StepFit], joint: &FitReport, lang: Lang) -> Vec<St
                 let mut figure = lang.num(r.fit_percent, 4);
                 if f.not_at_rest {
                     figure = format!("{figure} ({})", StepsPhrase::NotAtRest.get(lang));
+                }
+                if !crate::ident::test_causes::fit_held(f, &joint.model) {
+                    figure = format!("{figure} ({})", StepsPhrase::NotHeld.get(lang));
                 }
                 row.push(figure);
             }

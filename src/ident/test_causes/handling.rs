@@ -8,7 +8,7 @@
 //! window ([`on_first_step_when_nonlinear`]).
 
 use super::{
-    FittedRecord, TestCause, coloured_noise, disturbance, imperfect_step, nonlinearity,
+    FittedRecord, TestCause, coloured_noise, disturbance, fit_held, imperfect_step, nonlinearity,
     not_at_rest, outliers, quantisation, sampling, saturation, small_step, steps_held,
 };
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
@@ -188,7 +188,17 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
     let mut structure = fitted.model.structure;
     structure.transient = false;
     let fits = per_step_fits(data, structure, &options);
-    let cause = nonlinearity(fitted, &fits, data.sampling_period())?;
+    // Only changes held through their response are evidence (the others' gains rest on an
+    // extrapolated tail): at least two of them must differ.
+    let held: Vec<StepFit> = fits
+        .iter()
+        .filter(|f| fit_held(f, &fitted.model))
+        .cloned()
+        .collect();
+    if held.len() < 2 {
+        return None;
+    }
+    let cause = nonlinearity(fitted, &held, data.sampling_period())?;
     Some((cause, fits))
 }
 
@@ -205,7 +215,13 @@ fn on_first_step_when_nonlinear(handled: &mut Handled) {
     let Some((mut cause, fits)) = step_gains_differ(&handled.data, &handled.start) else {
         return;
     };
-    let first = fits.into_iter().next().and_then(|f| f.fit.ok());
+    // The first change's window alone must show the gain: a change not held through its
+    // response would leave a model whose gain the samples kept cannot determine.
+    let first = fits
+        .into_iter()
+        .next()
+        .filter(|f| fit_held(f, &handled.start.model))
+        .and_then(|f| f.fit.ok());
     let cut = handled.data.input.changes.get(1).map(|c| c.t);
     let end = handled.data.times.last().copied();
     if let (Some(first), Some(window), Some(start), Some(end)) =

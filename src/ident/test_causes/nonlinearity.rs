@@ -3,8 +3,10 @@
 //! process gives the same one every time. Named when a change's gain differs from the joint
 //! fit's beyond both 95 % intervals and by more than the record resolves (the per-step
 //! table's rule, [`agreement`]): up against down, small against large, one operating point
-//! against another. The evidence lists every change's gain with its interval. Only on a
-//! record whose changes were each held long enough to show their response ([`steps_held`]).
+//! against another. The evidence lists every change's gain with its interval. Only
+//! the changes held long enough to show their gain ([`HELD_LAGS`] time constants beyond the
+//! dead time, [`fit_held`]): a change made while the output still moves is no evidence on
+//! its own, its gain resting on the extrapolated tail of the response before it.
 //! Cost: nothing beyond the per-step fits the diagnosis already has.
 
 use crate::ident::fit::{FitData, FitReport};
@@ -13,23 +15,50 @@ use crate::ident::per_step::{Agreement, StepFit, agreement};
 
 use super::{Handling, StepGain, TestCause, TestCauseKind, TestEvidence, TimeScales};
 
-/// Whether every change of `data` was held long enough for its own gain to be read: until
-/// the next change (or the record's end) at least `model`'s dead time plus its slowest time
-/// constant, so that each window shows at least 63 % of its response. A shorter hold is an
-/// actuator's overshoot settling or a wobble's swing (or a busy input): cut into such
-/// windows, each piece's "gain" is the actuator's motion, not the process's.
-pub fn steps_held(data: &FitData, model: &Model) -> bool {
+/// A change must be held this many of the model's slowest time constants (beyond its dead
+/// time) for its own gain to be read: after three the response has reached 95 % of its
+/// level, and the window's level is the change's, not an extrapolation of a tail.
+pub const HELD_LAGS: f64 = 3.0;
+
+/// The least hold (s) for `model`'s response to show its gain: its dead time plus
+/// [`HELD_LAGS`] of its slowest time constant; `None` for a model without a time constant.
+fn needed_hold(model: &Model) -> Option<f64> {
     let scales = TimeScales::of(model);
-    let Some(&slowest) = scales.time_constants.first() else {
+    let slowest = scales.time_constants.first().copied()?;
+    Some(scales.dead_time + HELD_LAGS * slowest)
+}
+
+/// Whether change `k` of `data` was held long enough for its own gain to be read: until the
+/// next change (or the record's end) at least [`needed_hold`]. A shorter hold is an
+/// actuator's overshoot settling, a wobble's swing, a busy input, or a change made while
+/// the output still moved: cut into such windows, each piece's "gain" rests on how the
+/// previous response's tail is extrapolated, not on a level the process reached.
+pub fn change_held(data: &FitData, model: &Model, k: usize) -> bool {
+    let (Some(needed), Some(c)) = (needed_hold(model), data.input.changes.get(k)) else {
         return false;
     };
-    let needed = scales.dead_time + slowest;
     let end = data.times.last().copied().unwrap_or(f64::NEG_INFINITY);
-    let changes = &data.input.changes;
-    changes.iter().enumerate().all(|(k, c)| {
-        let until = changes.get(k + 1).map_or(end, |next| next.t);
-        until - c.t >= needed
-    })
+    let until = data.input.changes.get(k + 1).map_or(end, |next| next.t);
+    until - c.t >= needed
+}
+
+/// Whether at least two changes of `data` were held long enough ([`change_held`]) for
+/// their gains to be compared.
+pub fn steps_held(data: &FitData, model: &Model) -> bool {
+    (0..data.input.changes.len())
+        .filter(|&k| change_held(data, model, k))
+        .count()
+        >= 2
+}
+
+/// Whether a change's own fit was held long enough by its own model ([`needed_hold`];
+/// `joint`'s when the change's own fit failed): its window, from the change to the last
+/// sample before the next one, shows its gain. The change's own lags, not the joint fit's:
+/// a nonlinearity bends the joint fit's lags too.
+pub fn fit_held(f: &StepFit, joint: &Model) -> bool {
+    let own = f.fit.as_ref().ok().and_then(|r| needed_hold(&r.model));
+    own.or_else(|| needed_hold(joint))
+        .is_some_and(|needed| f.window.1 - f.change.t >= needed)
 }
 
 /// Each fitted change's own static gain and its 95 % interval (failed fits left out).
@@ -112,7 +141,7 @@ mod tests {
 
     #[test]
     fn only_steps_held_through_their_response_are_compared() {
-        // τ = 20 s, θ = 3 s: a change must be held 23 s.
+        // τ = 20 s, θ = 3 s: a change must be held 63 s.
         let held = |second: f64| {
             let m = messy(Messy {
                 steps: vec![(30.4, 10.0, 1.2), (second, -10.0, 0.9)],
@@ -124,8 +153,11 @@ mod tests {
         assert!(held(150.6));
         // An overshoot settling 10 s after the jump is the actuator's, not a step.
         assert!(!held(40.6));
-        // The last change must be held to the record's end (279 s) as well.
+        // The last change must be held to the record's end (279 s) as well: 1.5 τ is not
+        // enough, the response has reached 78 % of its level.
         assert!(!held(262.6));
+        assert!(!held(230.0));
+        assert!(held(200.0));
     }
 
     #[test]
