@@ -111,6 +111,30 @@ impl Extension {
         Some(e)
     }
 
+    /// The structure without this extension's term and the parameter whose null value (0)
+    /// says the term is not needed, for the terms the backward look may take out again: a
+    /// dead time, a zero and a drift (an offset, an integrator, a pole or a pair have no
+    /// null value that leaves the same model).
+    fn removed(self, s: Structure) -> Option<(Structure, Param)> {
+        let mut r = s;
+        let param = match self {
+            Extension::Delay if s.delay => {
+                r.delay = false;
+                Param::Td
+            }
+            Extension::Zero if s.zero => {
+                r.zero = false;
+                Param::Tz
+            }
+            Extension::Drift if s.drift => {
+                r.drift = false;
+                Param::Drift
+            }
+            _ => return None,
+        };
+        Some((r, param))
+    }
+
     fn cause(self, fitted: &Values) -> Cause {
         match self {
             Extension::Delay => Cause::DeadTime,
@@ -226,6 +250,16 @@ pub enum Evidence {
         tail: Option<(f64, f64)>,
         drift: f64,
     },
+    /// A term the chain added earlier no longer pays once later ones are in (the backward
+    /// look): its parameter `param` ended at `value` with its 95 % interval `ci95`, and the
+    /// model without it is worse by only `criterion_delta` of the corrected BIC (under
+    /// [`BIC_THRESHOLD`]), or the term ended where it means nothing (a dead time ≤ 0).
+    NoLongerPays {
+        param: Param,
+        value: f64,
+        ci95: Option<(f64, f64)>,
+        criterion_delta: f64,
+    },
     /// Nothing to name.
     None,
 }
@@ -324,6 +358,10 @@ pub struct Step {
     pub interval: Option<(f64, f64)>,
     pub fit: FitReport,
     pub gain: Gain,
+    /// True for a term taken out again by the backward look ([`backward_step`]): `cause`
+    /// names the term, `fit` is the model without it.
+    #[serde(default)]
+    pub removed: bool,
 }
 
 /// The whole chain.
@@ -450,16 +488,77 @@ fn run_loop(
 ) -> (FitReport, Vec<Step>, bool) {
     let mut current = handled.start.clone();
     let mut steps = Vec::new();
+    let mut allowed = allowed.to_vec();
     for _ in 0..options.max_steps {
-        match next_step_with(&handled.data, &current, allowed) {
-            Some(step) => {
-                current = step.fit.clone();
-                steps.push(step);
-            }
-            None => return (current, steps, true),
+        let Some(step) = next_step_with(&handled.data, &current, &allowed) else {
+            return (current, steps, true);
+        };
+        current = step.step.fit.clone();
+        let added = step.extension;
+        steps.push(step.step);
+        // The backward look: a term added earlier that the later ones made useless is
+        // taken out, and not tried again (the chain would go round).
+        while let Some((extension, removal)) = backward_step(&handled.data, &current, added) {
+            allowed.retain(|e| *e != extension);
+            current = removal.fit.clone();
+            steps.push(removal);
         }
     }
     (current, steps, false)
+}
+
+/// The terms of `current` the backward look may take out, but not `added`, the one just
+/// paid for: the first whose term no longer pays ([`no_longer_pays`]), with the step that
+/// removes it.
+fn backward_step(
+    data: &FitData,
+    current: &FitReport,
+    added: Extension,
+) -> Option<(Extension, Step)> {
+    EXTENSIONS
+        .into_iter()
+        .filter(|e| *e != added)
+        .find_map(|e| {
+            let (s, param) = e.removed(current.model.structure)?;
+            let without = refit_without(data, current, s)?;
+            let delta = judged_change(data, &without, current);
+            no_longer_pays(current, param, delta).then(|| {
+                let step = Step {
+                    cause: e.cause(&current.model.values),
+                    paired: None,
+                    evidence: Evidence::NoLongerPays {
+                        param,
+                        value: current.model.get(param),
+                        ci95: current.interval(param),
+                        criterion_delta: delta,
+                    },
+                    interval: None,
+                    gain: gain(current, &without),
+                    fit: without,
+                    removed: true,
+                };
+                (e, step)
+            })
+        })
+}
+
+/// Whether the term of `param` no longer pays in `current`: the corrected BIC change of
+/// adding it back (`delta`, from the model without it) is not below −[`BIC_THRESHOLD`], or
+/// a dead time ended at or below zero (no dead time: a step-instant lead's share at most).
+fn no_longer_pays(current: &FitReport, param: Param, delta: f64) -> bool {
+    let null_dead_time = param == Param::Td && current.model.get(Param::Td) <= 0.0;
+    null_dead_time || !(delta.is_finite() && delta < -BIC_THRESHOLD)
+}
+
+/// `current` refitted without a term (structure `s`), from its own values (one start).
+fn refit_without(data: &FitData, current: &FitReport, s: Structure) -> Option<FitReport> {
+    let options = FitOptions {
+        starts: 1,
+        ..FitOptions::default()
+    };
+    let r = search_fit(data, s, current.model.values, &options, &mut ()).ok()?;
+    let (_, full) = on_every_sample(data, (Extension::Drift, r))?;
+    full.ln_mse.is_finite().then_some(full)
 }
 
 /// The leading cause of what `current` gets wrong and the extended fit, or `None` when no
@@ -469,11 +568,17 @@ fn run_loop(
 /// tried ([`best_pair`]: P1 → P2Z, P1 → P2D, …), and a pair that pays is one step naming
 /// both causes.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
-    next_step_with(data, current, &EXTENSIONS)
+    next_step_with(data, current, &EXTENSIONS).map(|c| c.step)
+}
+
+/// A step of the loop with the extension it made.
+struct Chosen {
+    extension: Extension,
+    step: Step,
 }
 
 /// [`next_step`] with only the extensions `allowed`.
-fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) -> Option<Step> {
+fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) -> Option<Chosen> {
     let candidates = candidates(data, current, allowed);
     let lowest = |list: Vec<&(Extension, FitReport)>| {
         list.into_iter()
@@ -532,13 +637,17 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
     }
     let cause = extension.cause(&candidate.model.values);
     let (evidence, interval) = explain(cause, data, current, &candidate);
-    Some(Step {
-        cause,
-        paired,
-        evidence,
-        interval,
-        gain: gain(current, &candidate),
-        fit: candidate,
+    Some(Chosen {
+        extension,
+        step: Step {
+            cause,
+            paired,
+            evidence,
+            interval,
+            gain: gain(current, &candidate),
+            fit: candidate,
+            removed: false,
+        },
     })
 }
 
@@ -1078,6 +1187,86 @@ mod tests {
         let mut v = Values::default();
         params.iter().for_each(|&(p, x)| v.set(p, x));
         Model::new(Structure::parse(code).unwrap(), v)
+    }
+
+    /// A P1 record (Kp 2, τ 10 s, Y0 50, step at 20.4 s between samples), noise ± 0.02.
+    fn p1_record() -> FitData {
+        let times: Vec<f64> = (0..=150).map(f64::from).collect();
+        let input = Excitation::step(20.4, 1.0);
+        let truth = model(
+            "P1",
+            &[(Param::Kp, 2.0), (Param::Tp1, 10.0), (Param::Y0, 50.0)],
+        );
+        let mut rng = crate::ident::fit::Lcg(5);
+        let y = truth
+            .simulate(&input, &times)
+            .unwrap()
+            .into_iter()
+            .map(|v| v + 0.02 * rng.symmetric())
+            .collect();
+        FitData { times, y, input }
+    }
+
+    fn fitted(data: &FitData, code: &str, params: &[(Param, f64)]) -> FitReport {
+        let m = model(code, params);
+        let options = FitOptions {
+            starts: 1,
+            ..FitOptions::default()
+        };
+        fit(data, m.structure, m.values, &options, &mut ()).unwrap()
+    }
+
+    #[test]
+    fn the_backward_look_takes_out_a_drift_that_no_longer_pays() {
+        let data = p1_record();
+        let current = fitted(
+            &data,
+            "P1",
+            &[(Param::Kp, 2.0), (Param::Tp1, 10.0), (Param::Y0, 50.0)],
+        );
+        let mut s = current.model.structure;
+        s.drift = true;
+        let mut v = current.model.values;
+        v.set(Param::Drift, 1e-4);
+        let options = FitOptions {
+            starts: 1,
+            ..FitOptions::default()
+        };
+        let with_drift = fit(&data, s, v, &options, &mut ()).unwrap();
+        let (e, step) = backward_step(&data, &with_drift, Extension::Pole).expect("taken out");
+        assert_eq!(e, Extension::Drift);
+        assert!(step.removed && step.cause == Cause::Drift);
+        assert!(!step.fit.model.structure.drift);
+        let Evidence::NoLongerPays { param, .. } = step.evidence else {
+            panic!("{:?}", step.evidence)
+        };
+        assert_eq!(param, Param::Drift);
+        // The term just paid for is never taken out in the same step.
+        assert!(backward_step(&data, &with_drift, Extension::Drift).is_none());
+        // A P1 without the drift has nothing to take out.
+        assert!(backward_step(&data, &current, Extension::Pole).is_none());
+    }
+
+    #[test]
+    fn a_dead_time_at_or_below_zero_is_no_dead_time() {
+        let data = p1_record();
+        let current = fitted(
+            &data,
+            "P1D",
+            &[
+                (Param::Kp, 2.0),
+                (Param::Tp1, 10.0),
+                (Param::Y0, 50.0),
+                (Param::Td, 0.0),
+            ],
+        );
+        let mut negative = current.clone();
+        negative.model.values.set(Param::Td, -0.2);
+        assert!(no_longer_pays(&negative, Param::Td, -50.0));
+        let mut positive = current.clone();
+        positive.model.values.set(Param::Td, 1.5);
+        assert!(!no_longer_pays(&positive, Param::Td, -50.0));
+        assert!(no_longer_pays(&positive, Param::Td, -5.0));
     }
 
     #[test]

@@ -1487,6 +1487,40 @@ impl Localize for Evidence {
                     ),
                 )
             }
+            Evidence::NoLongerPays {
+                param,
+                value,
+                ci95,
+                criterion_delta,
+            } => {
+                let (name, v, d) = (param.name(), n4(lang, *value), n4(lang, *criterion_delta));
+                let ci = ci95.map_or(String::new(), |(a, b)| {
+                    format!(" [{}{} {}]", n4(lang, a), lang.pick(",", ";"), n4(lang, b))
+                });
+                if *param == Param::Td && *value <= 0.0 {
+                    lang.pick(
+                        format!(
+                            "Once the later terms are in, {name} ends at {v}{ci}: a dead time \
+                             at or below zero is no dead time. The term is taken out."
+                        ),
+                        format!(
+                            "Com os termos seguintes incluídos, {name} termina em {v}{ci}: um \
+                             tempo morto nulo ou negativo não é tempo morto. O termo é retirado."
+                        ),
+                    )
+                } else {
+                    lang.pick(
+                        format!(
+                            "Once the later terms are in, {name} = {v}{ci} no longer pays: \
+                             adding it back changes BIC by only {d}. The term is taken out."
+                        ),
+                        format!(
+                            "Com os termos seguintes incluídos, {name} = {v}{ci} não compensa \
+                             mais: devolvê-lo muda o BIC só em {d}. O termo é retirado."
+                        ),
+                    )
+                }
+            }
             Evidence::None => Cause::None.text(lang),
         }
     }
@@ -1781,11 +1815,12 @@ fn evidence_id(e: &Evidence) -> &'static str {
         Evidence::InverseResponse { .. } => "InverseResponse",
         Evidence::Integrator { .. } => "Integrator",
         Evidence::Drift { .. } => "Drift",
+        Evidence::NoLongerPays { .. } => "NoLongerPays",
         Evidence::None => "None",
     }
 }
 #[cfg(test)]
-const EVIDENCE_VARIANTS: usize = 9;
+const EVIDENCE_VARIANTS: usize = 10;
 
 fn evidence() -> Vec<Evidence> {
     let bias = Bias {
@@ -1830,6 +1865,12 @@ fn evidence() -> Vec<Evidence> {
         Evidence::Drift {
             tail: Some((0.01, 4.2)),
             drift: 0.012,
+        },
+        Evidence::NoLongerPays {
+            param: Param::Drift,
+            value: 0.0002,
+            ci95: Some((-0.001, 0.0014)),
+            criterion_delta: -3.2,
         },
         Evidence::None,
     ]

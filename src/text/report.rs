@@ -155,6 +155,17 @@ fn chain_table(d: &DiagnoseReport, lang: Lang) -> Vec<String> {
 
 /// A step's cause in words: `dead_time: The model moves before the data does: …`.
 pub fn cause_line(step: &Step, lang: Lang) -> String {
+    if step.removed {
+        return format!(
+            "{} {}: {}",
+            step.cause.id(),
+            lang.pick("taken out", "retirado"),
+            lang.pick(
+                "the term no longer pays once the later ones are in.",
+                "o termo não compensa mais com os seguintes incluídos."
+            )
+        );
+    }
     match step.paired {
         Some(p) => format!(
             "{} + {}: {} {}",
@@ -170,7 +181,12 @@ pub fn cause_line(step: &Step, lang: Lang) -> String {
 /// A step's remedy and gain: `Remedy: add a dead time Td. RMSE 0.9 → 0.3 (3× lower); fit …`.
 pub fn remedy_line(step: &Step, lang: Lang) -> String {
     let g = &step.gain;
-    let remedy = super::ident::remedy(step.cause, lang);
+    let remedy = if step.removed {
+        lang.pick("take the term out again", "retirar o termo de novo")
+            .to_string()
+    } else {
+        super::ident::remedy(step.cause, lang).to_string()
+    };
     let (before, after, ratio, fb, fa) = (
         num(lang, g.rmse_before, 4),
         num(lang, g.rmse_after, 4),
@@ -489,6 +505,41 @@ mod tests {
         assert_eq!(en.lines().count(), pt.lines().count());
     }
 
+    #[test]
+    fn a_term_taken_out_says_so_in_both_languages() {
+        use crate::ident::diagnose::{Cause, Evidence};
+        let mut step = chain().steps[0].clone();
+        step.cause = Cause::Drift;
+        step.removed = true;
+        step.evidence = Evidence::NoLongerPays {
+            param: Param::Drift,
+            value: 0.0002,
+            ci95: Some((-0.001, 0.0014)),
+            criterion_delta: 4.5,
+        };
+        let [cause, evidence, remedy] = step_lines(&step, Lang::En);
+        assert!(cause.starts_with("drift taken out"), "{cause}");
+        assert!(
+            evidence.contains("Drift = 0.0002 [-0.001, 0.0014] no longer pays"),
+            "{evidence}"
+        );
+        assert!(
+            remedy.starts_with("Remedy: take the term out again"),
+            "{remedy}"
+        );
+        let [cause, evidence, remedy] = step_lines(&step, Lang::Pt);
+        assert!(cause.starts_with("drift retirado"), "{cause}");
+        assert!(evidence.contains("não compensa"), "{evidence}");
+        assert!(remedy.starts_with("Correção: retirar o termo"), "{remedy}");
+        step.evidence = Evidence::NoLongerPays {
+            param: Param::Td,
+            value: -0.24,
+            ci95: None,
+            criterion_delta: -30.0,
+        };
+        assert!(step.evidence.text(Lang::En).contains("no dead time"));
+    }
+
     fn chain() -> DiagnoseReport {
         use crate::ident::diagnose::{Bias, Cause, Ending, Evidence, Gain, Verdict};
         let start = report();
@@ -517,6 +568,7 @@ mod tests {
                 criterion_delta: -91.18,
             },
             fit: end.clone(),
+            removed: false,
         };
         DiagnoseReport {
             start,
