@@ -24,6 +24,7 @@ use serde::{Deserialize, Serialize};
 use super::drift_evidence::read_drift;
 use super::fit::{FitData, FitError, FitOptions, FitReport, fit, search_fit};
 use super::guess::{auto_guess, features};
+use super::holdout::validates;
 use super::models::{Model, Param, Structure, Values};
 use super::residuals::{self, ResidualAnalysis};
 use super::staircase::Staircase;
@@ -589,12 +590,18 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
     let far = far_from_white(data, current);
     // The corrected BIC judges first: of the extensions that pay by it, the lowest BIC; only
     // when none does, and what is left is far from white, the lowest BIC by the plain one.
-    let paying = lowest(
-        candidates
-            .iter()
-            .filter(|(_, c)| pays(data, current, c))
-            .collect(),
-    );
+    // Of those, the lowest BIC that also predicts the part of the record it was not
+    // fitted to ([`validates`]): a drift or a zero bought on the fitted part extrapolates
+    // badly, a real pole does not.
+    let mut paying: Vec<&(Extension, FitReport)> = candidates
+        .iter()
+        .filter(|(_, c)| pays(data, current, c))
+        .collect();
+    paying.sort_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)));
+    let paying = paying
+        .into_iter()
+        .find(|(_, c)| validates(data, current, c))
+        .cloned();
     let leader_extension = leader.as_ref().map(|(e, _)| *e);
     // The leader pays by the plain BIC but not by the corrected one: its residuals are
     // correlated, which coloured noise does, and so does a second effect still missing
@@ -608,7 +615,11 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
     // still short of a pole), and an operating point that is really off leaves residuals
     // biased everywhere, which pay by both.
     let single = paying
-        .or(leader.filter(|_| far))
+        .or_else(|| {
+            leader
+                .clone()
+                .filter(|(_, c)| far && validates(data, current, c))
+        })
         .and_then(|w| on_every_sample(data, w))
         .filter(|(e, c)| {
             pays(data, current, c)
@@ -621,7 +632,7 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
                 return None;
             }
             let ((mut e1, mut e2), c) = best_pair(data, current, allowed)?;
-            if !pays(data, current, &c) {
+            if !pays(data, current, &c) || !validates(data, current, &c) {
                 return None;
             }
             // The pair's member that did best alone is named first.

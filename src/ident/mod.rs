@@ -12,6 +12,7 @@ pub mod fit;
 pub mod guess;
 pub mod hand;
 pub mod handles;
+pub mod holdout;
 pub mod lag_pair;
 pub mod landscape;
 pub mod models;
