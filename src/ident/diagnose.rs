@@ -598,6 +598,7 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
         .filter(|(_, c)| pays(data, current, c))
         .collect();
     paying.sort_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)));
+    prefer_pole_to_dead_time(&mut paying);
     let paying = paying
         .into_iter()
         .find(|(_, c)| validates(data, current, c))
@@ -625,8 +626,9 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
             pays(data, current, c)
                 || (far && *e != Extension::FreeOffset && plainly_pays(current, c))
         });
+    let single = single.map(|w| look_ahead(data, current, allowed, w));
     let (extension, paired, candidate) = match single {
-        Some((e, c)) => (e, None, c),
+        Some(chosen) => chosen,
         None => {
             if !far && !leader_plainly {
                 return None;
@@ -660,6 +662,57 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
             removed: false,
         },
     })
+}
+
+/// A dead time and one more pole the record cannot tell apart (their BICs within
+/// [`BIC_THRESHOLD`]): the classic first-order-plus-dead-time reading of a slow second lag,
+/// whose dead time trades with the slow lag and the gain on a record that has not settled.
+/// The pole is put first: it is the process's own structure, and its gain the settled one.
+fn prefer_pole_to_dead_time(paying: &mut [&(Extension, FitReport)]) {
+    let Some(first) = paying.first() else { return };
+    if first.0 != Extension::Delay {
+        return;
+    }
+    let lead = bic(&first.1);
+    if let Some(k) = paying
+        .iter()
+        .position(|(e, c)| *e == Extension::Pole && bic(c) - lead < BIC_THRESHOLD)
+    {
+        paying[..=k].rotate_right(1);
+    }
+}
+
+/// Extensions that mimic a missing part of the dynamics from the first step: a dead time
+/// takes an inverse response's dip or a fast lag's slow start, a drift a slow approach, a
+/// free Y0 a share of any misfit. When one of them leads, the pairs are looked at too.
+const STAND_INS: [Extension; 3] = [Extension::Delay, Extension::Drift, Extension::FreeOffset];
+
+/// The one-step look-ahead, so that a first wrong turn does not trap the loop: when the
+/// single extension chosen is a stand-in ([`STAND_INS`]) and what `current` leaves is far
+/// from white, the best pair of dynamic extensions ([`best_pair`]) is taken instead if it
+/// pays over the single one by the corrected BIC and predicts the held-out part as well
+/// (P1 → P2Z for an inverse response, which a dead time first only approximates). The
+/// chosen extension, a second one named with it, and the fit.
+fn look_ahead(
+    data: &FitData,
+    current: &FitReport,
+    allowed: &[Extension],
+    (e, c): (Extension, FitReport),
+) -> (Extension, Option<Cause>, FitReport) {
+    if !STAND_INS.contains(&e) || !far_from_white(data, current) {
+        return (e, None, c);
+    }
+    let Some(((mut e1, mut e2), pair)) = best_pair(data, current, allowed) else {
+        return (e, None, c);
+    };
+    let better = judged_change(data, &c, &pair) < -BIC_THRESHOLD;
+    if !better || !validates(data, current, &pair) {
+        return (e, None, c);
+    }
+    if e == e2 {
+        std::mem::swap(&mut e1, &mut e2);
+    }
+    (e1, Some(e2.cause(&pair.model.values)), pair)
 }
 
 /// The residuals' RMSE must exceed the white noise read from the output's first differences

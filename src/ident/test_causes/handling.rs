@@ -11,9 +11,10 @@ use super::{
     FittedRecord, TestCause, coloured_noise, disturbance, fit_held, imperfect_step, nonlinearity,
     not_at_rest, outliers, quantisation, sampling, saturation, small_step, steps_held,
 };
+use crate::ident::drift_evidence::read_drift;
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
 use crate::ident::guess::auto_guess;
-use crate::ident::models::Structure;
+use crate::ident::models::{Param, Structure};
 use crate::ident::per_step::{MAX_PER_STEP, StepFit, per_step_fits, window_data};
 use crate::ident::robust::{RobustFit, robust_fit};
 
@@ -199,7 +200,48 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
         return None;
     }
     let cause = nonlinearity(fitted, &held, data.sampling_period())?;
+    if drift_explains_gains(data, fitted, &options) {
+        return None;
+    }
     Some((cause, fits))
+}
+
+/// Whether a drift the record shows where no change is answered ([`read_drift`]) makes the
+/// changes' gains agree: a drift adds to the level an up step reaches and takes from a down
+/// step's, so their own gains differ as a nonlinearity's would. The joint model is refitted
+/// with a drift; when the drift is shown, the per-step gains are compared again on the
+/// output less that drift, and if they agree there is no nonlinearity to name (the model's
+/// loop names the drift).
+fn drift_explains_gains(data: &FitData, fitted: &FitReport, options: &FitOptions) -> bool {
+    let mut s = fitted.model.structure;
+    if s.drift || s.transient {
+        return false;
+    }
+    s.drift = true;
+    let mut guess = fitted.model.values;
+    guess.set(Param::Drift, 0.0);
+    let Ok(with_drift) = fit(data, s, guess, options, &mut ()) else {
+        return false;
+    };
+    let drift = with_drift.model.get(Param::Drift);
+    if !read_drift(data, &fitted.model, &with_drift).is_some_and(|d| d.shows(drift)) {
+        return false;
+    }
+    let mut detrended = data.clone();
+    let t0 = data.input.t0();
+    for (y, t) in detrended.y.iter_mut().zip(&data.times) {
+        *y -= drift * (t - t0);
+    }
+    let mut joint = with_drift;
+    joint.model.structure.drift = false;
+    let mut structure = joint.model.structure;
+    structure.transient = false;
+    let fits = per_step_fits(&detrended, structure, options);
+    let held: Vec<StepFit> = fits
+        .into_iter()
+        .filter(|f| fit_held(f, &joint.model))
+        .collect();
+    held.len() >= 2 && nonlinearity(&joint, &held, data.sampling_period()).is_none()
 }
 
 /// `nonlinearity` checked before the model's causes. A gain that differs between the up
