@@ -1097,6 +1097,21 @@ impl Localize for FitWarning {
                     ),
                 )
             }
+            FitWarning::GainUndetermined { low, high } => {
+                let (lo, hi) = (full(lang, *low), full(lang, *high));
+                lang.pick(
+                    format!(
+                        "the 95 % interval of Kp, [{lo}, {hi}], contains 0: this record does \
+                         not determine the gain, not even its sign. A larger step, a longer \
+                         record or a test in open loop may"
+                    ),
+                    format!(
+                        "o intervalo de 95 % de Kp, [{lo}; {hi}], contém 0: este registro não \
+                         determina o ganho, nem mesmo o seu sinal. Um degrau maior, um registro \
+                         mais longo ou um ensaio em malha aberta podem determinar"
+                    ),
+                )
+            }
         }
     }
 }
@@ -1913,6 +1928,10 @@ fn fit_warnings() -> Vec<FitWarning> {
             statistic: "MSE".into(),
             log10: 600.3,
         },
+        FitWarning::GainUndetermined {
+            low: -140.0,
+            high: 109.0,
+        },
     ]
 }
 
@@ -1970,6 +1989,7 @@ fn fit_warning_id(w: &FitWarning) -> &'static str {
         FitWarning::NotConverged => "NotConverged",
         FitWarning::NoImprovement => "NoImprovement",
         FitWarning::Unrepresentable { .. } => "Unrepresentable",
+        FitWarning::GainUndetermined { .. } => "GainUndetermined",
     }
 }
 
