@@ -2165,7 +2165,7 @@ mod tests {
         assert_eq!(distinct(&model_errors(), model_error_id), 6);
         assert_eq!(distinct(&fit_errors(), fit_error_id), 7);
         assert_eq!(distinct(&experiment_errors(), experiment_error_id), 5);
-        assert_eq!(distinct(&fit_warnings(), fit_warning_id), 9);
+        assert_eq!(distinct(&fit_warnings(), fit_warning_id), 10);
     }
 
     #[test]
