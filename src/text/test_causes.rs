@@ -129,7 +129,8 @@ fn closed_loop_words(
     let (d1, d2) = dof;
     lang.pick(
         format!(
-            "The input moves at {m} % of the samples, and the output's past changes predict \
+            "The input moves at {m} % of the samples, and the fit's residuals (what the model \
+             leaves of the output: its noise) at the same sample and the three before predict \
              those moves beyond what the input's own past does (F = {f} with {d1} and {d2} \
              degrees of freedom, p < 0.001; they explain {e} % of what the input's past leaves): \
              a controller set the input from the output's errors. The input is then correlated \
@@ -138,10 +139,11 @@ fn closed_loop_words(
              hold."
         ),
         format!(
-            "A entrada muda em {m} % das amostras, e as variações passadas da saída preveem \
-             essas mudanças além do que o passado da própria entrada prevê (F = {f} com {d1} e \
-             {d2} graus de liberdade, p < 0,001; explicam {e} % do que o passado da entrada \
-             deixa): um controlador definiu a entrada a partir dos erros da saída. A entrada \
+            "A entrada muda em {m} % das amostras, e os resíduos do ajuste (o que o modelo \
+             deixa da saída: o seu ruído) na mesma amostra e nas três anteriores preveem essas \
+             mudanças além do que o passado da própria entrada prevê (F = {f} com {d1} e {d2} \
+             graus de liberdade, p < 0,001; explicam {e} % do que o passado da entrada deixa): \
+             um controlador definiu a entrada a partir dos erros da saída. A entrada \
              fica então correlacionada com o ruído pela realimentação, e os mínimos quadrados \
              puxam o ganho para −1/(o ganho do controlador): o Kp ajustado é viesado e seu \
              intervalo não vale."
