@@ -195,6 +195,21 @@ pub enum FitWarning {
         statistic: String,
         log10: f64,
     },
+    /// The 95 % interval of Kp, [low, high], contains 0: the record does not determine the
+    /// gain, not even its sign.
+    GainUndetermined {
+        low: f64,
+        high: f64,
+    },
+}
+
+/// [`FitWarning::GainUndetermined`] when the 95 % interval of Kp among `params` contains 0.
+fn gain_warning(params: &[Estimate]) -> Option<FitWarning> {
+    let (low, high) = params
+        .iter()
+        .find(|e| e.param == Param::Kp)
+        .and_then(|e| e.ci95)?;
+    (low <= 0.0 && 0.0 <= high).then_some(FitWarning::GainUndetermined { low, high })
 }
 
 /// One line of progress, for a live display.
@@ -281,6 +296,7 @@ impl FitReport {
 
     /// Widens every 95 % interval about its estimate by `factor` (≥ 1): the correction for
     /// residuals correlated as an AR(1) with coefficient ρ, √((1 + ρ)/(1 − ρ)).
+    /// The gain's warning follows the widened interval.
     pub fn widen_intervals(&mut self, factor: f64) {
         for e in &mut self.params {
             if let Some((lo, hi)) = e.ci95 {
@@ -290,6 +306,9 @@ impl FitReport {
                 )));
             }
         }
+        self.warnings
+            .retain(|w| !matches!(w, FitWarning::GainUndetermined { .. }));
+        self.warnings.extend(gain_warning(&self.params));
     }
 
     /// The residuals y − ŷ of this fit on `data` (output units), simulated in the fit's
@@ -1266,30 +1285,30 @@ impl Problem {
             _ => {}
         }
         let out = |param: Param, x: f64| units.value_out(param, self.structure, x);
+        let params: Vec<Estimate> = self
+            .params
+            .iter()
+            .zip(&run.x)
+            .zip(intervals)
+            .enumerate()
+            .map(|(i, ((&param, &value), ci95))| {
+                let estimate = Estimate {
+                    param,
+                    value: out(param, value),
+                    ci95: None,
+                    bounds: Some((out(param, self.lower[i]), out(param, self.upper[i]))),
+                };
+                Estimate {
+                    ci95: ci95
+                        .map(|(lo, hi)| estimate.within_bounds((out(param, lo), out(param, hi))))
+                        .filter(|(lo, hi)| lo.is_finite() && hi.is_finite()),
+                    ..estimate
+                }
+            })
+            .collect();
+        warnings.extend(gain_warning(&params));
         Ok(FitReport {
-            params: self
-                .params
-                .iter()
-                .zip(&run.x)
-                .zip(intervals)
-                .enumerate()
-                .map(|(i, ((&param, &value), ci95))| {
-                    let estimate = Estimate {
-                        param,
-                        value: out(param, value),
-                        ci95: None,
-                        bounds: Some((out(param, self.lower[i]), out(param, self.upper[i]))),
-                    };
-                    Estimate {
-                        ci95: ci95
-                            .map(|(lo, hi)| {
-                                estimate.within_bounds((out(param, lo), out(param, hi)))
-                            })
-                            .filter(|(lo, hi)| lo.is_finite() && hi.is_finite()),
-                        ..estimate
-                    }
-                })
-                .collect(),
+            params,
             model,
             method: options.method,
             n,
@@ -1870,6 +1889,43 @@ mod tests {
         );
         let r = fit(&data, s, v, &FitOptions::default(), &mut CancelAfter(3)).unwrap();
         assert_eq!(r.termination, Termination::Cancelled);
+    }
+
+    #[test]
+    fn a_gain_interval_across_zero_says_the_gain_is_undetermined() {
+        // Kp 0.002 against noise ± 0.5: the interval spans 0. Kp 1.5 with the same noise:
+        // it does not, and nothing is said.
+        let undetermined = |kp: f64| {
+            let truth = [(Param::Kp, kp), (Param::Tp1, 4.0), (Param::Y0, 3.0)];
+            let (data, s, v) = synthetic("P1", &truth, 0.5);
+            let r = fit(&data, s, v, &FitOptions::default(), &mut ()).unwrap();
+            let (lo, hi) = r.interval(Param::Kp).unwrap();
+            let warned = r.warnings.iter().find_map(|w| match w {
+                FitWarning::GainUndetermined { low, high } => Some((*low, *high)),
+                _ => None,
+            });
+            if let Some(w) = warned {
+                assert_eq!(w, (lo, hi));
+            }
+            (warned.is_some(), lo <= 0.0 && hi >= 0.0, r)
+        };
+        let (warned, spans, mut r) = undetermined(0.002);
+        assert!(warned && spans, "{:?}", r.params);
+        let (warned, spans, _) = undetermined(1.5);
+        assert!(!warned && !spans);
+        // Widening keeps one warning, with the widened interval.
+        r.widen_intervals(2.0);
+        let count = r
+            .warnings
+            .iter()
+            .filter(|w| matches!(w, FitWarning::GainUndetermined { .. }))
+            .count();
+        assert_eq!(count, 1);
+        let (lo, hi) = r.interval(Param::Kp).unwrap();
+        assert!(
+            r.warnings
+                .contains(&FitWarning::GainUndetermined { low: lo, high: hi })
+        );
     }
 
     #[test]

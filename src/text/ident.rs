@@ -1097,6 +1097,21 @@ impl Localize for FitWarning {
                     ),
                 )
             }
+            FitWarning::GainUndetermined { low, high } => {
+                let (lo, hi) = (full(lang, *low), full(lang, *high));
+                lang.pick(
+                    format!(
+                        "the 95 % interval of Kp, [{lo}, {hi}], contains 0: this record does \
+                         not determine the gain, not even its sign. A larger step, a longer \
+                         record or a test in open loop may"
+                    ),
+                    format!(
+                        "o intervalo de 95 % de Kp, [{lo}; {hi}], contém 0: este registro não \
+                         determina o ganho, nem mesmo o seu sinal. Um degrau maior, um registro \
+                         mais longo ou um ensaio em malha aberta podem determinar"
+                    ),
+                )
+            }
         }
     }
 }
@@ -1957,6 +1972,10 @@ fn fit_warnings() -> Vec<FitWarning> {
             statistic: "MSE".into(),
             log10: 600.3,
         },
+        FitWarning::GainUndetermined {
+            low: -140.0,
+            high: 109.0,
+        },
     ]
 }
 
@@ -2014,6 +2033,7 @@ fn fit_warning_id(w: &FitWarning) -> &'static str {
         FitWarning::NotConverged => "NotConverged",
         FitWarning::NoImprovement => "NoImprovement",
         FitWarning::Unrepresentable { .. } => "Unrepresentable",
+        FitWarning::GainUndetermined { .. } => "GainUndetermined",
     }
 }
 
@@ -2189,7 +2209,7 @@ mod tests {
         assert_eq!(distinct(&model_errors(), model_error_id), 6);
         assert_eq!(distinct(&fit_errors(), fit_error_id), 7);
         assert_eq!(distinct(&experiment_errors(), experiment_error_id), 5);
-        assert_eq!(distinct(&fit_warnings(), fit_warning_id), 9);
+        assert_eq!(distinct(&fit_warnings(), fit_warning_id), 10);
     }
 
     #[test]

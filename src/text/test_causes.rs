@@ -83,6 +83,10 @@ impl Localize for TestCauseKind {
             TestCauseKind::ImperfectStep => {
                 ("The step was not a step", "O degrau não foi um degrau")
             }
+            TestCauseKind::ClosedLoop => (
+                "Closed loop: the input answers the output",
+                "Malha fechada: a entrada responde à saída",
+            ),
         };
         lang.pick(en, pt).to_string()
     }
@@ -105,6 +109,44 @@ fn motion_words(m: &Motion, lang: Lang) -> String {
             "Antes da primeira variação da entrada ({span}, {n} amostras) a saída variou \
              {change} (reta ajustada a essas amostras), mais que os {threshold} que o ruído \
              permite: o processo não estava em equilíbrio quando veio o degrau."
+        ),
+    )
+}
+
+/// The closed-loop evidence: the statistic, then why the gain is biased.
+fn closed_loop_words(
+    moves: f64,
+    f: f64,
+    dof: (usize, usize),
+    explained: f64,
+    lang: Lang,
+) -> String {
+    let (m, f, e) = (
+        n4(lang, 100.0 * moves),
+        n4(lang, f),
+        n4(lang, 100.0 * explained),
+    );
+    let (d1, d2) = dof;
+    lang.pick(
+        format!(
+            "The input moves at {m} % of the samples, and the fit's residuals (what the model \
+             leaves of the output: its noise) at the same sample and the three before predict \
+             those moves beyond what the input's own past does (F = {f} with {d1} and {d2} \
+             degrees of freedom, p < 0.001; they explain {e} % of what the input's past leaves): \
+             a controller set the input from the output's errors. The input is then correlated \
+             with the noise through the feedback, and least squares pulls the gain towards \
+             −1/(the controller's gain): the fitted Kp is biased and its interval does not \
+             hold."
+        ),
+        format!(
+            "A entrada muda em {m} % das amostras, e os resíduos do ajuste (o que o modelo \
+             deixa da saída: o seu ruído) na mesma amostra e nas três anteriores preveem essas \
+             mudanças além do que o passado da própria entrada prevê (F = {f} com {d1} e {d2} \
+             graus de liberdade, p < 0,001; explicam {e} % do que o passado da entrada deixa): \
+             um controlador definiu a entrada a partir dos erros da saída. A entrada \
+             fica então correlacionada com o ruído pela realimentação, e os mínimos quadrados \
+             puxam o ganho para −1/(o ganho do controlador): o Kp ajustado é viesado e seu \
+             intervalo não vale."
         ),
     )
 }
@@ -448,6 +490,12 @@ impl Localize for TestEvidence {
                     None => head + ".",
                 }
             }
+            TestEvidence::ClosedLoop {
+                moves,
+                f,
+                dof,
+                explained,
+            } => closed_loop_words(*moves, *f, *dof, *explained, lang),
         }
     }
 }
@@ -618,6 +666,15 @@ pub fn remedy(cause: &TestCause, lang: Lang) -> String {
         (TestCauseKind::Sampling, _) => fixed(
             "Check the sampling period.",
             "Verifique o período de amostragem.",
+        ),
+        (TestCauseKind::ClosedLoop, _) => fixed(
+            "Open the loop (the controller in manual) and step the input, or keep the loop and \
+             add an external test signal (a setpoint step, or a dither added to the controller's \
+             output) and identify from that signal, not from the controller's output alone.",
+            "Abra a malha (o controlador em manual) e aplique o degrau na entrada, ou mantenha a \
+             malha e acrescente um sinal de teste externo (um degrau na referência, ou um sinal \
+             de excitação somado à saída do controlador) e identifique a partir desse sinal, não \
+             só da saída do controlador.",
         ),
     }
 }
@@ -896,6 +953,16 @@ pub fn examples() -> Vec<TestCause> {
             },
             Handling::MeasuredInput,
         ),
+        cause(
+            K::ClosedLoop,
+            TestEvidence::ClosedLoop {
+                moves: 0.98,
+                f: 85.3,
+                dof: (4, 1991),
+                explained: 0.146,
+            },
+            Handling::Reported,
+        ),
     ]
 }
 
@@ -1001,5 +1068,28 @@ mod tests {
         assert!(name.starts_with("not_at_rest: Not at rest"), "{name}");
         assert!(evidence.contains("moved by 5.2") && evidence.ends_with("[t = 10 … 20 s]"));
         assert!(done.contains("initial transient") && remedy.contains("steady state"));
+    }
+
+    #[test]
+    fn closed_loop_says_its_statistic_why_and_what_to_do() {
+        let all = examples();
+        let c = all
+            .iter()
+            .find(|c| c.kind == TestCauseKind::ClosedLoop)
+            .unwrap();
+        let [name, evidence, _, remedy] = cause_lines(c, Lang::En);
+        assert!(name.starts_with("closed_loop: Closed loop"), "{name}");
+        assert!(evidence.contains("98 % of the samples"), "{evidence}");
+        assert!(evidence.contains("F = 85.3 with 4 and 1991"), "{evidence}");
+        assert!(
+            evidence.contains("−1/(the controller's gain)"),
+            "{evidence}"
+        );
+        assert!(remedy.contains("Open the loop") && remedy.contains("dither"));
+        let [name, evidence, _, remedy] = cause_lines(c, Lang::Pt);
+        assert!(name.starts_with("closed_loop: Malha fechada"), "{name}");
+        assert!(evidence.contains("F = 85,3 com 4 e 1991"), "{evidence}");
+        assert!(evidence.contains("viesado"), "{evidence}");
+        assert!(remedy.contains("Abra a malha"), "{remedy}");
     }
 }

@@ -8,8 +8,9 @@
 //! window ([`on_first_step_when_nonlinear`]).
 
 use super::{
-    FittedRecord, TestCause, coloured_noise, disturbance, fit_held, imperfect_step, nonlinearity,
-    not_at_rest, outliers, quantisation, sampling, saturation, small_step, steps_held,
+    FittedRecord, TestCause, closed_loop::closed_loop, coloured_noise, disturbance, fit_held,
+    imperfect_step, nonlinearity, not_at_rest, outliers, quantisation, sampling, saturation,
+    small_step, steps_held,
 };
 use crate::ident::drift_evidence::read_drift;
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
@@ -62,6 +63,7 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
             current = r;
         }
     }
+    causes.extend(FittedRecord::new(data, &current).and_then(|r| closed_loop(&r)));
     let mut kept = Kept {
         keep: vec![true; data.y.len()],
     };
@@ -95,6 +97,7 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
         outlier_samples.iter().for_each(|&i| keep[i] = true);
         data.keeping(&keep)
     });
+    within_record(&mut causes, &data.times);
     let mut handled = Handled {
         data: handled,
         robust_data,
@@ -103,6 +106,21 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
     };
     on_first_step_when_nonlinear(&mut handled);
     handled
+}
+
+/// Each cause's interval cut to the record's span, [first sample, last sample]: the
+/// evidence points into the record, never past its ends (an interval set by a model's time
+/// constant may reach beyond); an interval wholly outside it is dropped.
+fn within_record(causes: &mut [TestCause], times: &[f64]) {
+    let (Some(&first), Some(&last)) = (times.first(), times.last()) else {
+        return;
+    };
+    for c in causes {
+        c.interval = c.interval.and_then(|(a, b)| {
+            let (a, b) = (a.max(first), b.min(last));
+            (a <= b).then_some((a, b))
+        });
+    }
 }
 
 /// The start structure with an initial transient and a free Y0, fitted from its guess.
@@ -141,6 +159,7 @@ pub fn finish(
     adequate: bool,
     causes: &mut Vec<TestCause>,
 ) -> FitReport {
+    let found_before = causes.len();
     let mut last = match &handled.robust_data {
         Some(d) => robust(d, &last).map_or(last, |r| r.report),
         None => last,
@@ -155,6 +174,7 @@ pub fn finish(
         causes.push(cause);
     }
     causes.extend(reported(&handled.data, &last));
+    within_record(&mut causes[found_before..], &handled.data.times);
     causes.sort_by_key(|c| super::TestCauseKind::ALL.iter().position(|k| *k == c.kind));
     last
 }
@@ -285,4 +305,42 @@ fn robust(data: &FitData, last: &FitReport) -> Option<RobustFit> {
         outliers::LOSS,
     )
     .ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ident::test_causes::{Handling, TestCauseKind, TestEvidence};
+
+    #[test]
+    fn an_interval_past_the_record_is_cut_to_it() {
+        let cause = |interval| TestCause {
+            kind: TestCauseKind::SmallStep,
+            evidence: TestEvidence::SmallStep {
+                effect: 1.0,
+                noise: 0.5,
+                ratio: 2.0,
+            },
+            interval,
+            handling: Handling::Reported,
+        };
+        let times = [1342.0, 2000.0, 86_355.0];
+        let mut causes = [
+            cause(Some((1342.0, 8.546e6))),
+            cause(Some((-5.0, 10_000.0))),
+            cause(Some((9.0e4, 1.0e5))),
+            cause(None),
+        ];
+        within_record(&mut causes, &times);
+        let got: Vec<_> = causes.iter().map(|c| c.interval).collect();
+        assert_eq!(
+            got,
+            [
+                Some((1342.0, 86_355.0)),
+                Some((1342.0, 10_000.0)),
+                None,
+                None
+            ]
+        );
+    }
 }

@@ -13,6 +13,7 @@
 //! This module owns the facts and their detection from the data and a fit's residuals; it
 //! fits nothing itself.
 
+pub mod closed_loop;
 pub mod coloured_noise;
 pub mod disturbance;
 pub mod handling;
@@ -65,11 +66,14 @@ pub enum TestCauseKind {
     SmallStep,
     /// The input ramps, overshoots or wobbles instead of stepping.
     ImperfectStep,
+    /// The test ran in closed loop: the input answers the output's earlier errors.
+    ClosedLoop,
 }
 
 impl TestCauseKind {
     /// Every cause, in the order the diagnosis checks and lists them.
-    pub const ALL: [TestCauseKind; 10] = [
+    pub const ALL: [TestCauseKind; 11] = [
+        TestCauseKind::ClosedLoop,
         TestCauseKind::NotAtRest,
         TestCauseKind::Saturation,
         TestCauseKind::Outliers,
@@ -95,6 +99,7 @@ impl TestCauseKind {
             TestCauseKind::Sampling => "sampling",
             TestCauseKind::SmallStep => "small_step",
             TestCauseKind::ImperfectStep => "imperfect_step",
+            TestCauseKind::ClosedLoop => "closed_loop",
         }
     }
 }
@@ -260,6 +265,15 @@ pub enum TestEvidence {
     ImperfectStep {
         shape: StepShape,
         mistaken_for: Option<Cause>,
+    },
+    /// The input moves at `moves` of the samples, and the output's past changes predict
+    /// those moves beyond the input's own past: F statistic `f` with `dof` degrees of
+    /// freedom (p < 0.001), the output's past explaining `explained` of their variance.
+    ClosedLoop {
+        moves: f64,
+        f: f64,
+        dof: (usize, usize),
+        explained: f64,
     },
 }
 
