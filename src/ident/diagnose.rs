@@ -365,6 +365,41 @@ pub struct Step {
     pub removed: bool,
 }
 
+/// A term the gain trades with: the final fit's Kp estimate correlated with `with`'s by
+/// `correlation` (|r| ≥ [`TRADE_CORRELATION`]), so that the record measures the two only
+/// together; the 95 % interval of Kp is the range the record allows.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GainTrade {
+    pub with: Param,
+    pub correlation: f64,
+}
+
+/// Kp correlated with another parameter by this much or more is not measured apart from it.
+pub const TRADE_CORRELATION: f64 = 0.9;
+
+/// The terms a gain trades with on a record that has not settled or did not start at rest:
+/// a drift, an initial transient, the operating point, a zero, and the slowest lag.
+fn gain_trade(r: &FitReport) -> Option<GainTrade> {
+    let slowest = [Param::Tp3, Param::Tp2, Param::Tp1, Param::Tw]
+        .into_iter()
+        .filter(|p| r.model.structure.params().contains(p))
+        .max_by(|a, b| r.model.get(*a).total_cmp(&r.model.get(*b)));
+    let trading = [
+        Param::Drift,
+        Param::X1,
+        Param::X2,
+        Param::X3,
+        Param::Y0,
+        Param::Tz,
+    ];
+    r.kp_correlations
+        .iter()
+        .filter(|(p, _)| trading.contains(p) || Some(*p) == slowest)
+        .filter(|(_, c)| c.abs() >= TRADE_CORRELATION)
+        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .map(|&(with, correlation)| GainTrade { with, correlation })
+}
+
 /// The whole chain.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DiagnoseReport {
@@ -378,6 +413,10 @@ pub struct DiagnoseReport {
     pub verdict: Option<Verdict>,
     /// The process's static gain Kp = Δy/Δu of the final model, with its 95 % interval.
     pub static_gain: (f64, Option<(f64, f64)>),
+    /// The term the record does not separate the gain from, when there is one
+    /// ([`GainTrade`]): the static gain is then measured only together with it.
+    #[serde(default)]
+    pub gain_trade: Option<GainTrade>,
     /// What the test itself got wrong (artefacts, not structure), in the order checked.
     #[serde(default)]
     pub test_causes: Vec<TestCause>,
@@ -472,6 +511,7 @@ pub fn diagnose_from(
     DiagnoseReport {
         start: handled.start,
         static_gain: (kp, current.interval(Param::Kp)),
+        gain_trade: gain_trade(&current),
         final_fit: current,
         steps,
         adequate,
@@ -650,6 +690,9 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
     }
     let cause = extension.cause(&candidate.model.values);
     let (evidence, interval) = explain(cause, data, current, &candidate);
+    // The evidence points into the record, never past its ends (an interval set by a time
+    // constant stuck at its bound may reach far beyond).
+    let interval = interval.and_then(|i| data.within_record(i));
     Some(Chosen {
         extension,
         step: Step {
@@ -1309,6 +1352,38 @@ mod tests {
         assert!(backward_step(&data, &with_drift, Extension::Drift).is_none());
         // A P1 without the drift has nothing to take out.
         assert!(backward_step(&data, &current, Extension::Pole).is_none());
+    }
+
+    #[test]
+    fn a_gain_measured_only_with_a_drift_is_said_and_a_settled_one_is_not() {
+        let data = p1_record();
+        let settled = fitted(
+            &data,
+            "P1",
+            &[(Param::Kp, 2.0), (Param::Tp1, 10.0), (Param::Y0, 50.0)],
+        );
+        assert!(!settled.kp_correlations.is_empty());
+        assert_eq!(gain_trade(&settled), None, "{:?}", settled.kp_correlations);
+        // The same record from 2 s before the step to 15 s after it (1.5 τ): nothing before
+        // the step pins a drift, and the drift and the gain trade.
+        let keep: Vec<bool> = data
+            .times
+            .iter()
+            .map(|&t| (18.0..=35.0).contains(&t))
+            .collect();
+        let short = data.keeping(&keep);
+        let mut s = settled.model.structure;
+        s.drift = true;
+        let mut v = settled.model.values;
+        v.set(Param::Drift, 0.0);
+        let options = FitOptions {
+            starts: 1,
+            ..FitOptions::default()
+        };
+        let with_drift = fit(&short, s, v, &options, &mut ()).unwrap();
+        let trade = gain_trade(&with_drift).expect("trades");
+        assert!(matches!(trade.with, Param::Drift | Param::Tp1), "{trade:?}");
+        assert!(trade.correlation.abs() >= TRADE_CORRELATION);
     }
 
     #[test]

@@ -53,6 +53,14 @@ pub const CHUNK: usize = 8192;
 /// Jacobian (two vectors of its length); a longer one computes them again, a piece at a time.
 const KEEP: usize = 16 * CHUNK;
 
+/// The time interval `[a, b]` (s) cut to the span of `times` (ascending); `None` when it
+/// lies wholly outside it or there are no times.
+pub fn within_span(times: &[f64], (a, b): (f64, f64)) -> Option<(f64, f64)> {
+    let (&first, &last) = (times.first()?, times.last()?);
+    let (a, b) = (a.max(first), b.min(last));
+    (a <= b).then_some((a, b))
+}
+
 /// The measured test as the fit sees it (already windowed and filtered): the output at each
 /// instant and the input that drove it.
 #[derive(Debug, Clone, PartialEq)]
@@ -66,6 +74,12 @@ impl FitData {
     /// The median sampling period (s).
     pub fn sampling_period(&self) -> f64 {
         super::prepare::sampling_period(&self.times).unwrap_or(1.0)
+    }
+
+    /// The time interval `[a, b]` (s) cut to the record's span, [first sample, last
+    /// sample]; `None` when it lies wholly outside it.
+    pub fn within_record(&self, interval: (f64, f64)) -> Option<(f64, f64)> {
+        within_span(&self.times, interval)
     }
 
     /// Duration of the record after the step (s).
@@ -283,6 +297,11 @@ pub struct FitReport {
     /// The internal units the fit ran in.
     #[serde(default)]
     pub units: Scale,
+    /// The correlation of Kp's estimate with every other parameter's, from the same
+    /// covariance as the intervals (−1 to 1; empty when there is none): how far the record
+    /// lets the gain trade with a drift, a slow lag, a transient or Y0.
+    #[serde(default)]
+    pub kp_correlations: Vec<(Param, f64)>,
 }
 
 impl FitReport {
@@ -1255,7 +1274,8 @@ impl Problem {
                 log10: ln_mse / std::f64::consts::LN_10,
             });
         }
-        let intervals = self.intervals(&run.x, run.sse, &mut warnings);
+        let mut kp_correlations = Vec::new();
+        let intervals = self.intervals(&run.x, run.sse, &mut warnings, &mut kp_correlations);
         for (i, &param) in self.params.iter().enumerate() {
             for bound in [self.lower[i], self.upper[i]] {
                 let tolerance = 1e-6 * (bound.abs() + self.typical[i]);
@@ -1327,12 +1347,19 @@ impl Problem {
                 .filter_map(|x| self.model_out(x).ok().map(|m| m.values))
                 .collect(),
             units: *units,
+            kp_correlations,
         })
     }
 
     /// 95 % intervals from s²(JᵀJ)⁻¹ (internal units); two real lags the record cannot
     /// tell apart read through their mean and squared half-difference ([`lag_pair`]).
-    fn intervals(&self, x: &[f64], sse: f64, warnings: &mut Vec<FitWarning>) -> Intervals {
+    fn intervals(
+        &self,
+        x: &[f64],
+        sse: f64,
+        warnings: &mut Vec<FitWarning>,
+        correlations: &mut Vec<(Param, f64)>,
+    ) -> Intervals {
         let (n, p) = (self.samples(), x.len());
         let none = vec![None; p];
         if n <= p {
@@ -1370,6 +1397,12 @@ impl Problem {
                 return none;
             }
         };
+        if let Some(k) = self.params.iter().position(|q| *q == Param::Kp) {
+            correlations.extend(self.params.iter().enumerate().filter_map(|(j, &q)| {
+                let d = inverse[(k, k)] * inverse[(j, j)];
+                (j != k && d > 0.0).then(|| (q, (inverse[(k, j)] / d.sqrt()).clamp(-1.0, 1.0)))
+            }));
+        }
         (0..p)
             .map(|i| {
                 let half = t * (s2 * inverse[(i, i)]).max(0.0).sqrt();

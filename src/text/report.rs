@@ -217,10 +217,32 @@ pub fn static_gain_line(d: &DiagnoseReport, lang: Lang) -> String {
     let interval = ci.map_or(String::new(), |ci| {
         format!(", 95 % {}", interval(lang, ci, 5))
     });
-    format!(
+    let line = format!(
         "{} Kp = Δy/Δu = {}{interval}",
         lang.pick("Static gain", "Ganho estático"),
         num(lang, k, 5)
+    );
+    match &d.gain_trade {
+        Some(t) => format!("{line}. {}", trade_words(t, lang)),
+        None => line,
+    }
+}
+
+/// What a gain that trades with another term means: measured only together with it.
+fn trade_words(t: &crate::ident::diagnose::GainTrade, lang: Lang) -> String {
+    let (name, r) = (t.with.name(), num(lang, t.correlation, 3));
+    lang.pick(
+        format!(
+            "The record does not separate Kp from {name} (their estimates are correlated \
+             {r}): the gain is measured only together with {name}, and the interval is the \
+             range the record allows; a longer record, settled before and after each change, \
+             would separate them."
+        ),
+        format!(
+            "O registro não separa Kp de {name} (as estimativas têm correlação {r}): o ganho \
+             só é medido junto com {name}, e o intervalo é a faixa que o registro permite; um \
+             registro mais longo, acomodado antes e depois de cada variação, os separaria."
+        ),
     )
 }
 
@@ -455,6 +477,7 @@ mod tests {
             starts: 16,
             path: Vec::new(),
             units: Default::default(),
+            kp_correlations: Vec::new(),
         }
     }
 
@@ -503,6 +526,23 @@ mod tests {
         assert!(pt.contains("ωd = 0,9474 rad/s"), "{pt}");
         assert!(pt.contains("Atenção: o otimizador não convergiu"), "{pt}");
         assert_eq!(en.lines().count(), pt.lines().count());
+    }
+
+    #[test]
+    fn a_gain_that_trades_with_a_drift_says_so_in_both_languages() {
+        let mut d = chain();
+        assert!(!static_gain_line(&d, Lang::En).contains("does not separate"));
+        d.gain_trade = Some(crate::ident::diagnose::GainTrade {
+            with: Param::Drift,
+            correlation: -0.968,
+        });
+        let en = static_gain_line(&d, Lang::En);
+        assert!(en.starts_with("Static gain Kp = Δy/Δu = 1.0021, 95 % [0.98647, 1.0178]. The record does not separate Kp from Drift (their estimates are correlated -0.968)"), "{en}");
+        let pt = static_gain_line(&d, Lang::Pt);
+        assert!(
+            pt.contains("O registro não separa Kp de Drift (as estimativas têm correlação -0,968)"),
+            "{pt}"
+        );
     }
 
     #[test]
@@ -582,6 +622,7 @@ mod tests {
                 artefacts: Default::default(),
             }),
             static_gain: (1.0021, Some((0.98647, 1.0178))),
+            gain_trade: None,
             test_causes: Vec::new(),
         }
     }

@@ -1015,6 +1015,7 @@ impl Session {
                     adequate: false,
                     verdict: None,
                     static_gain: (0.0, None),
+                    gain_trade: None,
                     test_causes: Vec::new(),
                 });
                 d.final_fit = step.fit.clone();

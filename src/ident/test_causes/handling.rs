@@ -13,7 +13,7 @@ use super::{
     small_step, steps_held,
 };
 use crate::ident::drift_evidence::read_drift;
-use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
+use crate::ident::fit::{FitData, FitOptions, FitReport, fit, within_span};
 use crate::ident::guess::auto_guess;
 use crate::ident::models::{Param, Structure};
 use crate::ident::per_step::{MAX_PER_STEP, StepFit, per_step_fits, window_data};
@@ -112,14 +112,8 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
 /// evidence points into the record, never past its ends (an interval set by a model's time
 /// constant may reach beyond); an interval wholly outside it is dropped.
 fn within_record(causes: &mut [TestCause], times: &[f64]) {
-    let (Some(&first), Some(&last)) = (times.first(), times.last()) else {
-        return;
-    };
     for c in causes {
-        c.interval = c.interval.and_then(|(a, b)| {
-            let (a, b) = (a.max(first), b.min(last));
-            (a <= b).then_some((a, b))
-        });
+        c.interval = c.interval.and_then(|i| within_span(times, i));
     }
 }
 
