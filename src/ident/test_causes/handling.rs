@@ -57,7 +57,9 @@ impl Kept {
 pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Handled {
     let mut causes = Vec::new();
     let mut current = start;
-    if let Some(cause) = not_at_rest(data) {
+    if let Some(cause) = not_at_rest(data)
+        && !drift_explains_motion(data, &current, fit_options)
+    {
         causes.push(cause);
         if let Some(r) = with_transient(data, &current, fit_options) {
             current = r;
@@ -220,6 +222,33 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
     Some((cause, fits))
 }
 
+/// Whether the motion before the first change is a drift rather than a test not at rest:
+/// a drift goes on after the response has settled with the same slope, in a straight line
+/// ([`read_drift`] on the current model with a drift, over the stretch before the change
+/// and at least one settled stretch after it); a test not at rest is an earlier response
+/// dying out, whose slope before the change the settled stretches do not continue.
+fn drift_explains_motion(data: &FitData, current: &FitReport, options: &FitOptions) -> bool {
+    let Some(with_drift) = with_drift(data, current, options) else {
+        return false;
+    };
+    let drift = with_drift.model.get(Param::Drift);
+    read_drift(data, &current.model, &with_drift)
+        .is_some_and(|d| d.stretches >= 2 && d.shows(drift))
+}
+
+/// `current`'s structure with a drift term, fitted from its values (the drift from 0);
+/// `None` for a structure that has one, or an initial transient, or a fit that fails.
+fn with_drift(data: &FitData, current: &FitReport, options: &FitOptions) -> Option<FitReport> {
+    let mut s = current.model.structure;
+    if s.drift || s.transient {
+        return None;
+    }
+    s.drift = true;
+    let mut guess = current.model.values;
+    guess.set(Param::Drift, 0.0);
+    fit(data, s, guess, options, &mut ()).ok()
+}
+
 /// Whether a drift the record shows where no change is answered ([`read_drift`]) makes the
 /// changes' gains agree: a drift adds to the level an up step reaches and takes from a down
 /// step's, so their own gains differ as a nonlinearity's would. The joint model is refitted
@@ -227,14 +256,7 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
 /// output less that drift, and if they agree there is no nonlinearity to name (the model's
 /// loop names the drift).
 fn drift_explains_gains(data: &FitData, fitted: &FitReport, options: &FitOptions) -> bool {
-    let mut s = fitted.model.structure;
-    if s.drift || s.transient {
-        return false;
-    }
-    s.drift = true;
-    let mut guess = fitted.model.values;
-    guess.set(Param::Drift, 0.0);
-    let Ok(with_drift) = fit(data, s, guess, options, &mut ()) else {
+    let Some(with_drift) = with_drift(data, fitted, options) else {
         return false;
     };
     let drift = with_drift.model.get(Param::Drift);

@@ -157,7 +157,7 @@ mod tests {
         // enough, the response has reached 78 % of its level.
         assert!(!held(262.6));
         assert!(!held(230.0));
-        assert!(held(200.0));
+        assert!(held(180.0));
     }
 
     #[test]
