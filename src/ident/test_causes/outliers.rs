@@ -53,12 +53,18 @@ pub const MAX_SHARE: f64 = 0.15;
 pub const MIN_SAMPLES: usize = 100;
 /// Half the neighbourhood a sample is judged against (samples).
 const HALF_WINDOW: usize = 3;
-/// Robust standard deviations beyond which a sample that deviates most among its
-/// neighbours is left out of their quadratics (a candidate), so that a run of two or three
-/// wild samples does not hide itself and a spike does not drag its neighbours' predictions.
+/// Robust standard deviations the neighbours may scatter about their own quadratic (root
+/// mean square) for a sample to be judged against it: where they do not lie on one (a
+/// response sampled too slowly for seven samples to follow its peak), a sample that departs
+/// from them is not isolated from a smooth trend, and is not judged. White noise exceeds
+/// this in about one neighbourhood in 10⁵.
+const SMOOTH: f64 = 3.0;
+/// The farthest a neighbour in a sample's quadratic may be (sampling periods).
+const MAX_REACH: f64 = 6.5;
+/// Robust standard deviations beyond which a sample is left out of its neighbours'
+/// quadratics (a candidate, see [`masked_deviations`]), so that a run of two or three wild
+/// samples does not hide itself and a spike does not drag its neighbours' predictions.
 const CANDIDATE: f64 = 3.0;
-/// The most looks for candidates (see [`masked_deviations`]).
-const LOOKS: usize = 3;
 /// The share of the threshold a sample must stand out of the running median by: it only
 /// tells a corner (where it stays at the noise) from a spike, and a spike on a steep slope
 /// stands out of the median by less than its height.
@@ -76,7 +82,12 @@ pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize
         return None;
     }
     let h = data.sampling_period();
-    let (local, candidate, scale) = masked_deviations(&data.times, residuals, h);
+    let Masked {
+        local,
+        rough,
+        skip: candidate,
+        scale,
+    } = masked_deviations(&data.times, residuals, h);
     let running = deviations(residuals);
     let (own_running, own_local) = (
         deviations(&data.y),
@@ -96,6 +107,7 @@ pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize
     let wild: Vec<usize> = (0..n)
         .filter(|&i| {
             !corner[i]
+                && rough[i] <= SMOOTH * scale
                 && beyond(local[i], 1.0)
                 && beyond(own_local[i], 1.0)
                 && beyond(running[i], RUNNING_SHARE)
@@ -135,31 +147,39 @@ pub fn detect(data: &FitData, residuals: &[f64]) -> Option<(TestCause, Vec<usize
 
 /// The quadratic deviations of `x` ([`local_deviations`]) with the candidates left out of
 /// their neighbours' quadratics, the candidates, and the noise's robust scale (from a first
-/// look with every neighbour in). A candidate is a sample beyond [`CANDIDATE`] robust
-/// standard deviations that deviates most among its neighbours; the look is made again
-/// without them, [`LOOKS`] times at most, so that the second of a pair of wild samples,
-/// hidden by the first, shows in the next look.
-fn masked_deviations(times: &[f64], x: &[f64], h: f64) -> (Vec<f64>, Vec<bool>, f64) {
-    let n = x.len();
-    let mut skip = vec![false; n];
-    let mut deviation = local_deviations(times, x, &skip, h);
-    let scale = robust_scale(&finite(&deviation));
-    for _ in 0..LOOKS {
-        let size = |i: usize| deviation[i].abs();
-        let new: Vec<usize> = (0..n)
-            .filter(|&i| !skip[i] && size(i) > CANDIDATE * scale)
-            .filter(|&i| {
-                let (lo, hi) = (i.saturating_sub(HALF_WINDOW), (i + HALF_WINDOW + 1).min(n));
-                (lo..hi).all(|j| j == i || skip[j] || size(j).is_nan() || size(j) <= size(i))
-            })
-            .collect();
-        if new.is_empty() {
-            break;
-        }
-        new.iter().for_each(|&i| skip[i] = true);
-        deviation = local_deviations(times, x, &skip, h);
+/// look with every neighbour in). A candidate stands out by more than [`CANDIDATE`] robust
+/// standard deviations both of the running median of seven ([`deviations`]), which a run
+/// of up to three wild samples does not move (a first quadratic look takes a run's
+/// neighbours for wild ones), and of that first look (a smooth peak stands out of a
+/// running median, not of a quadratic: masking it would leave its neighbours' quadratics
+/// to reach further and bend less).
+fn masked_deviations(times: &[f64], x: &[f64], h: f64) -> Masked {
+    let first_look = local_deviations(times, x, &vec![false; x.len()], h);
+    let scale = robust_scale(&finite(&first_look));
+    let beyond = |d: f64| d.abs() > CANDIDATE * scale;
+    let skip: Vec<bool> = deviations(x)
+        .iter()
+        .zip(&first_look)
+        .map(|(&running, &local)| beyond(running) && beyond(local))
+        .collect();
+    let (local, rough) = (0..x.len())
+        .map(|i| local_deviation(times, x, &skip, h, i))
+        .unzip();
+    Masked {
+        local,
+        rough,
+        skip,
+        scale,
     }
-    (deviation, skip, scale)
+}
+
+/// What [`masked_deviations`] reads: each sample's quadratic deviation and its neighbours'
+/// root mean square about their quadratic, the candidates, and the noise's robust scale.
+struct Masked {
+    local: Vec<f64>,
+    rough: Vec<f64>,
+    skip: Vec<bool>,
+    scale: f64,
 }
 
 /// The finite values of `v`.
@@ -180,56 +200,71 @@ fn deviations(x: &[f64]) -> Vec<f64> {
         .collect()
 }
 
-/// Each value less the least-squares quadratic in time through its neighbours (up to
-/// [`HALF_WINDOW`] each side, within [`HALF_WINDOW`] + ½ sampling periods `h`, the
-/// `skip`ped ones left out), divided by √(1 + v) where v·σ² is the prediction's variance on
+/// Each value less the least-squares quadratic in time through its neighbours (the nearest
+/// [`HALF_WINDOW`] each side not `skip`ped, see [`quadratic_prediction`]), divided by √(1 + v) where v·σ² is the prediction's variance on
 /// white noise of σ: on white noise each has the noise's standard deviation. NaN where
 /// fewer than four neighbours are left or one side has none (the record's ends).
 fn local_deviations(times: &[f64], x: &[f64], skip: &[bool], h: f64) -> Vec<f64> {
     (0..x.len())
-        .map(|i| {
-            quadratic_prediction(times, x, skip, h, i)
-                .map_or(f64::NAN, |(p, v)| (x[i] - p) / (1.0 + v).sqrt())
-        })
+        .map(|i| local_deviation(times, x, skip, h, i).0)
         .collect()
 }
 
+/// Sample `i`'s deviation of [`local_deviations`] and the root mean square of its
+/// neighbours about their own quadratic (NaN, NaN where none is fitted).
+fn local_deviation(times: &[f64], x: &[f64], skip: &[bool], h: f64, i: usize) -> (f64, f64) {
+    quadratic_prediction(times, x, skip, h, i).map_or((f64::NAN, f64::NAN), |(p, v, rms)| {
+        ((x[i] - p) / (1.0 + v).sqrt(), rms)
+    })
+}
+
 /// The prediction at sample `i` of the quadratic through its neighbours (see
-/// [`local_deviations`]) and its variance factor.
+/// [`local_deviations`]) and its variance factor: up to [`HALF_WINDOW`] on each side, the
+/// nearest not skipped, within [`MAX_REACH`] sampling periods (a run of wild samples left
+/// out pushes them further).
 fn quadratic_prediction(
     times: &[f64],
     x: &[f64],
     skip: &[bool],
     h: f64,
     i: usize,
-) -> Option<(f64, f64)> {
-    let lo = i.saturating_sub(HALF_WINDOW);
-    let hi = (i + HALF_WINDOW + 1).min(x.len());
-    let reach = HALF_WINDOW as f64 + 0.5;
+) -> Option<(f64, f64, f64)> {
+    let usable = |j: &usize| *j != i && !skip[*j] && x[*j].is_finite();
+    let near = |j: &usize| ((times[*j] - times[i]) / h).abs() <= MAX_REACH;
+    let left = (i.saturating_sub(2 * MAX_REACH as usize)..i)
+        .rev()
+        .filter(usable)
+        .take_while(near)
+        .take(HALF_WINDOW);
+    let right = (i + 1..(i + 2 * MAX_REACH as usize + 1).min(x.len()))
+        .filter(usable)
+        .take_while(near)
+        .take(HALF_WINDOW);
     let (mut gram, mut moment) = (Matrix3::<f64>::zeros(), Vector3::<f64>::zeros());
-    let (mut left, mut right) = (0, 0);
+    let (mut sides, mut count) = ([0usize; 2], 0);
     // Values about the sample's own level, so that a level far from zero costs no digits.
     let origin = x[i];
-    for j in (lo..hi).filter(|&j| j != i && !skip[j]) {
+    let mut used = Vec::with_capacity(2 * HALF_WINDOW);
+    for j in left.chain(right) {
         let k = (times[j] - times[i]) / h;
-        if k.is_nan() || k.abs() > reach || !x[j].is_finite() {
-            continue;
-        }
         let row = Vector3::new(1.0, k, k * k);
         gram += row * row.transpose();
         moment += row * (x[j] - origin);
-        if j < i {
-            left += 1;
-        } else {
-            right += 1;
-        }
+        used.push((k, x[j] - origin));
+        sides[usize::from(j > i)] += 1;
+        count += 1;
     }
-    if left == 0 || right == 0 || left + right < 4 {
+    if sides.contains(&0) || count < 4 {
         return None;
     }
     let inverse = gram.try_inverse()?;
-    let coefficients = inverse * moment;
-    Some((origin + coefficients[0], inverse[(0, 0)]))
+    let c = inverse * moment;
+    let misfit: f64 = used
+        .iter()
+        .map(|&(k, v)| (v - c[0] - c[1] * k - c[2] * k * k).powi(2))
+        .sum();
+    let rms = (misfit / (count - 3) as f64).sqrt();
+    Some((origin + c[0], inverse[(0, 0)], rms))
 }
 
 /// The samples within a window after an input change: the response turns a corner there
