@@ -56,9 +56,10 @@ const HALF_WINDOW: usize = 3;
 /// Robust standard deviations the neighbours may scatter about their own quadratic (root
 /// mean square) for a sample to be judged against it: where they do not lie on one (a
 /// response sampled too slowly for seven samples to follow its peak), a sample that departs
-/// from them is not isolated from a smooth trend, and is not judged. White noise exceeds
-/// this in about one neighbourhood in 10⁵.
-const SMOOTH: f64 = 3.0;
+/// from them is not isolated from a smooth trend, and is not judged. Loose enough that a
+/// half-recovered sample after a dropout run leaves its neighbours judged; white noise
+/// never reaches it.
+const SMOOTH: f64 = 8.0;
 /// The farthest a neighbour in a sample's quadratic may be (sampling periods).
 const MAX_REACH: f64 = 6.5;
 /// Robust standard deviations beyond which a sample is left out of its neighbours'
