@@ -988,12 +988,12 @@ fn clean(index: usize, n: usize) -> (FitData, Structure, String) {
         .map(|&t| u0 + if t < t0 { 0.0 } else { du })
         .collect();
     let input = Excitation::measured(&times, &logged, None, Hold::Zoh).unwrap();
-    let mut start = if index % 2 == 0 {
+    let mut start = if index.is_multiple_of(2) {
         truth
     } else {
         Structure::parse("P1").unwrap()
     };
-    start.free_offset = (index / 2) % 2 == 0;
+    start.free_offset = (index / 2).is_multiple_of(2);
     start.lead = true;
     let note = format!(
         "seed {seed:#x} {code} from {} N={n} Kp={kp:.3} du={du:.3} slowest={slowest:.3} td={td:.3} sd={sd:.4}",
