@@ -119,3 +119,73 @@ fn a_p2du_on_a_test_not_at_rest_fits_and_starts_where_the_output_did() {
     let start = p["Y0"].as_f64().unwrap() + p["X1"].as_f64().unwrap();
     assert!((start - 29.2).abs() < 0.3, "{p}");
 }
+
+/// A 200-sample PRBS record at Ts 0.1 s whose output reads exactly 0 for the 8 samples
+/// before the first change (a first order, Kp 2, τ 0.5 s, noise of σ ≈ 0.02 after it),
+/// written to a temporary file; the PRBS is a 7-bit LFSR held 4 samples a bit.
+fn prbs_record(name: &str) -> std::path::PathBuf {
+    let (ts, n, tau, kp) = (0.1, 200, 0.5, 2.0);
+    let mut lfsr: u8 = 0x5b;
+    let mut bit = 1.0;
+    let mut seed: u64 = 12345;
+    let mut noise = || {
+        // The sum of four uniforms, σ ≈ 0.02.
+        (0..4)
+            .map(|_| {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+            })
+            .sum::<f64>()
+            * 0.02
+            * 3f64.sqrt()
+    };
+    let (mut x, mut rows) = (0.0, String::from("t,u,y\n"));
+    for k in 0..n {
+        let u = if k < 8 {
+            0.0
+        } else {
+            if (k - 8) % 4 == 0 && k > 8 {
+                let b = ((lfsr >> 6) ^ (lfsr >> 5)) & 1;
+                lfsr = ((lfsr << 1) | b) & 0x7f;
+                bit = f64::from(b);
+            }
+            bit
+        };
+        let y = if k < 8 { 0.0 } else { x + noise() };
+        rows += &format!("{:.1},{u},{y:.4}\n", k as f64 * ts);
+        x += (kp * u - x) * (1.0 - (-ts / tau).exp());
+    }
+    let path = std::env::temp_dir().join(format!("degrau_{name}_{}.csv", std::process::id()));
+    std::fs::write(&path, rows).expect("write the record");
+    path
+}
+
+/// Samples at rest that are all equal hold Y0 at their value, however few: 8 samples of
+/// exactly 0 before a PRBS's first change (fewer than the 20 a creeping rest needs on a
+/// multi-change record) are the operating point, not a level to estimate (issue 21).
+#[test]
+fn a_flat_rest_of_eight_samples_holds_y0_on_a_prbs_record() {
+    let path = prbs_record("flat_rest");
+    let file = path.to_str().unwrap();
+    let j = fit(&[
+        file,
+        "--model",
+        "P1",
+        "--time-col",
+        "t",
+        "--u-col",
+        "u",
+        "--y-col",
+        "y",
+    ]);
+    let _ = std::fs::remove_file(&path);
+    let p = &j["params"];
+    assert_eq!(p["Y0"].as_f64(), Some(0.0), "{j}");
+    assert!(j["ci95"].get("Y0").is_none_or(|v| v.is_null()), "{j}");
+    let op = &j["operating_point"];
+    assert_eq!(op["kind"], "mean_before", "{op}");
+    let kp = p["Kp"].as_f64().unwrap();
+    assert!((kp - 2.0).abs() < 0.1, "Kp = {kp}");
+}

@@ -58,6 +58,24 @@ pub enum OperatingPoint {
 /// to hold Y0 at their mean (see [`EstimateReason::ShortRest`]).
 pub const MIN_REST_SAMPLES: usize = 20;
 
+/// Whether the first `samples` outputs (at least two) are all equal, or all within one
+/// quantum on a quantised record ([`super::test_causes::resolution`]): a level that does not
+/// move is the operating point however few samples show it, and Y0 is held there even under
+/// [`MIN_REST_SAMPLES`].
+fn level_at_rest(data: &FitData, samples: usize) -> bool {
+    let Some(before) = data.y.get(..samples).filter(|b| b.len() >= 2) else {
+        return false;
+    };
+    let (lo, hi) = before
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        });
+    let spread = hi - lo;
+    spread == 0.0
+        || super::test_causes::resolution(&data.y).is_some_and(|q| spread <= q * (1.0 + 1e-9))
+}
+
 /// Why Y0 is estimated rather than held.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -70,7 +88,8 @@ pub enum EstimateReason {
     /// [`Offset::Auto`] on a record whose input changes more than once, with fewer than
     /// [`MIN_REST_SAMPLES`] samples before the first change: so short a stretch is a weaker
     /// measurement of the operating point than the record's several responses (and a slow
-    /// creep in it biases the mean), so Y0 is estimated with the other parameters.
+    /// creep in it biases the mean), so Y0 is estimated with the other parameters. Samples
+    /// that are all equal (or within one quantum) hold Y0 however few: they do not creep.
     ShortRest,
     /// [`Offset::Auto`], but the output still moved before the first change
     /// ([`super::rest::Rest::NotAtRest`]): no level was at rest, and an initial transient is
@@ -248,7 +267,11 @@ impl Experiment {
                 }
             }
             Offset::Auto => match super::guess::rest_level(data) {
-                Some(rest) if data.input.is_multi_step() && rest.samples < MIN_REST_SAMPLES => {
+                Some(rest)
+                    if data.input.is_multi_step()
+                        && rest.samples < MIN_REST_SAMPLES
+                        && !level_at_rest(data, rest.samples) =>
+                {
                     OperatingPoint::Estimated {
                         reason: EstimateReason::ShortRest,
                     }

@@ -10,7 +10,7 @@ use crate::ident::diagnose::{Cause, DiagnoseReport};
 use crate::ident::rest::Motion;
 use crate::ident::test_causes::{
     DisturbanceShape, Handling, Loss, RuleCheck, SamplingRule, Signal, StepGain, StepShape,
-    TestCause, TestCauseKind, TestEvidence, outliers,
+    TestCause, TestCauseKind, TestEvidence,
 };
 
 use super::{Lang, Localize, Message};
@@ -300,6 +300,7 @@ impl Localize for TestEvidence {
                 count,
                 times,
                 scale,
+                sigmas,
                 threshold,
                 worst,
             } => {
@@ -311,30 +312,31 @@ impl Localize for TestEvidence {
                     n4(lang, *threshold),
                     n4(lang, *worst),
                 );
-                // The threshold is THRESHOLD robust σ, or two output quanta when the
-                // residuals' scale is below the resolution (a quantised record's MAD is 0).
-                let by_quanta = *threshold > outliers::THRESHOLD * scale * (1.0 + 1e-9);
+                // The threshold is `sigmas` robust σ (growing with the record's length), or
+                // two output quanta when the noise's scale is below the resolution (a
+                // quantised record's MAD is 0).
+                let by_quanta = *threshold > sigmas * scale * (1.0 + 1e-9);
                 let why = if by_quanta {
                     lang.pick(
                         format!(
-                            "two output quanta: the residuals' robust scale, {scale_w}, is \
+                            "two output quanta: the noise's robust scale, {scale_w}, is \
                              below the resolution"
                         ),
                         format!(
-                            "dois quanta da saída: a escala robusta dos resíduos, {scale_w}, \
+                            "dois quanta da saída: a escala robusta do ruído, {scale_w}, \
                              está abaixo da resolução"
                         ),
                     )
                 } else {
-                    let k = n4(lang, threshold / scale);
+                    let k = n4(lang, *sigmas);
                     lang.pick(
                         format!(
-                            "{k} × the residuals' robust scale {scale_w}, from the median \
-                             absolute deviation"
+                            "{k} × the noise's robust scale {scale_w}, each sample against \
+                             its neighbours; the multiple grows with the record's length"
                         ),
                         format!(
-                            "{k} × a escala robusta dos resíduos, {scale_w}, pelo desvio \
-                             absoluto mediano"
+                            "{k} × a escala robusta do ruído, {scale_w}, cada amostra contra \
+                             suas vizinhas; o múltiplo cresce com o comprimento do registro"
                         ),
                     )
                 };
@@ -348,11 +350,11 @@ impl Localize for TestEvidence {
                 };
                 lang.pick(
                     format!(
-                        "{en} more than {thr} from the model ({why}), the worst by {worst}: \
+                        "{en} more than {thr} off the neighbours' local trend ({why}), the worst by {worst}: \
                          t = {list}{more} s."
                     ),
                     format!(
-                        "{pt} a mais de {thr} do modelo ({why}), a pior a {worst}: t = \
+                        "{pt} a mais de {thr} da tendência local das vizinhas ({why}), a pior a {worst}: t = \
                          {list}{more} s."
                     ),
                 )
@@ -823,6 +825,7 @@ pub fn examples() -> Vec<TestCause> {
                 count: 9,
                 times: (0..9).map(|k| 30.0 + 80.0 * k as f64).collect(),
                 scale: 0.1,
+                sigmas: 5.0,
                 threshold: 0.5,
                 worst: 14.6,
             },
@@ -834,6 +837,7 @@ pub fn examples() -> Vec<TestCause> {
                 count: 2,
                 times: vec![30.0, 640.0],
                 scale: 0.1,
+                sigmas: 5.0,
                 threshold: 0.5,
                 worst: 14.6,
             },
@@ -1023,6 +1027,7 @@ mod tests {
             count: 1,
             times: vec![93.82],
             scale: 0.0,
+            sigmas: 5.0,
             threshold: 0.64,
             worst: -15.68,
         };
@@ -1036,12 +1041,13 @@ mod tests {
             count: 3,
             times: vec![1.0, 2.0, 3.0],
             scale: 0.1,
+            sigmas: 5.0,
             threshold: 0.5,
             worst: 2.0,
         };
         let en = many.text(Lang::En);
         assert!(en.starts_with("3 samples lie more than 0.5"), "{en}");
-        assert!(en.contains("5 × the residuals' robust scale 0.1"), "{en}");
+        assert!(en.contains("5 × the noise's robust scale 0.1"), "{en}");
     }
 
     #[test]

@@ -298,7 +298,7 @@ struct Sums {
 impl Sums {
     fn new(t: &[f64], r: &[f64]) -> Self {
         // Times about the tail's start keep the sums well conditioned.
-        let origin = t[0];
+        let origin = t.first().copied().unwrap_or(0.0);
         let t: Vec<f64> = t.iter().map(|x| x - origin).collect();
         let prefix = |f: &dyn Fn(usize) -> f64| {
             let mut out = Vec::with_capacity(t.len() + 1);

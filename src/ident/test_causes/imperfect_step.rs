@@ -13,15 +13,19 @@
 //!   **oscillation**;
 //! - **overshoot**: it goes past the band in the change's direction: an overshooting input
 //!   makes the output overshoot as a **zero** would;
-//! - **ramp**: from the last sample at the old level to the first in the band takes
-//!   D ≥ two sampling periods more than a step between two samples would. A ramp of
+//! - **ramp**: from the first sample that shows the change to the first in the band takes
+//!   D ≥ two sampling periods (a step between two samples is in the band at once, however
+//!   long the gap a stretch left out made before it). A ramp of
 //!   duration D is the step through a moving average of length D: it delays the response
 //!   by D/2 on average and spreads it by D/√12. An ideal-step model takes it for a **dead
 //!   time** of about D/2 while that spread is under a sampling period (D < √12·h), for an
 //!   **extra pole** (a lag) beyond.
 //!
 //! The first change that departs is reported. The fit already uses the measured input, so
-//! nothing is mistaken. Cost: O(n + input steps).
+//! nothing is mistaken. A change's samples are found from its instant, not from the index
+//! it had in the record the input was measured on: the record read here may have samples
+//! left out (outliers, a clipped span, a window), and a window read past the next change
+//! took a staircase's next level for an overshoot. Cost: O(n + input steps).
 
 use crate::ident::diagnose::Cause;
 use crate::ident::excitation::{Excitation, InputChange};
@@ -42,6 +46,10 @@ const MIN_WINDOW: usize = 6;
 const MIN_HOLD: usize = 5;
 /// A later change at least this share of an earlier one's size is a change of the test.
 const SAME_SIZE: f64 = 0.9;
+/// Sampling periods between the samples about a change beyond which samples were left out
+/// there (outliers, a clipped span): the change's shape is not in the record, and it is
+/// not judged.
+const GAP: f64 = 1.5;
 
 /// The input's level u(t) at each of `times` (ascending), as `input` holds it: u0 plus its
 /// steps and ramps up to each instant. O(n + steps + ramps).
@@ -71,9 +79,19 @@ pub fn imperfect_step(data: &FitData) -> Option<TestCause> {
     let u = input_at(&data.input, &data.times);
     let h = data.sampling_period();
     let noise = difference_noise(&u);
-    windows(&u, &data.input.changes, noise)
+    windows(&data.times, &u, &data.input.changes, noise)
         .into_iter()
         .find_map(|(c, end)| departure(&data.times, &u, c, end, noise, h))
+}
+
+/// The sample of `times` that first shows change `c`: the first at or after its instant
+/// (`times.len()` when it comes after the last). Read from the instant, not from the
+/// change's `index`, which counts the samples of the record the input was measured on:
+/// the samples left out since (outliers, a clipped span, a disturbance's window) shift it.
+/// `None` for a typed step, which has no measured samples to read.
+fn first_sample(times: &[f64], c: &InputChange) -> Option<usize> {
+    c.index?;
+    Some(times.partition_point(|&t| t < c.t))
 }
 
 /// Each change with the end of its window (exclusive sample index). A wobbling or
@@ -81,14 +99,21 @@ pub fn imperfect_step(data: &FitData) -> Option<TestCause> {
 /// belongs to the earlier one's window while the input has not held still for
 /// [`MIN_HOLD`] samples before it and it is smaller than the earlier change (a PRBS, whose
 /// changes are all of one size, keeps one window per change).
-fn windows<'c>(u: &[f64], changes: &'c [InputChange], noise: f64) -> Vec<(&'c InputChange, usize)> {
+fn windows<'c>(
+    times: &[f64],
+    u: &[f64],
+    changes: &'c [InputChange],
+    noise: f64,
+) -> Vec<(&'c InputChange, usize)> {
     let mut out = Vec::new();
     let mut k = 0;
     while let Some(c) = changes.get(k) {
         let band = band(c, noise);
         let mut j = k + 1;
         while let Some(next) = changes.get(j) {
-            let Some(i) = next.index else { break };
+            let Some(i) = first_sample(times, next).map(|i| i.min(u.len())) else {
+                break;
+            };
             let held = i >= MIN_HOLD && {
                 let before = &u[i - MIN_HOLD..i];
                 let level = median(before);
@@ -99,7 +124,10 @@ fn windows<'c>(u: &[f64], changes: &'c [InputChange], noise: f64) -> Vec<(&'c In
             }
             j += 1;
         }
-        let end = changes.get(j).and_then(|n| n.index).unwrap_or(u.len());
+        let end = changes
+            .get(j)
+            .and_then(|n| first_sample(times, n))
+            .map_or(u.len(), |i| i.min(u.len()));
         out.push((c, end));
         k = j;
     }
@@ -120,9 +148,9 @@ fn departure(
     noise: f64,
     h: f64,
 ) -> Option<TestCause> {
-    let first = c.index.filter(|&i| i >= 1)?;
-    let end = end.min(u.len());
-    if end < first + MIN_WINDOW {
+    let first = first_sample(times, c).filter(|&i| i >= 1)?;
+    let end = end.min(u.len()).min(times.len());
+    if end < first + MIN_WINDOW || times[first] - times[first - 1] > GAP * h {
         return None;
     }
     let window = &u[first..end];
@@ -147,7 +175,9 @@ fn departure(
         let fraction = overshoot / c.du.abs();
         (StepShape::Overshoot { fraction }, Cause::Zero, t_at(last))
     } else {
-        let duration = t_at(reach) - t_start - h;
+        // From the first sample that shows the change (a step between two samples takes
+        // the period between them, however long a stretch left out made it).
+        let duration = t_at(reach) - t_at(0);
         if duration < 2.0 * h {
             return None;
         }
@@ -245,6 +275,27 @@ mod tests {
             assert_eq!(mistaken_for, Some(expected));
             let (a, b) = cause.interval.unwrap();
             assert!(a < 40.37 && b > 40.37 + d - 1.05, "{a} {b}");
+        }
+    }
+
+    /// A staircase (0 → 10 → 15 about u0) read on the samples left after outliers or a
+    /// clipped span were left out: the changes' `index` counts the whole record's samples,
+    /// so the first change's window ran past the second into the next level and read it as
+    /// an overshoot of 50 % (issue 21, on a clean 10⁶-sample record); with the last samples
+    /// left out it ran past the record's end (the panic of a 200-sample PRBS).
+    #[test]
+    fn a_staircase_with_samples_left_out_is_no_overshoot_and_no_panic() {
+        let m = messy(Messy {
+            steps: vec![(40.37, 10.0, 1.2), (160.6, 5.0, 1.2)],
+            ..Messy::default()
+        });
+        assert_eq!(imperfect_step(&m.data), None);
+        for left_out in [5..30, 60..90, 100..150, 270..300, 150..161, 10..158] {
+            let keep: Vec<bool> = (0..m.data.y.len())
+                .map(|i| !left_out.contains(&i))
+                .collect();
+            let kept = m.data.keeping(&keep);
+            assert_eq!(imperfect_step(&kept), None, "{left_out:?}");
         }
     }
 

@@ -224,13 +224,17 @@ pub enum TestEvidence {
         samples: usize,
         spans: Vec<(f64, f64)>,
     },
-    /// `count` samples lie beyond `threshold` (output units) from the model, `threshold`
-    /// being a multiple of the residuals' robust scale `scale` (1.4826·MAD); `times` lists
-    /// them, `worst` is the largest deviation.
+    /// `count` samples lie beyond `threshold` (output units) from their neighbours' local
+    /// trend, in the residuals and in the data, `threshold` being `sigmas` × the noise's
+    /// robust scale `scale` (1.4826·MAD); `times` lists them, `worst` is the largest
+    /// deviation.
     Outliers {
         count: usize,
         times: Vec<f64>,
         scale: f64,
+        /// The multiple of `scale` the threshold is before the two quanta's floor.
+        #[serde(default)]
+        sigmas: f64,
         threshold: f64,
         worst: f64,
     },
