@@ -129,10 +129,33 @@ pub fn settled_stretches(models: &[&Model], data: &FitData) -> Vec<Stretch> {
 /// drift with a faster lag must not call the slow approach it left "settled"): `None` when
 /// they hold too few samples to tell.
 pub fn read_drift(data: &FitData, current: &Model, extended: &FitReport) -> Option<DriftReading> {
+    read(data, current, extended, true)
+}
+
+/// [`read_drift`] on the stretches after the changes alone: what shows a drift apart from
+/// the motion before the first change (an earlier response dying out moves there too, and
+/// is gone once the test's own responses settle).
+pub fn read_drift_after(
+    data: &FitData,
+    current: &Model,
+    extended: &FitReport,
+) -> Option<DriftReading> {
+    read(data, current, extended, false)
+}
+
+fn read(
+    data: &FitData,
+    current: &Model,
+    extended: &FitReport,
+    before: bool,
+) -> Option<DriftReading> {
     let mut without = extended.clone();
     without.model.structure.drift = false;
     let r = without.residuals(data).ok()?;
-    let stretches = settled_stretches(&[current, &extended.model], data);
+    let mut stretches = settled_stretches(&[current, &extended.model], data);
+    if !before {
+        stretches.retain(|s| s.du != 0.0);
+    }
     let members = members(data, &stretches);
     let used: Vec<usize> = (0..stretches.len())
         .filter(|&s| members.iter().filter(|m| m.1 == s).count() >= MIN_STRETCH)

@@ -1,8 +1,10 @@
 //! Fitting against outliers: a robust loss (Huber or Cauchy, the two the TCLab course
 //! compares) minimised by iteratively reweighted least squares on the existing
 //! Levenberg–Marquardt ([`fit_weighted`]): each round weighs every sample by the loss's
-//! weight of its residual on the robust scale (1.4826·MAD of the residuals) and refits from
-//! the last optimum, until the parameters settle. Written here because IRLS is a loop of a
+//! weight of how far its residual stands off its neighbours' ([`off_neighbours`]), on the
+//! robust scale of those (1.4826·MAD), and refits from the last optimum, until the
+//! parameters settle. Judged off the neighbours, not on the raw residual: a model's smooth
+//! misfit is no reason to down-weight the samples where it misfits. Written here because IRLS is a loop of a
 //! few lines around the fit the crate already has.
 //!
 //! Huber's weight is 1 within k·s and k·s/|r| beyond (k = 1.345: 95 % efficiency on Gaussian
@@ -19,11 +21,13 @@ pub const HUBER_K: f64 = 1.345;
 pub const CAUCHY_C: f64 = 2.385;
 /// Rounds of reweighting at most.
 const ROUNDS: usize = 8;
-/// A sample whose weight falls below this counts as down-weighted.
-const DOWN_WEIGHTED: f64 = 0.5;
+/// A sample standing off its neighbours by more than this many robust scales counts as
+/// down-weighted (set aside: its weight under 0.2); nearer ones keep most of theirs.
+const SET_ASIDE: f64 = 5.0;
 
-/// A robust fit: the report (its statistics weighted) and the samples it down-weighted
-/// (indices into the record, weight below one half).
+/// A robust fit: the report (its statistics weighted) and the samples it set aside
+/// (indices into the record: standing off their neighbours by more than [`SET_ASIDE`]
+/// robust scales).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RobustFit {
     pub report: FitReport,
@@ -49,6 +53,27 @@ pub fn weights(loss: Loss, residuals: &[f64], scale: f64) -> Vec<f64> {
         .collect()
 }
 
+/// Half the width of the running median an outlier is judged against (samples each side).
+const NEIGHBOURS: usize = 3;
+
+/// Each residual less the median of its neighbourhood (itself and [`NEIGHBOURS`] each side):
+/// how far it stands off its neighbours. A wild sample stands off; a model's smooth misfit
+/// (a slow approach it does not follow, a bend) moves its neighbours with it and does not,
+/// so the weights fall on wild samples only and never reshape the fit to the misfit.
+pub fn off_neighbours(r: &[f64]) -> Vec<f64> {
+    let mut window = [0.0; 2 * NEIGHBOURS + 1];
+    (0..r.len())
+        .map(|i| {
+            let lo = i.saturating_sub(NEIGHBOURS);
+            let hi = (i + NEIGHBOURS + 1).min(r.len());
+            let w = &mut window[..hi - lo];
+            w.copy_from_slice(&r[lo..hi]);
+            let mid = w.len() / 2;
+            r[i] - *w.select_nth_unstable_by(mid, f64::total_cmp).1
+        })
+        .collect()
+}
+
 /// Fits `structure` to `data` under `loss` from `start` (usually the least-squares optimum).
 pub fn robust_fit(
     data: &FitData,
@@ -62,11 +87,17 @@ pub fn robust_fit(
     };
     let mut w = vec![1.0; data.y.len()];
     let mut report = fit_weighted(data, structure, start, &options, &w)?;
+    let mut set_aside = Vec::new();
     for _ in 0..ROUNDS {
         let Ok(r) = report.residuals(data) else {
             break;
         };
-        w = weights(loss, &r, robust_scale(&r));
+        let local = off_neighbours(&r);
+        let scale = robust_scale(&local);
+        w = weights(loss, &local, scale);
+        set_aside = (0..local.len())
+            .filter(|&i| local[i].abs() > SET_ASIDE * scale)
+            .collect();
         let next = fit_weighted(data, structure, report.model.values, &options, &w)?;
         let settled = structure.params().iter().all(|&p| {
             let (a, b) = (report.model.get(p), next.model.get(p));
@@ -77,16 +108,10 @@ pub fn robust_fit(
             break;
         }
     }
-    let down_weighted = w
-        .iter()
-        .enumerate()
-        .filter(|(_, w)| **w < DOWN_WEIGHTED)
-        .map(|(i, _)| i)
-        .collect();
     Ok(RobustFit {
         report,
         loss,
-        down_weighted,
+        down_weighted: set_aside,
     })
 }
 
@@ -96,6 +121,33 @@ mod tests {
     use crate::ident::excitation::Excitation;
     use crate::ident::fit::fit;
     use crate::ident::models::{Model, Param};
+
+    /// A P1 fitted as P1 to a P2's slow approach: its smooth misfit is large against the
+    /// noise, and one wild sample. Least squares and the robust fit give the same gain: the
+    /// misfit's samples are not down-weighted, only the wild one.
+    #[test]
+    fn a_smooth_misfit_is_not_down_weighted() {
+        let mut truth = Values::default();
+        truth.set(Param::Kp, 0.56);
+        truth.set(Param::Tp1, 150.0);
+        truth.set(Param::Tp2, 15.0);
+        truth.set(Param::Y0, 40.0);
+        let times: Vec<f64> = (0..480).map(f64::from).collect();
+        let input = Excitation::step(10.0, 40.0);
+        let clean = Model::new(Structure::parse("P2").unwrap(), truth)
+            .simulate(&input, &times)
+            .unwrap();
+        let mut rng = crate::ident::fit::Lcg(2);
+        let mut y: Vec<f64> = clean.iter().map(|c| c + 0.03 * rng.symmetric()).collect();
+        y[40] -= 0.5;
+        let data = FitData { times, y, input };
+        let s = Structure::parse("P1").unwrap();
+        let ls = fit(&data, s, truth, &FitOptions::default(), &mut ()).unwrap();
+        let r = robust_fit(&data, s, ls.model.values, Loss::Cauchy).unwrap();
+        let (a, b) = (ls.model.get(Param::Kp), r.report.model.get(Param::Kp));
+        assert!((a - b).abs() < 0.002 * a, "least squares {a}, robust {b}");
+        assert_eq!(r.down_weighted, vec![40]);
+    }
 
     #[test]
     fn weights_follow_their_loss() {

@@ -12,7 +12,7 @@ use super::{
     imperfect_step, nonlinearity, not_at_rest, outliers, quantisation, sampling, saturation,
     small_step, steps_held,
 };
-use crate::ident::drift_evidence::read_drift;
+use crate::ident::drift_evidence::{DriftReading, read_drift, read_drift_after};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit, within_span};
 use crate::ident::guess::auto_guess;
 use crate::ident::models::{Param, Structure};
@@ -225,15 +225,17 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
 /// Whether the motion before the first change is a drift rather than a test not at rest:
 /// a drift goes on after the response has settled with the same slope, in a straight line
 /// ([`read_drift`] on the current model with a drift, over the stretch before the change
-/// and at least one settled stretch after it); a test not at rest is an earlier response
-/// dying out, whose slope before the change the settled stretches do not continue.
+/// and the settled ones, and [`read_drift_after`] on the settled ones alone); a test not at
+/// rest is an earlier response dying out, whose slope before the change the settled
+/// stretches do not continue.
 fn drift_explains_motion(data: &FitData, current: &FitReport, options: &FitOptions) -> bool {
     let Some(with_drift) = with_drift(data, current, options) else {
         return false;
     };
     let drift = with_drift.model.get(Param::Drift);
-    read_drift(data, &current.model, &with_drift)
-        .is_some_and(|d| d.stretches >= 2 && d.shows(drift))
+    let shown = |d: Option<DriftReading>| d.is_some_and(|d| d.shows(drift));
+    shown(read_drift(data, &current.model, &with_drift))
+        && shown(read_drift_after(data, &current.model, &with_drift))
 }
 
 /// `current`'s structure with a drift term, fitted from its values (the drift from 0);
