@@ -137,7 +137,8 @@ fn features_as_given(data: &FitData, y0: Option<f64>) -> CurveFeatures {
     let y0 = y0
         .or_else(|| level_before(data))
         .unwrap_or_else(|| data.y.first().copied().unwrap_or(0.0));
-    let tail = (n / 10).max(3).min(n.max(1));
+    let tail = (n / 10).max(3).min(n);
+    // NaN for a record without samples (nothing to read; the fit refuses it).
     let y_final = data.y[n - tail..].iter().sum::<f64>() / tail as f64;
     let fifth = (n / 5).max(2).min(n);
     let final_slope = slope(&data.times[n - fifth..], &data.y[n - fifth..]);

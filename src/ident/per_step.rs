@@ -34,6 +34,9 @@ pub struct StepFit {
 /// PRBS-like input has no step windows to compare).
 pub const MAX_PER_STEP: usize = 12;
 
+/// The fewest samples a change's window needs for a fit of its own.
+pub const MIN_WINDOW: usize = 3;
+
 /// The share of the stretch since the previous change a window keeps before its change.
 pub const BEFORE_SHARE: f64 = 1.0 / 3.0;
 
@@ -48,6 +51,11 @@ pub fn window_data(data: &FitData, k: usize) -> Option<FitData> {
     let keep: Vec<usize> = (0..data.times.len())
         .filter(|&i| data.times[i] >= start && data.times[i] < end)
         .collect();
+    // A window without samples to fit (a change at the record's last sample, or with its
+    // samples left out) has no fit of its own.
+    if keep.len() < MIN_WINDOW {
+        return None;
+    }
     let mut input = Excitation::step(change.t, change.du);
     input.changes[0] = change;
     input.u0 = change.u_before;

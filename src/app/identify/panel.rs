@@ -715,4 +715,8 @@ fn diagnose_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<C
     {
         ui.weak(verdict.text(lang));
     }
+    // A gain the record measures only together with another term is said under the chain.
+    if d.verdict.is_some() && d.gain_trade.is_some() {
+        ui.label(words::static_gain_line(d, lang));
+    }
 }

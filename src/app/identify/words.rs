@@ -186,6 +186,11 @@ pub fn diagnose_note(note: &DiagnoseNote, lang: Lang) -> String {
     }
 }
 
+/// The static gain line of a diagnosis, with what the record does not separate it from.
+pub fn static_gain_line(d: &DiagnoseReport, lang: Lang) -> String {
+    crate::text::report::static_gain_line(d, lang)
+}
+
 /// A selected step of the chain: its cause, its evidence, its remedy and what it gained.
 pub fn step_lines(step: &Step, lang: Lang) -> [String; 3] {
     crate::text::report::step_lines(step, lang)

@@ -297,9 +297,10 @@ fn on_first_step_when_nonlinear(handled: &mut Handled) {
     };
     // The first change's window alone must show the gain: a change not held through its
     // response would leave a model whose gain the samples kept cannot determine.
+    let t_first = handled.data.input.t0();
     let first = fits
         .into_iter()
-        .next()
+        .find(|f| f.change.t == t_first)
         .filter(|f| fit_held(f, &handled.start.model))
         .and_then(|f| f.fit.ok());
     let cut = handled.data.input.changes.get(1).map(|c| c.t);
