@@ -44,6 +44,9 @@
 //!
 //! Run with `cargo test --test diagnose_artefacts -- --nocapture` to see the figures.
 
+mod draw;
+use draw::{gaussian, range, signed};
+
 use std::sync::OnceLock;
 
 use degrau::ident::diagnose::{DiagnoseOptions, DiagnoseReport, diagnose};
@@ -106,21 +109,6 @@ struct Case {
     /// The noise's standard deviation (output units).
     sd: f64,
     note: String,
-}
-
-fn range(rng: &mut Lcg, (a, b): (f64, f64)) -> f64 {
-    a + (b - a) * rng.unit()
-}
-
-fn signed(rng: &mut Lcg, r: (f64, f64)) -> f64 {
-    let s = if rng.unit() < 0.5 { -1.0 } else { 1.0 };
-    s * range(rng, r)
-}
-
-fn gaussian(rng: &mut Lcg) -> f64 {
-    let u1 = 1.0 - rng.unit();
-    let u2 = rng.unit();
-    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
 }
 
 /// Noise of standard deviation `sd`: Gaussian or uniform innovations, AR(1) with `rho`.

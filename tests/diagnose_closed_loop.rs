@@ -25,6 +25,9 @@
 //!
 //! Run with `cargo test --test diagnose_closed_loop -- --nocapture` to see the figures.
 
+mod draw;
+use draw::{gaussian, range, signed};
+
 use std::path::PathBuf;
 
 use degrau::ident::data::{LoadOptions, load_file};
@@ -45,21 +48,6 @@ const OPEN_CASES: usize = 70;
 const MIN_NAMED: f64 = 0.90;
 /// Fine integration steps per sampling period.
 const FINE: usize = 20;
-
-fn range(rng: &mut Lcg, (a, b): (f64, f64)) -> f64 {
-    a + (b - a) * rng.unit()
-}
-
-fn signed(rng: &mut Lcg, r: (f64, f64)) -> f64 {
-    let s = if rng.unit() < 0.5 { -1.0 } else { 1.0 };
-    s * range(rng, r)
-}
-
-fn gaussian(rng: &mut Lcg) -> f64 {
-    let u1 = 1.0 - rng.unit();
-    let u2 = rng.unit();
-    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-}
 
 /// A plant Kp·e^(−θs)/((τ1 s + 1)(τ2 s + 1)) (no τ2: first order), integrated exactly for a
 /// held input on a fine grid, the dead time a delay line of whole fine steps.
@@ -150,6 +138,35 @@ fn record(times: Vec<f64>, u: &[f64], y: Vec<f64>, note: String) -> Option<Recor
     })
 }
 
+/// What both generators draw first: the plant's first lag (s), the sampling period (2–8 %
+/// of it), the plant, the record's length and its operating point far from zero.
+struct Setting {
+    tau1: f64,
+    h: f64,
+    plant: Plant,
+    n: usize,
+    y0: f64,
+    u0: f64,
+}
+
+impl Setting {
+    fn draw(rng: &mut Lcg, second_order: bool) -> Self {
+        let tau1 = range(rng, (5.0, 50.0));
+        let h = range(rng, (0.02, 0.08)) * tau1;
+        let plant = Plant::new(rng, second_order, tau1, h);
+        let n = 600 + rng.below(1401);
+        let (y0, u0) = (range(rng, (20.0, 100.0)), range(rng, (10.0, 60.0)));
+        Setting {
+            tau1,
+            h,
+            plant,
+            n,
+            y0,
+            u0,
+        }
+    }
+}
+
 /// The `index`-th closed-loop case.
 fn closed(index: usize) -> Option<Record> {
     let mut rng = Lcg((0xC1_05ED + index as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
@@ -158,14 +175,14 @@ fn closed(index: usize) -> Option<Record> {
     let pi = (index / 2) % 2 == 1;
     let dither = (index / 4) % 2 == 1;
     let coloured = (index / 8) % 2 == 1;
-    let tau1 = range(&mut rng, (5.0, 50.0));
-    let h = range(&mut rng, (0.02, 0.08)) * tau1;
-    let mut plant = Plant::new(&mut rng, second_order, tau1, h);
-    let n = 600 + rng.below(1401);
-    let (y0, u0) = (
-        range(&mut rng, (20.0, 100.0)),
-        range(&mut rng, (10.0, 60.0)),
-    );
+    let Setting {
+        tau1,
+        h,
+        mut plant,
+        n,
+        y0,
+        u0,
+    } = Setting::draw(&mut rng, second_order);
     // SIMC: the second lag counted half in the time constant, half in the dead time.
     let t2 = plant.tau2.unwrap_or(0.0);
     let theta = plant.td + t2 / 2.0 + h / 2.0;
@@ -271,14 +288,14 @@ fn open(index: usize) -> Option<Record> {
     };
     let second_order = (index / 7) % 2 == 1;
     let coloured = (index / 14) % 2 == 1;
-    let tau1 = range(&mut rng, (5.0, 50.0));
-    let h = range(&mut rng, (0.02, 0.08)) * tau1;
-    let mut plant = Plant::new(&mut rng, second_order, tau1, h);
-    let n = 600 + rng.below(1401);
-    let (y0, u0) = (
-        range(&mut rng, (20.0, 100.0)),
-        range(&mut rng, (10.0, 60.0)),
-    );
+    let Setting {
+        tau1,
+        h,
+        mut plant,
+        n,
+        y0,
+        u0,
+    } = Setting::draw(&mut rng, second_order);
     let du = signed(&mut rng, (0.5, 10.0));
     let mut noise = Noise {
         sd: range(&mut rng, (0.002, 0.02)) * (plant.kp * du).abs(),
