@@ -366,8 +366,9 @@ pub struct Step {
 }
 
 /// A term the gain trades with: the final fit's Kp estimate correlated with `with`'s by
-/// `correlation` (|r| ≥ [`TRADE_CORRELATION`]), so that the record measures the two only
-/// together; the 95 % interval of Kp is the range the record allows.
+/// `correlation` (|r| ≥ [`TRADE_CORRELATION`]) and its interval loose ([`TRADE_WIDTH`]), so
+/// that the record measures the two only together; the 95 % interval of Kp is the range the
+/// record allows.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct GainTrade {
     pub with: Param,
@@ -377,9 +378,22 @@ pub struct GainTrade {
 /// Kp correlated with another parameter by this much or more is not measured apart from it.
 pub const TRADE_CORRELATION: f64 = 0.9;
 
+/// A trade is said only when it leaves the gain loose: its 95 % interval's half-width above
+/// this share of |Kp| (the 10 % a gain is read to). A correlated pair both pinned down is
+/// measured, however correlated.
+pub const TRADE_WIDTH: f64 = 0.1;
+
 /// The terms a gain trades with on a record that has not settled or did not start at rest:
-/// a drift, an initial transient, the operating point, a zero, and the slowest lag.
+/// a drift, an initial transient, the operating point, a zero, and the slowest lag; said
+/// when the gain's interval is loose ([`TRADE_WIDTH`]).
 fn gain_trade(r: &FitReport) -> Option<GainTrade> {
+    let kp = r.model.get(Param::Kp);
+    let loose = r
+        .interval(Param::Kp)
+        .is_none_or(|(lo, hi)| 0.5 * (hi - lo) > TRADE_WIDTH * kp.abs());
+    if !loose {
+        return None;
+    }
     let slowest = [Param::Tp3, Param::Tp2, Param::Tp1, Param::Tw]
         .into_iter()
         .filter(|p| r.model.structure.params().contains(p))
@@ -1384,6 +1398,13 @@ mod tests {
         let trade = gain_trade(&with_drift).expect("trades");
         assert!(matches!(trade.with, Param::Drift | Param::Tp1), "{trade:?}");
         assert!(trade.correlation.abs() >= TRADE_CORRELATION);
+        // As correlated, but the gain pinned within 1 %: measured, nothing to say.
+        let mut tight = with_drift.clone();
+        let kp = tight.model.get(Param::Kp);
+        for e in tight.params.iter_mut().filter(|e| e.param == Param::Kp) {
+            e.ci95 = Some((0.99 * kp, 1.01 * kp));
+        }
+        assert_eq!(gain_trade(&tight), None);
     }
 
     #[test]
