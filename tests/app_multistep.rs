@@ -220,3 +220,40 @@ fn a_record_not_at_rest_says_so_and_shows_its_transient() {
         );
     }
 }
+
+/// A gain the record measures only together with another term is said under the chain, in
+/// the student's language: the whole loop on the heater record, then its final gain marked
+/// as traded with a drift (the record's own gain is pinned: the line must come from the
+/// report, and go with it).
+#[test]
+fn a_gain_traded_with_another_term_is_said_under_the_chain() {
+    let mut h = loaded(HEATER, "P1D", [1360.0, 860.0]);
+    h.get_by_label_contains("Loaded 600 samples");
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| !h.state().ident.is_fitting());
+    h.get_by_label("Run the whole loop").click_accesskit();
+    h.run_steps(1);
+    let start = std::time::Instant::now();
+    while h.state().ident.is_diagnosing() || h.state().ident.diagnosis.is_none() {
+        assert!(start.elapsed().as_secs() < 180, "the loop never ended");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("does not separate Kp").is_none());
+    let d = h.state_mut().ident.diagnosis.as_mut().expect("a diagnosis");
+    d.gain_trade = Some(degrau::ident::diagnose::GainTrade {
+        with: Param::Drift,
+        correlation: -0.95,
+    });
+    h.run_steps(2);
+    h.get_by_label_contains(
+        "The record does not separate Kp from Drift (their estimates are correlated -0.95)",
+    );
+    h.state_mut().saved.lang = degrau::text::Lang::Pt;
+    h.run_steps(2);
+    h.get_by_label_contains(
+        "O registro não separa Kp de Drift (as estimativas têm correlação -0,95)",
+    );
+}
