@@ -612,7 +612,7 @@ fn refit_without(data: &FitData, current: &FitReport, s: Structure) -> Option<Fi
         ..FitOptions::default()
     };
     let r = search_fit(data, s, current.model.values, &options, &mut ()).ok()?;
-    let (_, full) = on_every_sample(data, (Extension::Drift, r))?;
+    let full = full_fit(data, r)?;
     full.ln_mse.is_finite().then_some(full)
 }
 
@@ -946,15 +946,20 @@ fn on_every_sample(
     data: &FitData,
     (extension, r): (Extension, FitReport),
 ) -> Option<(Extension, FitReport)> {
+    full_fit(data, r).map(|full| (extension, full))
+}
+
+/// A fit found on the record's reduction ([`search_fit`]) refitted on every sample from its
+/// optimum; the fit itself when the record is not reduced.
+fn full_fit(data: &FitData, r: FitReport) -> Option<FitReport> {
     if super::reduce::reduce(&data.times, &data.input).is_none() {
-        return Some((extension, r));
+        return Some(r);
     }
     let options = FitOptions {
         starts: 1,
         ..FitOptions::default()
     };
-    let full = fit(data, r.model.structure, r.model.values, &options, &mut ()).ok()?;
-    Some((extension, full))
+    fit(data, r.model.structure, r.model.values, &options, &mut ()).ok()
 }
 
 /// Fits the extended structure from a few warm starts and its automatic guess; the best

@@ -300,16 +300,13 @@ impl Design {
         }
         let inverse = a.clone().cholesky()?.inverse();
         let beta = &inverse * &b;
-        let fitted: Vec<f64> = members
-            .iter()
-            .filter_map(|&(i, s)| {
-                let mut row = vec![0.0; p];
-                self.row(times[i], s, stretches[s].du, du_unit, &mut row)
-                    .then(|| {
-                        r[i] / r_unit - row.iter().zip(beta.iter()).map(|(x, c)| x * c).sum::<f64>()
-                    })
-            })
-            .collect();
+        let mut fitted = Vec::with_capacity(n);
+        for &(i, s) in members {
+            if self.row(times[i], s, stretches[s].du, du_unit, &mut row) {
+                let model: f64 = row.iter().zip(beta.iter()).map(|(x, c)| x * c).sum();
+                fitted.push(r[i] / r_unit - model);
+            }
+        }
         let ssr: f64 = fitted.iter().map(|e| e * e).sum();
         let s2 = ssr / (n - p) as f64;
         let rho = lag_one(&fitted).clamp(0.0, 0.99);

@@ -138,15 +138,12 @@ mod tests {
             })
             .collect();
         let input = Excitation::measured(&times, &u, None, Hold::Zoh).unwrap();
-        let mut v = Values::default();
-        for (p, x) in [
+        let v = values(&[
             (Param::Kp, 0.56),
             (Param::Tp1, 150.0),
             (Param::Tp2, 12.0),
             (Param::Y0, 40.2),
-        ] {
-            v.set(p, x);
-        }
+        ]);
         let truth = Model::new(Structure::parse("P2").unwrap(), v);
         let mut rng = Lcg(3);
         let y = truth
@@ -156,6 +153,12 @@ mod tests {
             .map(|y| y + 0.1 * rng.symmetric())
             .collect();
         FitData { times, y, input }
+    }
+
+    fn values(pairs: &[(Param, f64)]) -> Values {
+        let mut v = Values::default();
+        pairs.iter().for_each(|&(p, x)| v.set(p, x));
+        v
     }
 
     fn fitted(data: &FitData, code: &str, from: Values) -> FitReport {
@@ -176,21 +179,18 @@ mod tests {
     #[test]
     fn a_drift_bought_on_the_fitted_part_predicts_the_rest_badly_and_a_pole_does_not() {
         let data = record();
-        let mut from = Values::default();
-        for (p, x) in [
+        let from = values(&[
             (Param::Kp, 0.5),
             (Param::Tp1, 100.0),
             (Param::Tp2, 5.0),
             (Param::Y0, 40.2),
-        ] {
-            from.set(p, x);
-        }
+        ]);
         let current = fitted(&data, "P1", from);
         let pole = fitted(&data, "P2", from);
         let pole_hold = hold_out(&data, &current, &pole).expect("splits");
         assert!(pole_hold.keeps_candidate(), "{pole_hold:?}");
-        // A drift fitted on the record, and a zero bending the first response: each fits
-        // the part it saw, and extrapolates.
+        // A drift fitted on the record trades with the slow lag on the part it saw, and
+        // extrapolates past the second change.
         let mut drift = Structure::parse("P1").unwrap();
         drift.drift = true;
         let mut d = current.model.values;
