@@ -6,6 +6,7 @@ use degrau::ident::models::{Model, Param, Structure, Values};
 
 /// 800 samples (Ts = 0.25 s) of the model `code` with `truth`, plus uniform noise of
 /// peak-to-peak `noise` from a small LCG seeded with `seed`.
+#[allow(dead_code)]
 pub fn noisy_800(
     code: &str,
     truth: &[(Param, f64)],

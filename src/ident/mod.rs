@@ -28,4 +28,5 @@ pub mod scale;
 pub mod staircase;
 pub mod stats;
 pub mod test_causes;
+mod transient;
 pub mod validation;

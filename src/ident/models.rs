@@ -30,6 +30,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::excitation::Excitation;
+use super::transient::Transient;
 use crate::lti::{C64, LtiError, StepInfo, StepInfoOptions, StepResponse, TransferFunction};
 
 /// One parameter of a process model, with procest's name.
@@ -600,9 +601,7 @@ impl Simulator {
             *o += y0 + drift * (t - t0);
         }
         if let Some(x) = &self.transient {
-            for (o, &t) in out.iter_mut().zip(times) {
-                *o += x.value(t - self.origin);
-            }
+            x.add_to(times, self.origin, out);
         }
     }
 
@@ -623,121 +622,6 @@ impl Simulator {
             // Advances a running state: no exponential per instant.
             self.response.superpose(&[(s, a)], after, &mut out[first..]);
         }
-    }
-}
-
-/// The initial transient x(τ) = Σ Xᵢ·φᵢ(τ), τ from the record's first instant (see the
-/// module docs).
-#[derive(Debug, Clone)]
-struct Transient {
-    /// The coefficients X1… (output units).
-    coefficients: Vec<f64>,
-    modes: Modes,
-}
-
-/// The free-response basis of G's poles (no integrator).
-#[derive(Debug, Clone)]
-enum Modes {
-    /// Real poles: their centre c and offsets pᵢ − c, for the divided differences.
-    Real {
-        center: f64,
-        offsets: Vec<C64>,
-        radius: f64,
-    },
-    /// An underdamped pair σ ± jω (ω² < 0 for real poles from ζ > 1), and a third real
-    /// pole if any.
-    Pair {
-        sigma: f64,
-        omega_squared: f64,
-        third: Option<f64>,
-    },
-}
-
-impl Transient {
-    fn of(model: &Model) -> Option<Transient> {
-        let s = &model.structure;
-        if !s.transient {
-            return None;
-        }
-        let v = &model.values;
-        let count = s.poles as usize;
-        let coefficients = [Param::X1, Param::X2, Param::X3][..count]
-            .iter()
-            .map(|&p| v.get(p))
-            .collect();
-        let modes = if s.underdamped {
-            let (tw, zeta) = (v.get(Param::Tw), v.get(Param::Zeta));
-            Modes::Pair {
-                sigma: -zeta / tw,
-                omega_squared: (1.0 - zeta * zeta) / (tw * tw),
-                third: (s.poles == 3).then(|| -1.0 / v.get(Param::Tp3)),
-            }
-        } else {
-            let poles: Vec<f64> = [Param::Tp1, Param::Tp2, Param::Tp3][..count]
-                .iter()
-                .map(|&p| -1.0 / v.get(p))
-                .collect();
-            let center = poles.iter().sum::<f64>() / count as f64;
-            let offsets: Vec<C64> = poles.iter().map(|p| C64::new(p - center, 0.0)).collect();
-            let radius = offsets.iter().map(|d| d.norm()).fold(0.0, f64::max);
-            Modes::Real {
-                center,
-                offsets,
-                radius,
-            }
-        };
-        Some(Transient {
-            coefficients,
-            modes,
-        })
-    }
-
-    fn value(&self, tau: f64) -> f64 {
-        match &self.modes {
-            Modes::Real {
-                center,
-                offsets,
-                radius,
-            } => {
-                let row = crate::lti::divided::exp_last_row(offsets, *radius, tau);
-                let e = (center * tau).exp();
-                // The last entry is e^{p_m τ}; earlier ones the higher divided differences.
-                self.coefficients
-                    .iter()
-                    .zip(row.iter().rev())
-                    .map(|(x, r)| x * e * r.re)
-                    .sum()
-            }
-            Modes::Pair {
-                sigma,
-                omega_squared,
-                third,
-            } => {
-                let e = (sigma * tau).exp();
-                let (cos, sinc) = oscillation(*omega_squared, tau);
-                let mut sum = self.coefficients[0] * e * cos;
-                sum += self.coefficients.get(1).map_or(0.0, |x| x * e * sinc);
-                if let (Some(p), Some(x)) = (third, self.coefficients.get(2)) {
-                    sum += x * (p * tau).exp();
-                }
-                sum
-            }
-        }
-    }
-}
-
-/// (cos ωτ, sin(ωτ)/ω) for ω² > 0, (cosh, sinh(|ω|τ)/|ω|) for ω² < 0, (1, τ) at ω = 0.
-fn oscillation(omega_squared: f64, tau: f64) -> (f64, f64) {
-    let w = omega_squared.abs().sqrt();
-    let x = w * tau;
-    if x.abs() < 1e-4 {
-        let x2 = omega_squared * tau * tau;
-        return (1.0 - x2 / 2.0, tau * (1.0 - x2 / 6.0));
-    }
-    if omega_squared > 0.0 {
-        (x.cos(), x.sin() / w)
-    } else {
-        (x.cosh(), x.sinh() / w)
     }
 }
 

@@ -112,6 +112,40 @@ impl Lower {
     }
 }
 
+/// row ← row·exp(δ·N), N = diag(d) + subdiagonal of ones, |d| ≤ `radius`, by the Taylor
+/// series on the row (each term a bidiagonal product, O(m)), for |δ|·radius ≤ [`SCALED_NORM`] (the nilpotent
+/// part ends by itself after m terms): what carries an advance cached over h to one over
+/// h + δ, exp((h + δ)N) = exp(hN)·exp(δN). `term` is scratch of the row's length.
+pub fn advance_row(row: &mut [C64], term: &mut [C64], d: &[C64], radius: f64, delta: f64) {
+    if delta == 0.0 {
+        return;
+    }
+    // ‖row·(δN)ⁿ/n!‖ ≤ ‖row‖·aⁿ/n!, a = |δ|·‖N‖₁ ≤ |δ|·(radius + 1): the series stops where
+    // that bound is under 1e-18 (a clock's rounding: one term), and never later than
+    // [`exp_last_row`]'s own count.
+    let a = delta.abs() * (radius + 1.0);
+    let mut bound = 1.0;
+    let mut count = 0;
+    while bound > 1e-18 && count < terms(row.len()) {
+        count += 1;
+        bound *= a / count as f64;
+    }
+    term.copy_from_slice(row);
+    for n in 1..=count {
+        let h = delta / n as f64;
+        for i in 0..term.len() {
+            let below = term.get(i + 1).copied().unwrap_or(ZERO);
+            term[i] = (term[i] * d[i] + below) * h;
+        }
+        row.iter_mut().zip(term.iter()).for_each(|(r, t)| *r += t);
+    }
+}
+
+/// Whether an advance by δ can be carried by [`advance_row`] over nodes within `radius`.
+pub fn row_advance_fits(delta: f64, radius: f64) -> bool {
+    delta.abs() * radius <= SCALED_NORM
+}
+
 /// How many halvings bring τ·radius to at most [`SCALED_NORM`].
 fn squarings(tau: f64, radius: f64) -> u32 {
     let x = tau.abs() * radius;

@@ -563,6 +563,8 @@ struct Superposition<'a> {
     cached_h: f64,
     cached_exp: C64,
     cached_matrix: Option<divided::Lower>,
+    /// h − `cached_h` of the advance under way (a spread cluster's matrix carried on by it).
+    nudge: f64,
 }
 
 /// Relative distance within which an advance reuses the cached e^{ch} (times the exact
@@ -603,6 +605,7 @@ impl<'a> Superposition<'a> {
             cached_h: f64::NAN,
             cached_exp: C64::new(1.0, 0.0),
             cached_matrix: None,
+            nudge: 0.0,
         }
     }
 
@@ -636,11 +639,17 @@ impl<'a> Superposition<'a> {
     fn exponential(&mut self, h: f64) -> C64 {
         let c = self.cluster;
         let delta = h - self.cached_h;
-        let matrix_ok = c.spread.is_none() || delta.abs() <= 1e-12 * h;
-        if delta.abs() <= SAME_ADVANCE * h && matrix_ok {
-            let z = c.center * delta;
-            return self.cached_exp * (C64::new(1.0, 0.0) + z * (1.0 + z * (0.5 + z / 6.0)));
+        if let Some(s) = &c.spread {
+            // A spread cluster keeps its matrix over nearby spacings (a jittered clock):
+            // the rest of the advance goes by the row's own series (see `advance_row`).
+            if self.cached_matrix.is_some() && divided::row_advance_fits(delta, s.radius) {
+                self.nudge = delta;
+                return self.cached_exp * small_exp(c.center * delta);
+            }
+        } else if delta.abs() <= SAME_ADVANCE * h {
+            return self.cached_exp * small_exp(c.center * delta);
         }
+        self.nudge = 0.0;
         self.cached_h = h;
         self.cached_exp = (c.center * h).exp();
         self.cached_matrix = c
@@ -657,6 +666,15 @@ impl<'a> Superposition<'a> {
             Some(matrix) => {
                 matrix.row_times(&self.state, &mut self.next);
                 std::mem::swap(&mut self.state, &mut self.next);
+                if let (Some(s), true) = (&self.cluster.spread, self.nudge != 0.0) {
+                    divided::advance_row(
+                        &mut self.state,
+                        &mut self.next,
+                        &s.offsets,
+                        s.radius,
+                        self.nudge,
+                    );
+                }
             }
             None if self.state.len() > 1 => {
                 // (τ + h)ʲ = Σᵢ C(j, i)·h^{j−i}·τⁱ, highest power first (in place).
@@ -686,6 +704,18 @@ impl<'a> Superposition<'a> {
         };
         self.cluster.weight * dot(d, &self.state).re
     }
+}
+
+/// e^z, by its series to z³ when |z| ≤ 1e-4 (the rest under 5e-18): the correction of a
+/// cached advance to a spacing that differs by rounding or jitter.
+fn small_exp(z: C64) -> C64 {
+    if z.im == 0.0 {
+        return C64::new(z.re.exp(), 0.0);
+    }
+    if z.re.abs() + z.im.abs() > 1e-4 {
+        return z.exp();
+    }
+    C64::new(1.0, 0.0) + z * (1.0 + z * (0.5 + z / 6.0))
 }
 
 /// [`Superposition`] for a simple pole c (its contribution q·e^{cτ}), written out: the running
@@ -752,10 +782,7 @@ impl Advance {
             return self.exp;
         }
         if delta.abs() <= SAME_ADVANCE * h {
-            // e^{cδ} = 1 + z + z²/2 + O(z³), |z| ≤ 1e-9·|ch|: exact to rounding while e^{ch}
-            // is a normal number.
-            let z = self.center * delta;
-            return self.exp * (C64::new(1.0, 0.0) + z * (1.0 + z * 0.5));
+            return self.exp * small_exp(self.center * delta);
         }
         self.h = h;
         self.exp = (self.center * h).exp();

@@ -1,0 +1,285 @@
+//! Issue 21, item 7: fast enough for a class, linear in the record, measured side by side.
+//!
+//! - **records**: each record of `tests/data/records` loaded as the CLI loads it (the flags a
+//!   user types, the default start P1): one default P1D fit (`degrau fit --model P1D`'s fit,
+//!   16 starts; best of 5) against one whole diagnosis (best of 2), and their ratio (target
+//!   ≤ 25).
+//! - **scale**: a P1D process (Kp 2, Tp1 8 s, Td 3 s, Y0 5) driven by a measured input
+//!   stepping 0 → 1 → 1.5 (at 20 s and 110 s of a 200 s record), Gaussian noise σ = 0.01, at
+//!   10³, 10⁴, 10⁵ and 10⁶ samples: the default P1D fit and the diagnosis against scipy's
+//!   single-start `least_squares` (`benches/scipy_p1d.py`, best of 3 in-process, when python3
+//!   with numpy and scipy is there). Targets: the fit within 1.5× scipy, the diagnosis
+//!   within 10×.
+//!
+//! Run: `cargo bench --bench speed` (both), or `-- records`, `-- scale`. Plain timing
+//! (`Instant`), not criterion: each figure is a whole fit or diagnosis of seconds, and the
+//! ratios are what is read.
+
+use degrau::ident::data::{LoadOptions, load_file};
+use degrau::ident::diagnose::{DiagnoseOptions, diagnose};
+use degrau::ident::excitation::{Excitation, Hold};
+use degrau::ident::experiment::Experiment;
+use degrau::ident::fit::{FitData, FitOptions};
+use degrau::ident::models::{Model, Param, Structure, Values};
+use std::time::Instant;
+
+mod common;
+
+/// A record of `tests/data/records` and the flags a user gives `degrau diagnose`:
+/// (file, time column, output, input, sampling period, rows to skip, input before the record).
+type Flags = (
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+    Option<f64>,
+    usize,
+    Option<f64>,
+);
+
+const RECORDS: [Flags; 13] = [
+    (
+        "apmonitor_arduino_1st_order_SISO_data.csv",
+        "time",
+        "temperature",
+        "voltage",
+        None,
+        0,
+        None,
+    ),
+    ("enclosure_heater_doublet.csv", "1", "4", "2", None, 0, None),
+    (
+        "multistep_heater_synthetic.csv",
+        "",
+        "3",
+        "2",
+        None,
+        0,
+        None,
+    ),
+    (
+        "rc2_square_wave_adc_synthetic.csv",
+        "",
+        "2",
+        "1",
+        Some(0.008),
+        0,
+        None,
+    ),
+    (
+        "rlc_step_underdamped_synthetic.csv",
+        "",
+        "V_C",
+        "V_S",
+        Some(3.3e-6),
+        4,
+        None,
+    ),
+    (
+        "tclab_step_q1_100_spikes.csv",
+        "Time",
+        "T1",
+        "Q1",
+        None,
+        0,
+        Some(0.0),
+    ),
+    (
+        "tclab_step_q1_50_dropouts_synthetic.csv",
+        "Time",
+        "T1",
+        "Q1",
+        None,
+        0,
+        Some(0.0),
+    ),
+    (
+        "tclab_step_q1_50_synthetic.csv",
+        "Time",
+        "T1",
+        "Q1",
+        None,
+        0,
+        None,
+    ),
+    (
+        "ecam_tclab_Open_loop_experiment_on_DV_2022-03-22-20h49.txt",
+        "",
+        "PV",
+        "DV",
+        None,
+        0,
+        None,
+    ),
+    (
+        "ecam_tclab_Open_loop_experiment_on_MV_2022-03-01-09h52.txt",
+        "",
+        "PV",
+        "MV",
+        None,
+        0,
+        None,
+    ),
+    (
+        "pendulum_aprbs_synthetic.txt",
+        "",
+        "y",
+        "u",
+        Some(0.01),
+        0,
+        None,
+    ),
+    (
+        "sbhs_step_not_at_rest_synthetic.txt",
+        "5",
+        "4",
+        "2",
+        None,
+        0,
+        None,
+    ),
+    ("daisy_heating_system.dat", "1", "3", "2", None, 0, None),
+];
+
+/// Seconds of the fastest of `runs` runs of `f`.
+fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> f64 {
+    (0..runs)
+        .map(|_| {
+            let clock = Instant::now();
+            std::hint::black_box(f());
+            clock.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The record's samples as the CLI prepares them, and the held Y0 of a start at rest.
+fn prepared(flags: &Flags) -> Result<(Experiment, FitData, Option<Values>), String> {
+    let (file, time, y, u, ts, skip, initial) = *flags;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/records")
+        .join(file);
+    let options = LoadOptions::from_text(time, y, u, ts, skip);
+    let test = load_file(&path, &options).map_err(|e| e.to_string())?;
+    let experiment = Experiment::new(&test, None, None, initial).map_err(|e| e.to_string())?;
+    let data = experiment.fit_data(&test).map_err(|e| e.to_string())?;
+    let held = experiment.operating_point(&data).map(|y0| {
+        let mut v = Values::default();
+        v.set(Param::Y0, y0);
+        v
+    });
+    Ok((experiment, data, held))
+}
+
+/// Seconds of one default P1D fit and of one diagnosis from P1, on `data`.
+fn fit_and_diagnosis(experiment: &Experiment, data: &FitData, held: Option<Values>) -> (f64, f64) {
+    let fit = best_of(5, || {
+        experiment
+            .fit_prepared(data, "P1D", false, &[], &FitOptions::default(), &mut ())
+            .ok()
+    });
+    let start = experiment.structure("P1", false, data).ok();
+    let options = DiagnoseOptions::default();
+    let diagnosis = best_of(2, || start.map(|s| diagnose(data, s, held, &options).ok()));
+    (fit, diagnosis)
+}
+
+fn records() {
+    eprintln!("record | samples | P1D fit (s) | diagnosis (s) | ratio (target ≤ 25)");
+    let mut worst: f64 = 0.0;
+    for flags in &RECORDS {
+        let (experiment, data, held) = match prepared(flags) {
+            Ok(p) => p,
+            Err(e) => {
+                eprintln!("{}: not loaded ({e})", flags.0);
+                continue;
+            }
+        };
+        let (fit, diagnosis) = fit_and_diagnosis(&experiment, &data, held);
+        let ratio = diagnosis / fit;
+        worst = worst.max(ratio);
+        eprintln!(
+            "{} | {} | {fit:.4} | {diagnosis:.3} | {ratio:.1}",
+            flags.0,
+            data.times.len()
+        );
+    }
+    eprintln!("worst ratio: {worst:.1}");
+}
+
+/// The scale record of `n` samples (see the module docs).
+fn scale_record(n: usize) -> FitData {
+    let ts = 200.0 / n as f64;
+    let times: Vec<f64> = (0..n).map(|k| ts * k as f64).collect();
+    let u: Vec<f64> = times
+        .iter()
+        .map(|&t| match t {
+            t if t < 20.0 => 0.0,
+            t if t < 110.0 => 1.0,
+            _ => 1.5,
+        })
+        .collect();
+    let input = Excitation::measured(&times, &u, None, Hold::Zoh).expect("an input that steps");
+    let mut v = Values::default();
+    for (p, x) in [
+        (Param::Kp, 2.0),
+        (Param::Tp1, 8.0),
+        (Param::Td, 3.0),
+        (Param::Y0, 5.0),
+    ] {
+        v.set(p, x);
+    }
+    let s = Structure::parse("P1D").expect("a code");
+    let mut y = Model::new(s, v).simulate(&input, &times).expect("a model");
+    let mut state = 7u64;
+    let mut uniform = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    };
+    for v in y.iter_mut() {
+        // Box–Muller: σ = 0.01.
+        let (a, b) = (uniform(), uniform());
+        *v += 0.01 * (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos();
+    }
+    FitData { times, y, input }
+}
+
+fn scale() {
+    eprintln!(
+        "samples | P1D fit (s) | diagnosis (s) | scipy one start (s) | fit/scipy (≤ 1.5) | diagnosis/scipy (≤ 10)"
+    );
+    let p1d = Structure::parse("P1D").expect("a code");
+    let p1 = Structure::parse("P1").expect("a code");
+    for n in [1_000, 10_000, 100_000, 1_000_000] {
+        let data = scale_record(n);
+        let guess = degrau::ident::guess::auto_guess(&data, p1d, None);
+        let runs = if n >= 1_000_000 { 2 } else { 3 };
+        let fit = best_of(runs, || {
+            degrau::ident::fit::fit(&data, p1d, guess, &FitOptions::default(), &mut ()).ok()
+        });
+        let options = DiagnoseOptions::default();
+        let diagnosis = best_of(1, || diagnose(&data, p1, None, &options).ok());
+        let start = [Param::Kp, Param::Tp1, Param::Td, Param::Y0].map(|p| guess.get(p));
+        match common::scipy_p1d(&data, start) {
+            Some((scipy, _)) => eprintln!(
+                "{n} | {fit:.3} | {diagnosis:.3} | {scipy:.3} | {:.2} | {:.1}",
+                fit / scipy,
+                diagnosis / scipy
+            ),
+            None => eprintln!("{n} | {fit:.3} | {diagnosis:.3} | (scipy absent) | | "),
+        }
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let wants =
+        |part: &str| args.iter().all(|a| a.starts_with('-')) || args.iter().any(|a| a == part);
+    if wants("records") {
+        records();
+    }
+    if wants("scale") {
+        scale();
+    }
+}

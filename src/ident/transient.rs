@@ -1,0 +1,326 @@
+//! The initial transient of a test not at rest: x(τ) = Σ Xᵢ·φᵢ(τ), the free response of G's
+//! own poles in the Newton basis of their exponentials (see [`super::models`]'s docs), and its
+//! evaluation along a record.
+//!
+//! Along a record the basis is walked rather than evaluated afresh at each instant: for real
+//! poles φ(τ + h) = e^{ch}·φ(τ)·exp(hN) (N the Opitz matrix of the offsets, so the walk is the
+//! same divided differences, only advanced), with one matrix carried over a jittered clock's
+//! spacings by the row's own series, and a fresh exact evaluation every [`RESEED`] instants,
+//! so that rounding cannot build up. An
+//! underdamped pair is cheap in closed form at each instant.
+
+use super::models::{Model, Param};
+use crate::lti::C64;
+use crate::lti::divided::{self, Lower};
+
+/// Instants walked between two exact evaluations of the basis.
+const RESEED: usize = 256;
+
+/// The initial transient x(τ) = Σ Xᵢ·φᵢ(τ), τ from the record's first instant (see the
+/// module docs).
+#[derive(Debug, Clone)]
+pub(crate) struct Transient {
+    /// The coefficients X1… (output units).
+    coefficients: Vec<f64>,
+    modes: Modes,
+}
+
+/// The free-response basis of G's poles (no integrator).
+#[derive(Debug, Clone)]
+enum Modes {
+    /// Real poles: their centre c and offsets pᵢ − c, for the divided differences.
+    Real {
+        center: f64,
+        offsets: Vec<C64>,
+        radius: f64,
+    },
+    /// An underdamped pair σ ± jω (ω² < 0 for real poles from ζ > 1), and a third real
+    /// pole if any.
+    Pair {
+        sigma: f64,
+        omega_squared: f64,
+        third: Option<f64>,
+    },
+}
+
+impl Transient {
+    pub(crate) fn of(model: &Model) -> Option<Transient> {
+        let s = &model.structure;
+        if !s.transient {
+            return None;
+        }
+        let v = &model.values;
+        let count = s.poles as usize;
+        let coefficients = [Param::X1, Param::X2, Param::X3][..count]
+            .iter()
+            .map(|&p| v.get(p))
+            .collect();
+        let modes = if s.underdamped {
+            let (tw, zeta) = (v.get(Param::Tw), v.get(Param::Zeta));
+            Modes::Pair {
+                sigma: -zeta / tw,
+                omega_squared: (1.0 - zeta * zeta) / (tw * tw),
+                third: (s.poles == 3).then(|| -1.0 / v.get(Param::Tp3)),
+            }
+        } else {
+            let poles: Vec<f64> = [Param::Tp1, Param::Tp2, Param::Tp3][..count]
+                .iter()
+                .map(|&p| -1.0 / v.get(p))
+                .collect();
+            let center = poles.iter().sum::<f64>() / count as f64;
+            let offsets: Vec<C64> = poles.iter().map(|p| C64::new(p - center, 0.0)).collect();
+            let radius = offsets.iter().map(|d| d.norm()).fold(0.0, f64::max);
+            Modes::Real {
+                center,
+                offsets,
+                radius,
+            }
+        };
+        Some(Transient {
+            coefficients,
+            modes,
+        })
+    }
+
+    fn value(&self, tau: f64) -> f64 {
+        match &self.modes {
+            Modes::Real {
+                center,
+                offsets,
+                radius,
+            } => {
+                let row = divided::exp_last_row(offsets, *radius, tau);
+                let e = (center * tau).exp();
+                // The last entry is e^{p_m τ}; earlier ones the higher divided differences.
+                self.coefficients
+                    .iter()
+                    .zip(row.iter().rev())
+                    .map(|(x, r)| x * e * r.re)
+                    .sum()
+            }
+            Modes::Pair {
+                sigma,
+                omega_squared,
+                third,
+            } => {
+                let e = (sigma * tau).exp();
+                let (cos, sinc) = oscillation(*omega_squared, tau);
+                let mut sum = self.coefficients[0] * e * cos;
+                sum += self.coefficients.get(1).map_or(0.0, |x| x * e * sinc);
+                if let (Some(p), Some(x)) = (third, self.coefficients.get(2)) {
+                    sum += x * (p * tau).exp();
+                }
+                sum
+            }
+        }
+    }
+}
+
+/// (cos ωτ, sin(ωτ)/ω) for ω² > 0, (cosh, sinh(|ω|τ)/|ω|) for ω² < 0, (1, τ) at ω = 0.
+fn oscillation(omega_squared: f64, tau: f64) -> (f64, f64) {
+    let w = omega_squared.abs().sqrt();
+    let x = w * tau;
+    if x.abs() < 1e-4 {
+        let x2 = omega_squared * tau * tau;
+        return (1.0 - x2 / 2.0, tau * (1.0 - x2 / 6.0));
+    }
+    if omega_squared > 0.0 {
+        (x.cos(), x.sin() / w)
+    } else {
+        (x.cosh(), x.sinh() / w)
+    }
+}
+
+impl Transient {
+    /// Adds x(t − origin) to `out` at each instant of `times` (ascending; both cut to the
+    /// shorter).
+    pub(crate) fn add_to(&self, times: &[f64], origin: f64, out: &mut [f64]) {
+        match &self.modes {
+            Modes::Real {
+                center,
+                offsets,
+                radius,
+            } => {
+                let mut walk = Walk::new(*center, offsets, *radius);
+                for (o, &t) in out.iter_mut().zip(times) {
+                    *o += self.combine(walk.at(t - origin));
+                }
+            }
+            Modes::Pair { .. } => {
+                for (o, &t) in out.iter_mut().zip(times) {
+                    *o += self.value(t - origin);
+                }
+            }
+        }
+    }
+
+    /// Σ Xᵢ·φᵢ from the basis e^{cτ}·(last row of exp(τN)), whose last entry is e^{p_m τ}.
+    fn combine(&self, row: &[C64]) -> f64 {
+        self.coefficients
+            .iter()
+            .zip(row.iter().rev())
+            .map(|(x, r)| x * r.re)
+            .sum()
+    }
+}
+
+/// The real-pole basis e^{cτ}·(last row of exp(τN)) advanced from instant to instant.
+struct Walk<'a> {
+    center: f64,
+    offsets: &'a [C64],
+    radius: f64,
+    tau: f64,
+    row: Vec<C64>,
+    next: Vec<C64>,
+    /// Instants walked since the last exact evaluation.
+    walked: usize,
+    /// exp(hN) over h = `spacing`, carried to nearby spacings by the row's own series.
+    spacing: f64,
+    advance: Option<Lower>,
+}
+
+impl<'a> Walk<'a> {
+    fn new(center: f64, offsets: &'a [C64], radius: f64) -> Self {
+        Self {
+            center,
+            offsets,
+            radius,
+            tau: f64::NAN,
+            row: Vec::new(),
+            next: vec![C64::new(0.0, 0.0); offsets.len()],
+            walked: 0,
+            spacing: f64::NAN,
+            advance: None,
+        }
+    }
+
+    /// The basis at τ (not before the previous instant).
+    fn at(&mut self, tau: f64) -> &[C64] {
+        let h = tau - self.tau;
+        let walkable = h > 0.0 && self.walked < RESEED && h.is_finite();
+        if !walkable {
+            self.exact(tau);
+            return &self.row;
+        }
+        let mut delta = h - self.spacing;
+        if self.advance.is_none() || !divided::row_advance_fits(delta, self.radius) {
+            self.spacing = h;
+            delta = 0.0;
+            self.advance = Some(divided::exp_matrix(self.offsets, self.radius, h));
+        }
+        if let Some(matrix) = &self.advance {
+            matrix.row_times(&self.row, &mut self.next);
+            std::mem::swap(&mut self.row, &mut self.next);
+            if delta != 0.0 {
+                divided::advance_row(
+                    &mut self.row,
+                    &mut self.next,
+                    self.offsets,
+                    self.radius,
+                    delta,
+                );
+            }
+            let e = (self.center * h).exp();
+            self.row.iter_mut().for_each(|r| *r *= e);
+        }
+        self.tau = tau;
+        self.walked += 1;
+        &self.row
+    }
+
+    fn exact(&mut self, tau: f64) {
+        let e = (self.center * tau).exp();
+        self.row = divided::exp_last_row(self.offsets, self.radius, tau);
+        self.row.iter_mut().for_each(|r| *r *= e);
+        self.tau = tau;
+        self.walked = 0;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ident::models::{Structure, Values};
+
+    fn transient(code: &str, params: &[(Param, f64)]) -> Transient {
+        let mut s = Structure::parse(code).expect("a code");
+        s.transient = true;
+        let mut v = Values::default();
+        params.iter().for_each(|&(p, x)| v.set(p, x));
+        Transient::of(&Model::new(s, v)).expect("a transient")
+    }
+
+    /// The walk against the exact value at every instant, on a grid made as a logger makes
+    /// it (k·Ts, with its rounding), with a gap, and on jittered instants.
+    fn walk_matches_exact(x: &Transient) {
+        let mut grids: Vec<Vec<f64>> = vec![(0..3000).map(|k| 0.1 * k as f64).collect()];
+        // A logger's instants read back from text with six decimals.
+        grids.push(
+            (0..5000)
+                .map(|k| {
+                    format!("{:.6}", 0.002 * k as f64 + 100.0)
+                        .parse()
+                        .unwrap_or(0.0)
+                })
+                .collect(),
+        );
+        let mut gap: Vec<f64> = (0..400).map(|k| 0.37 * k as f64).collect();
+        gap.extend((900..1500).map(|k| 0.37 * k as f64));
+        grids.push(gap);
+        grids.push(
+            (0..700)
+                .map(|k| 0.5 * k as f64 + 0.2 * ((k * 7919) % 13) as f64 / 13.0)
+                .collect(),
+        );
+        for times in grids {
+            let mut walked = vec![0.0; times.len()];
+            x.add_to(&times, -1.5, &mut walked);
+            let scale = x.coefficients.iter().map(|c| c.abs()).sum::<f64>();
+            for (k, (&t, w)) in times.iter().zip(&walked).enumerate() {
+                let exact = x.value(t + 1.5);
+                assert!((w - exact).abs() <= 1e-12 * scale, "k {k}: {w} vs {exact}");
+            }
+        }
+    }
+
+    #[test]
+    fn one_lag_walks_to_its_exponential() {
+        walk_matches_exact(&transient("P1D", &[(Param::Tp1, 40.0), (Param::X1, 2.5)]));
+    }
+
+    #[test]
+    fn two_and_three_lags_walk_exactly_even_when_they_meet() {
+        for (t1, t2, t3) in [
+            (30.0, 5.0, 1.0),
+            (10.0, 10.0 * (1.0 + 1e-9), 9.99),
+            (8.0, 8.0, 8.0),
+        ] {
+            let x = transient(
+                "P3",
+                &[
+                    (Param::Tp1, t1),
+                    (Param::Tp2, t2),
+                    (Param::Tp3, t3),
+                    (Param::X1, 1.0),
+                    (Param::X2, -0.7),
+                    (Param::X3, 0.3),
+                ],
+            );
+            walk_matches_exact(&x);
+        }
+    }
+
+    #[test]
+    fn an_underdamped_pair_is_its_closed_form() {
+        let x = transient(
+            "P2U",
+            &[
+                (Param::Tw, 3.0),
+                (Param::Zeta, 0.3),
+                (Param::X1, 1.0),
+                (Param::X2, 0.5),
+            ],
+        );
+        walk_matches_exact(&x);
+    }
+}
