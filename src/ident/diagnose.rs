@@ -22,7 +22,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::drift_evidence::read_drift;
-use super::fit::{FitData, FitError, FitOptions, FitReport, fit, search_fit};
+use super::fit::{FitData, FitError, FitOptions, FitReport, Termination, fit, search_fit};
 use super::guess::{auto_guess, features};
 use super::holdout::validates;
 use super::models::{Model, Param, Structure, Values};
@@ -831,12 +831,8 @@ fn best_pair(
     current: &FitReport,
     allowed: &[Extension],
 ) -> Option<((Extension, Extension), FitReport)> {
-    let options = FitOptions {
-        starts: 1,
-        ..FitOptions::default()
-    };
-    let mut best: Option<((Extension, Extension), FitReport)> = None;
     let paired: Vec<Extension> = PAIRED.into_iter().filter(|e| allowed.contains(e)).collect();
+    let mut jobs = Vec::new();
     for (i, &e1) in paired.iter().enumerate() {
         for &e2 in &paired[i + 1..] {
             let Some(s) = e1.apply(current.model.structure).and_then(|s| e2.apply(s)) else {
@@ -846,22 +842,114 @@ fn best_pair(
             starts.extend(fresh_starts(data, current, e2, s));
             starts.extend(warm_starts(data, current, e1));
             starts.extend(warm_starts(data, current, e2));
-            let fitted = starts
-                .into_iter()
-                .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
-                .filter(|r| r.ln_mse.is_finite() && !aliased(r))
-                .filter(|r| !beyond_record(data, &current.model, &r.model))
-                .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse));
-            if let Some(r) = fitted
-                && best.as_ref().is_none_or(|(_, b)| bic(&r) < bic(b))
-            {
-                best = Some(((e1, e2), r));
+            jobs.extend(starts.into_iter().map(|g| ((e1, e2), s, g)));
+        }
+    }
+    let (pair, r) = best_fits(data, current, &jobs)
+        .into_iter()
+        .reduce(|best, next| {
+            if bic(&next.1) < bic(&best.1) {
+                next
+            } else {
+                best
+            }
+        })?;
+    on_every_sample(data, (pair.0, r)).map(|(_, r)| (pair, r))
+}
+
+/// Each job's structure fitted from its start (one start, on the record's reduction for a
+/// long record), spread over the cores ([`super::parallel`]); for each key, in the order the
+/// keys first come, the fit with the lowest cost that is not an alias, leans on no lag
+/// beyond the record, and is finite.
+///
+/// The starts are screened first: each runs [`SCREEN_ITERATIONS`] iterations, and only the
+/// [`KEPT_PER_KEY`] lowest of each key go on to convergence (the next ones when none of
+/// those ends acceptable). Starts in the same basin agree long before they converge, and
+/// one that is far behind after the screen does not overtake the leaders.
+fn best_fits<K: Copy + PartialEq + Sync + Send>(
+    data: &FitData,
+    current: &FitReport,
+    jobs: &[(K, Structure, Values)],
+) -> Vec<(K, FitReport)> {
+    let full = FitOptions {
+        starts: 1,
+        ..FitOptions::default()
+    };
+    let screen = FitOptions {
+        max_iterations: SCREEN_ITERATIONS,
+        ..full
+    };
+    let fit_with = |options: &FitOptions, s: Structure, g: Values| {
+        search_fit(data, s, g, options, &mut ())
+            .ok()
+            .filter(|r| r.ln_mse.is_finite())
+    };
+    let screened = super::parallel::map(jobs, |&(_, s, g)| fit_with(&screen, s, g));
+    let acceptable = |r: &FitReport| !aliased(r) && !beyond_record(data, &current.model, &r.model);
+    let mut keys: Vec<K> = Vec::new();
+    jobs.iter().for_each(|(k, _, _)| {
+        if !keys.contains(k) {
+            keys.push(*k);
+        }
+    });
+    // Per key, its screened fits from the lowest cost.
+    let mut queues: Vec<Vec<FitReport>> = keys
+        .iter()
+        .map(|key| {
+            let mut q: Vec<FitReport> = jobs
+                .iter()
+                .zip(&screened)
+                .filter(|((k, _, _), _)| k == key)
+                .filter_map(|(_, r)| r.clone())
+                .collect();
+            q.sort_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse));
+            q.reverse();
+            q
+        })
+        .collect();
+    let mut best: Vec<Option<FitReport>> = vec![None; keys.len()];
+    loop {
+        let round: Vec<(usize, FitReport)> = queues
+            .iter_mut()
+            .enumerate()
+            .filter(|(i, _)| best[*i].is_none())
+            .flat_map(|(i, q)| {
+                let take = q.len().min(KEPT_PER_KEY);
+                q.split_off(q.len() - take)
+                    .into_iter()
+                    .rev()
+                    .map(move |r| (i, r))
+            })
+            .collect();
+        if round.is_empty() {
+            break;
+        }
+        let finished = super::parallel::map(&round, |(_, r)| {
+            if r.termination == Termination::IterationLimit {
+                fit_with(&full, r.model.structure, r.model.values)
+            } else {
+                Some(r.clone())
+            }
+        });
+        for ((i, _), r) in round.iter().zip(finished) {
+            let Some(r) = r.filter(|r| acceptable(r)) else {
+                continue;
+            };
+            if best[*i].as_ref().is_none_or(|b| r.ln_mse < b.ln_mse) {
+                best[*i] = Some(r);
             }
         }
     }
-    let (pair, r) = best?;
-    on_every_sample(data, (pair.0, r)).map(|(_, r)| (pair, r))
+    keys.into_iter()
+        .zip(best)
+        .filter_map(|(k, r)| Some((k, r?)))
+        .collect()
 }
+
+/// Iterations every start of a candidate runs before the leaders are picked ([`best_fits`]).
+const SCREEN_ITERATIONS: usize = 8;
+/// Screened starts of each candidate taken on to convergence at a time ([`best_fits`]).
+const KEPT_PER_KEY: usize = 2;
 
 fn aliased(r: &FitReport) -> bool {
     r.warnings
@@ -905,17 +993,21 @@ fn candidates(
     current: &FitReport,
     allowed: &[Extension],
 ) -> Vec<(Extension, FitReport)> {
-    allowed
+    let jobs: Vec<(Extension, Structure, Values)> = allowed
         .iter()
-        .filter_map(|&e| {
-            let s = e.apply(current.model.structure)?;
-            let r = refit(data, current, e, s)?;
-            let shown = match e {
-                Extension::Underdamped => oscillates(&r),
-                Extension::Drift => drift_shown(data, &current.model, &r),
-                _ => true,
-            };
-            shown.then_some((e, r))
+        .filter_map(|&e| Some((e, e.apply(current.model.structure)?)))
+        .flat_map(|(e, s)| {
+            starts(data, current, e, s)
+                .into_iter()
+                .map(move |g| (e, s, g))
+        })
+        .collect();
+    best_fits(data, current, &jobs)
+        .into_iter()
+        .filter(|(e, r)| match e {
+            Extension::Underdamped => oscillates(r),
+            Extension::Drift => drift_shown(data, &current.model, r),
+            _ => true,
         })
         .filter(|(_, r)| bic(r).is_finite())
         .collect()
@@ -962,26 +1054,12 @@ fn full_fit(data: &FitData, r: FitReport) -> Option<FitReport> {
     fit(data, r.model.structure, r.model.values, &options, &mut ()).ok()
 }
 
-/// Fits the extended structure from a few warm starts and its automatic guess; the best
-/// result that is not an alias.
-fn refit(
-    data: &FitData,
-    current: &FitReport,
-    extension: Extension,
-    s: Structure,
-) -> Option<FitReport> {
-    let options = FitOptions {
-        starts: 1,
-        ..FitOptions::default()
-    };
+/// The starts of an extension: a few warm ones from the current fit, and the extended
+/// structure's automatic guess.
+fn starts(data: &FitData, current: &FitReport, extension: Extension, s: Structure) -> Vec<Values> {
     let mut starts = warm_starts(data, current, extension);
     starts.extend(fresh_starts(data, current, extension, s));
     starts
-        .into_iter()
-        .filter_map(|g| search_fit(data, s, g, &options, &mut ()).ok())
-        .filter(|r| !aliased(r) && !beyond_record(data, &current.model, &r.model))
-        .filter(|r| r.ln_mse.is_finite())
-        .min_by(|a, b| a.ln_mse.total_cmp(&b.ln_mse))
 }
 
 /// The slowest time constant of `model` (s): its poles' ([`time_constants`]: a pair's Tw,

@@ -16,6 +16,7 @@ pub mod holdout;
 pub mod lag_pair;
 pub mod landscape;
 pub mod models;
+mod parallel;
 pub mod per_step;
 pub mod prbs;
 pub mod prepare;

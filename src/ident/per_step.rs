@@ -106,14 +106,19 @@ pub fn fit_change(
 }
 
 /// Every change of `data` fitted on its own window with `structure`'s process model (see
-/// the module docs); empty for a record with one change (the joint fit is that change's).
+/// the module docs), the changes spread over the cores; empty for a record with one change
+/// (the joint fit is that change's).
 pub fn per_step_fits(data: &FitData, structure: Structure, options: &FitOptions) -> Vec<StepFit> {
     if !data.input.is_multi_step() {
         return Vec::new();
     }
-    (0..data.input.changes.len())
-        .filter_map(|k| fit_change(data, k, structure, options, &mut ()))
-        .collect()
+    let changes: Vec<usize> = (0..data.input.changes.len()).collect();
+    super::parallel::map(&changes, |&k| {
+        fit_change(data, k, structure, options, &mut ())
+    })
+    .into_iter()
+    .flatten()
+    .collect()
 }
 
 /// The process parameters compared step by step: gain, time constants, damping, zero, dead

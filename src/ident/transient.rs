@@ -4,14 +4,14 @@
 //!
 //! Along a record the basis is walked rather than evaluated afresh at each instant: for real
 //! poles φ(τ + h) = e^{ch}·φ(τ)·exp(hN) (N the Opitz matrix of the offsets, so the walk is the
-//! same divided differences, only advanced), with one matrix carried over a jittered clock's
-//! spacings by the row's own series, and a fresh exact evaluation every [`RESEED`] instants,
-//! so that rounding cannot build up. An
+//! same divided differences, only advanced: [`RowAdvance`] keeps the matrices of the clock's
+//! spacings), with a fresh exact evaluation every [`RESEED`] instants, so that rounding
+//! cannot build up. An
 //! underdamped pair is cheap in closed form at each instant.
 
 use super::models::{Model, Param};
 use crate::lti::C64;
-use crate::lti::divided::{self, Lower};
+use crate::lti::divided::{self, RowAdvance};
 
 /// Instants walked between two exact evaluations of the basis.
 const RESEED: usize = 256;
@@ -171,12 +171,9 @@ struct Walk<'a> {
     radius: f64,
     tau: f64,
     row: Vec<C64>,
-    next: Vec<C64>,
     /// Instants walked since the last exact evaluation.
     walked: usize,
-    /// exp(hN) over h = `spacing`, carried to nearby spacings by the row's own series.
-    spacing: f64,
-    advance: Option<Lower>,
+    advance: RowAdvance,
 }
 
 impl<'a> Walk<'a> {
@@ -187,42 +184,21 @@ impl<'a> Walk<'a> {
             radius,
             tau: f64::NAN,
             row: Vec::new(),
-            next: vec![C64::new(0.0, 0.0); offsets.len()],
             walked: 0,
-            spacing: f64::NAN,
-            advance: None,
+            advance: RowAdvance::new(offsets, radius),
         }
     }
 
     /// The basis at τ (not before the previous instant).
     fn at(&mut self, tau: f64) -> &[C64] {
         let h = tau - self.tau;
-        let walkable = h > 0.0 && self.walked < RESEED && h.is_finite();
-        if !walkable {
+        if !(h > 0.0 && h.is_finite() && self.walked < RESEED) {
             self.exact(tau);
             return &self.row;
         }
-        let mut delta = h - self.spacing;
-        if self.advance.is_none() || !divided::row_advance_fits(delta, self.radius) {
-            self.spacing = h;
-            delta = 0.0;
-            self.advance = Some(divided::exp_matrix(self.offsets, self.radius, h));
-        }
-        if let Some(matrix) = &self.advance {
-            matrix.row_times(&self.row, &mut self.next);
-            std::mem::swap(&mut self.row, &mut self.next);
-            if delta != 0.0 {
-                divided::advance_row(
-                    &mut self.row,
-                    &mut self.next,
-                    self.offsets,
-                    self.radius,
-                    delta,
-                );
-            }
-            let e = (self.center * h).exp();
-            self.row.iter_mut().for_each(|r| *r *= e);
-        }
+        self.advance.advance(&mut self.row, h);
+        let e = (self.center * h).exp();
+        self.row.iter_mut().for_each(|r| *r *= e);
         self.tau = tau;
         self.walked += 1;
         &self.row

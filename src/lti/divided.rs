@@ -112,24 +112,12 @@ impl Lower {
     }
 }
 
-/// row ← row·exp(δ·N), N = diag(d) + subdiagonal of ones, |d| ≤ `radius`, by the Taylor
-/// series on the row (each term a bidiagonal product, O(m)), for |δ|·radius ≤ [`SCALED_NORM`] (the nilpotent
-/// part ends by itself after m terms): what carries an advance cached over h to one over
-/// h + δ, exp((h + δ)N) = exp(hN)·exp(δN). `term` is scratch of the row's length.
-pub fn advance_row(row: &mut [C64], term: &mut [C64], d: &[C64], radius: f64, delta: f64) {
-    if delta == 0.0 {
-        return;
-    }
-    // ‖row·(δN)ⁿ/n!‖ ≤ ‖row‖·aⁿ/n!, a = |δ|·‖N‖₁ ≤ |δ|·(radius + 1): the series stops where
-    // that bound is under 1e-18 (a clock's rounding: one term), and never later than
-    // [`exp_last_row`]'s own count.
-    let a = delta.abs() * (radius + 1.0);
-    let mut bound = 1.0;
-    let mut count = 0;
-    while bound > 1e-18 && count < terms(row.len()) {
-        count += 1;
-        bound *= a / count as f64;
-    }
+/// row ← row·(Σ_{n ≤ count} (δN)ⁿ/n!), N = diag(d) + subdiagonal of ones: the Taylor series
+/// of exp(δN) on the row (each term a bidiagonal product, O(m)), which carries an advance
+/// kept over h to one over h + δ, exp((h + δ)N) = exp(hN)·exp(δN), with the terms
+/// [`advance_terms`] counts for |δ|·max|d| ≤ [`SCALED_NORM`]. `term` is scratch of the
+/// row's length.
+fn carry(row: &mut [C64], term: &mut [C64], d: &[C64], delta: f64, count: usize) {
     term.copy_from_slice(row);
     for n in 1..=count {
         let h = delta / n as f64;
@@ -139,6 +127,109 @@ pub fn advance_row(row: &mut [C64], term: &mut [C64], d: &[C64], radius: f64, de
         }
         row.iter_mut().zip(term.iter()).for_each(|(r, t)| *r += t);
     }
+}
+
+/// Spacings whose exp(hN) a [`RowAdvance`] keeps.
+const KEPT_SPACINGS: usize = 4;
+/// Terms of the row series past which a [`RowAdvance`] with room keeps the new spacing's own
+/// matrix (a term costs a few products, a matrix hundreds).
+const CARRY_TERMS: usize = 4;
+
+/// The advance of a row vector over spacings h, row ← row·exp(hN) (N = diag(d) + subdiagonal
+/// of ones): exp(hN) kept for the last few distinct spacings, and a spacing near a kept one
+/// carried by the row's own series ([`carry`]), so that a uniform clock costs one
+/// matrix, and a jittered one (a logger's irregular instants) a handful.
+#[derive(Debug, Clone)]
+pub struct RowAdvance {
+    d: Vec<C64>,
+    radius: f64,
+    kept: Vec<(f64, Lower)>,
+    oldest: usize,
+    term: Vec<C64>,
+    next: Vec<C64>,
+}
+
+impl RowAdvance {
+    /// For nodes `d` within `radius` of the centre.
+    pub fn new(d: &[C64], radius: f64) -> Self {
+        Self {
+            d: d.to_vec(),
+            radius,
+            kept: Vec::with_capacity(KEPT_SPACINGS),
+            oldest: 0,
+            term: vec![ZERO; d.len()],
+            next: vec![ZERO; d.len()],
+        }
+    }
+
+    /// row ← row·exp(h·N).
+    pub fn advance(&mut self, row: &mut [C64], h: f64) {
+        let m = row.len();
+        let nearest = self
+            .kept
+            .iter()
+            .enumerate()
+            .map(|(k, (kept, _))| (k, h - kept))
+            .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+            .filter(|(_, delta)| row_advance_fits(*delta, self.radius))
+            .map(|(k, delta)| (k, delta, advance_terms(m, self.radius, delta)));
+        // A new spacing gets its own matrix while there is room, or when none kept reaches.
+        let room = self.kept.len() < KEPT_SPACINGS;
+        let (k, delta, count) = match nearest {
+            Some(near) if near.2 <= CARRY_TERMS || !room => near,
+            _ => (self.keep(h), 0.0, 0),
+        };
+        self.kept[k].1.row_times(row, &mut self.next);
+        row.copy_from_slice(&self.next);
+        carry(row, &mut self.term, &self.d, delta, count);
+    }
+
+    /// Keeps exp(hN) in place of the oldest kept spacing: its index.
+    fn keep(&mut self, h: f64) -> usize {
+        let matrix = exp_matrix(&self.d, self.radius, h);
+        if self.kept.len() < KEPT_SPACINGS {
+            self.kept.push((h, matrix));
+            return self.kept.len() - 1;
+        }
+        let k = self.oldest;
+        self.kept[k] = (h, matrix);
+        self.oldest = (k + 1) % KEPT_SPACINGS;
+        k
+    }
+}
+
+/// Terms of [`carry`]'s series for `m` nodes within `radius`: where the bound of the
+/// n-th term falls under 1e-18 (relative to the row). N = D + L, D diagonal (|d| ≤ radius), L
+/// the subdiagonal of ones: a product of n factors with k of L's shifts every entry k places,
+/// so only k < m survive, and ‖(δN)ⁿ/n!‖ ≤ Σ_{k<m} (|δ|·radius)^{n−k}/(n−k)! · |δ|^k/k!. Past
+/// n = m − 1 each bound is at most |δ|·radius ≤ 1/2 of the one before, so the rest of the
+/// series is under the last. A clock's rounding needs no term; a jitter of a tenth of the
+/// spacing a handful.
+fn advance_terms(m: usize, radius: f64, delta: f64) -> usize {
+    let (u, v) = (delta.abs() * radius, delta.abs());
+    if m == 0 || (u + v) < 1e-16 {
+        return 0;
+    }
+    // q[k] = v^k/k! (k < m) and p[i] = u^i/i!, built as n grows (m ≤ 31: on the stack).
+    let mut q = [0.0; 32];
+    let mut p = [0.0; 64];
+    if m > q.len() || terms(m) >= p.len() {
+        return terms(m);
+    }
+    let last = terms(m);
+    q[0] = 1.0;
+    p[0] = 1.0;
+    for k in 1..m {
+        q[k] = q[k - 1] * v / k as f64;
+    }
+    for n in 1..=last {
+        p[n] = p[n - 1] * u / n as f64;
+        let bound: f64 = (0..m.min(n + 1)).map(|k| p[n - k] * q[k]).sum();
+        if n + 1 >= m && bound <= 1e-18 {
+            return n;
+        }
+    }
+    terms(m)
 }
 
 /// Whether an advance by δ can be carried by [`advance_row`] over nodes within `radius`.
@@ -225,6 +316,40 @@ mod tests {
         let row = exp_last_row(&[c(0.0); 3], 0.0, 3.0);
         assert!((row[0].re - 4.5).abs() < 1e-15);
         assert!((row[1].re - 3.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn an_advance_carried_by_the_row_series_is_the_advance_itself() {
+        // Two advances, h then h + δ (the second carried from the first's matrix by the row
+        // series, or a new matrix), against the last row of exp((2h + δ)N): a clock's
+        // rounding, a jitter and a δ as large as the series allows, on spread and meeting
+        // nodes.
+        let nodes: [&[C64]; 3] = [
+            &[c(-0.004), c(0.004)],
+            &[c(-0.2), c(0.05), c(0.15)],
+            &[c(0.0); 3],
+        ];
+        for d in nodes {
+            let radius = d.iter().map(|x| x.norm()).fold(0.0, f64::max);
+            for (h, delta) in [
+                (2.4, 3e-16),
+                (2.4, 0.7),
+                (2.4, -1.1),
+                (10.0, 2.0),
+                (1.0, 3.0),
+            ] {
+                let mut advance = RowAdvance::new(d, radius);
+                let mut row = vec![ZERO; d.len()];
+                row[d.len() - 1] = c(1.0);
+                advance.advance(&mut row, h);
+                advance.advance(&mut row, h + delta);
+                let direct = exp_matrix(d, radius, 2.0 * h + delta).last_row();
+                for (a, b) in row.iter().zip(&direct) {
+                    let tolerance = 1e-14 * b.norm().max(1.0);
+                    assert!((a - b).norm() <= tolerance, "{d:?} {delta}: {a} vs {b}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -552,19 +552,17 @@ struct Superposition<'a> {
     /// 1/A: the clusters hold A·y; the steps give their own sizes.
     scale: f64,
     state: Vec<C64>,
-    next: Vec<C64>,
     /// b(0): what a unit step adds where it starts.
     start_row: Vec<C64>,
     /// The instant the state is at (−∞ before the first step).
     t: f64,
     /// Steps already added.
     added: usize,
-    /// The advance over `cached_h`: e^{ch} and, for a spread cluster, exp(hN).
+    /// e^{ch} over `cached_h`.
     cached_h: f64,
     cached_exp: C64,
-    cached_matrix: Option<divided::Lower>,
-    /// h − `cached_h` of the advance under way (a spread cluster's matrix carried on by it).
-    nudge: f64,
+    /// A spread cluster's exp(hN) over the spacings walked.
+    advance: Option<divided::RowAdvance>,
 }
 
 /// Relative distance within which an advance reuses the cached e^{ch} (times the exact
@@ -598,14 +596,15 @@ impl<'a> Superposition<'a> {
             delay,
             scale,
             state: vec![C64::new(0.0, 0.0); m],
-            next: vec![C64::new(0.0, 0.0); m],
             start_row,
             t: f64::NEG_INFINITY,
             added: 0,
             cached_h: f64::NAN,
             cached_exp: C64::new(1.0, 0.0),
-            cached_matrix: None,
-            nudge: 0.0,
+            advance: cluster
+                .spread
+                .as_ref()
+                .map(|s| divided::RowAdvance::new(&s.offsets, s.radius)),
         }
     }
 
@@ -639,43 +638,19 @@ impl<'a> Superposition<'a> {
     fn exponential(&mut self, h: f64) -> C64 {
         let c = self.cluster;
         let delta = h - self.cached_h;
-        if let Some(s) = &c.spread {
-            // A spread cluster keeps its matrix over nearby spacings (a jittered clock):
-            // the rest of the advance goes by the row's own series (see `advance_row`).
-            if self.cached_matrix.is_some() && divided::row_advance_fits(delta, s.radius) {
-                self.nudge = delta;
-                return self.cached_exp * small_exp(c.center * delta);
-            }
-        } else if delta.abs() <= SAME_ADVANCE * h {
+        if delta.abs() <= SAME_ADVANCE * h {
             return self.cached_exp * small_exp(c.center * delta);
         }
-        self.nudge = 0.0;
         self.cached_h = h;
-        self.cached_exp = (c.center * h).exp();
-        self.cached_matrix = c
-            .spread
-            .as_ref()
-            .map(|s| divided::exp_matrix(&s.offsets, s.radius, h));
+        self.cached_exp = exp(c.center * h);
         self.cached_exp
     }
 
     /// V ← e^{ch}·M(h)·V.
     fn propagate(&mut self, h: f64) {
         let e = self.exponential(h);
-        match &self.cached_matrix {
-            Some(matrix) => {
-                matrix.row_times(&self.state, &mut self.next);
-                std::mem::swap(&mut self.state, &mut self.next);
-                if let (Some(s), true) = (&self.cluster.spread, self.nudge != 0.0) {
-                    divided::advance_row(
-                        &mut self.state,
-                        &mut self.next,
-                        &s.offsets,
-                        s.radius,
-                        self.nudge,
-                    );
-                }
-            }
+        match &mut self.advance {
+            Some(advance) => advance.advance(&mut self.state, h),
             None if self.state.len() > 1 => {
                 // (τ + h)ʲ = Σᵢ C(j, i)·h^{j−i}·τⁱ, highest power first (in place).
                 for j in (1..self.state.len()).rev() {
@@ -709,13 +684,19 @@ impl<'a> Superposition<'a> {
 /// e^z, by its series to z³ when |z| ≤ 1e-4 (the rest under 5e-18): the correction of a
 /// cached advance to a spacing that differs by rounding or jitter.
 fn small_exp(z: C64) -> C64 {
-    if z.im == 0.0 {
-        return C64::new(z.re.exp(), 0.0);
-    }
-    if z.re.abs() + z.im.abs() > 1e-4 {
-        return z.exp();
+    if z.im == 0.0 || z.re.abs() + z.im.abs() > 1e-4 {
+        return exp(z);
     }
     C64::new(1.0, 0.0) + z * (1.0 + z * (0.5 + z / 6.0))
+}
+
+/// e^z, without a sine and cosine of 0 for a real z.
+fn exp(z: C64) -> C64 {
+    if z.im == 0.0 {
+        C64::new(z.re.exp(), 0.0)
+    } else {
+        z.exp()
+    }
 }
 
 /// [`Superposition`] for a simple pole c (its contribution q·e^{cτ}), written out: the running
