@@ -30,6 +30,7 @@ use super::residuals::{self, ResidualAnalysis};
 use super::staircase::Staircase;
 use super::stats::lag_one;
 use super::test_causes::{TestCause, TestCauseKind, handling, time_constants};
+use super::tracker::Tracker;
 
 /// An extension must lower BIC by more than this to be kept.
 pub const BIC_THRESHOLD: f64 = 10.0;
@@ -504,8 +505,19 @@ pub fn diagnose_from(
     start: FitReport,
     options: &DiagnoseOptions,
 ) -> DiagnoseReport {
+    diagnose_tracked(data, start, options, &Tracker::none())
+}
+
+/// [`diagnose_from`] reporting its progress to `tracker`, and ending early (with the chain
+/// made so far) when the tracker says it was cancelled.
+pub fn diagnose_tracked(
+    data: &FitData,
+    start: FitReport,
+    options: &DiagnoseOptions,
+    tracker: &Tracker,
+) -> DiagnoseReport {
     let handled = handling::handle(data, start, &options.fit);
-    let (mut current, mut steps, mut adequate) = run_loop(&handled, options, &EXTENSIONS);
+    let (mut current, mut steps, mut adequate) = run_loop(&handled, options, &EXTENSIONS, tracker);
     if current.model.structure.underdamped && !oscillates(&current) {
         // The pair ended overdamped (ζ ≥ 1 within its interval, once the other extensions
         // took their part): it is two real poles, and the chain is made again without the
@@ -514,7 +526,7 @@ pub fn diagnose_from(
             .into_iter()
             .filter(|e| *e != Extension::Underdamped)
             .collect();
-        (current, steps, adequate) = run_loop(&handled, options, &real);
+        (current, steps, adequate) = run_loop(&handled, options, &real, tracker);
     }
     let mut test_causes = handled.causes.clone();
     let current = handling::finish(&handled, current, adequate, &mut test_causes);
@@ -540,12 +552,17 @@ fn run_loop(
     handled: &handling::Handled,
     options: &DiagnoseOptions,
     allowed: &[Extension],
+    tracker: &Tracker,
 ) -> (FitReport, Vec<Step>, bool) {
     let mut current = handled.start.clone();
     let mut steps = Vec::new();
     let mut allowed = allowed.to_vec();
-    for _ in 0..options.max_steps {
-        let Some(step) = next_step_with(&handled.data, &current, &allowed) else {
+    for k in 0..options.max_steps {
+        if tracker.cancelled() {
+            break;
+        }
+        tracker.extension(k + 1);
+        let Some(step) = next_step_with(&handled.data, &current, &allowed, tracker) else {
             return (current, steps, true);
         };
         current = step.step.fit.clone();
@@ -623,7 +640,7 @@ fn refit_without(data: &FitData, current: &FitReport, s: Structure) -> Option<Fi
 /// tried ([`best_pair`]: P1 → P2Z, P1 → P2D, …), and a pair that pays is one step naming
 /// both causes.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
-    next_step_with(data, current, &EXTENSIONS).map(|c| c.step)
+    next_step_with(data, current, &EXTENSIONS, &Tracker::none()).map(|c| c.step)
 }
 
 /// A step of the loop with the extension it made.
@@ -633,8 +650,13 @@ struct Chosen {
 }
 
 /// [`next_step`] with only the extensions `allowed`.
-fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) -> Option<Chosen> {
-    let candidates = candidates(data, current, allowed);
+fn next_step_with(
+    data: &FitData,
+    current: &FitReport,
+    allowed: &[Extension],
+    tracker: &Tracker,
+) -> Option<Chosen> {
+    let candidates = candidates(data, current, allowed, tracker);
     let lowest = |list: Vec<&(Extension, FitReport)>| {
         list.into_iter()
             .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
@@ -680,14 +702,14 @@ fn next_step_with(data: &FitData, current: &FitReport, allowed: &[Extension]) ->
             pays(data, current, c)
                 || (far && *e != Extension::FreeOffset && plainly_pays(current, c))
         });
-    let single = single.map(|w| look_ahead(data, current, allowed, w));
+    let single = single.map(|w| look_ahead(data, current, allowed, w, tracker));
     let (extension, paired, candidate) = match single {
         Some(chosen) => chosen,
         None => {
             if !far && !leader_plainly {
                 return None;
             }
-            let ((mut e1, mut e2), c) = best_pair(data, current, allowed)?;
+            let ((mut e1, mut e2), c) = best_pair(data, current, allowed, tracker)?;
             if !pays(data, current, &c) || !validates(data, current, &c) {
                 return None;
             }
@@ -755,11 +777,12 @@ fn look_ahead(
     current: &FitReport,
     allowed: &[Extension],
     (e, c): (Extension, FitReport),
+    tracker: &Tracker,
 ) -> (Extension, Option<Cause>, FitReport) {
     if !STAND_INS.contains(&e) || !far_from_white(data, current) {
         return (e, None, c);
     }
-    let Some(((mut e1, mut e2), pair)) = best_pair(data, current, allowed) else {
+    let Some(((mut e1, mut e2), pair)) = best_pair(data, current, allowed, tracker) else {
         return (e, None, c);
     };
     let better = judged_change(data, &c, &pair) < -BIC_THRESHOLD;
@@ -830,6 +853,7 @@ fn best_pair(
     data: &FitData,
     current: &FitReport,
     allowed: &[Extension],
+    tracker: &Tracker,
 ) -> Option<((Extension, Extension), FitReport)> {
     let paired: Vec<Extension> = PAIRED.into_iter().filter(|e| allowed.contains(e)).collect();
     let mut jobs = Vec::new();
@@ -845,7 +869,7 @@ fn best_pair(
             jobs.extend(starts.into_iter().map(|g| ((e1, e2), s, g)));
         }
     }
-    let (pair, r) = best_fits(data, current, &jobs)
+    let (pair, r) = best_fits(data, current, &jobs, tracker)
         .into_iter()
         .reduce(|best, next| {
             if bic(&next.1) < bic(&best.1) {
@@ -870,6 +894,7 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
     data: &FitData,
     current: &FitReport,
     jobs: &[(K, Structure, Values)],
+    tracker: &Tracker,
 ) -> Vec<(K, FitReport)> {
     let full = FitOptions {
         starts: 1,
@@ -880,9 +905,12 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         ..full
     };
     let fit_with = |options: &FitOptions, s: Structure, g: Values| {
-        search_fit(data, s, g, options, &mut ())
-            .ok()
-            .filter(|r| r.ln_mse.is_finite())
+        if tracker.cancelled() {
+            return None;
+        }
+        let r = search_fit(data, s, g, options, &mut ());
+        tracker.fitted();
+        r.ok().filter(|r| r.ln_mse.is_finite())
     };
     let screened = super::parallel::map(jobs, |&(_, s, g)| fit_with(&screen, s, g));
     let acceptable = |r: &FitReport| !aliased(r) && !beyond_record(data, &current.model, &r.model);
@@ -979,7 +1007,7 @@ pub fn best_extension_bic(data: &FitData, current: &FitReport) -> Option<f64> {
 
 /// The extension whose refit has the lowest BIC (aliased fits excluded).
 fn best_extension(data: &FitData, current: &FitReport) -> Option<(Extension, FitReport)> {
-    candidates(data, current, &EXTENSIONS)
+    candidates(data, current, &EXTENSIONS, &Tracker::none())
         .into_iter()
         .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
         .and_then(|winner| on_every_sample(data, winner))
@@ -992,6 +1020,7 @@ fn candidates(
     data: &FitData,
     current: &FitReport,
     allowed: &[Extension],
+    tracker: &Tracker,
 ) -> Vec<(Extension, FitReport)> {
     let jobs: Vec<(Extension, Structure, Values)> = allowed
         .iter()
@@ -1002,7 +1031,7 @@ fn candidates(
                 .map(move |g| (e, s, g))
         })
         .collect();
-    best_fits(data, current, &jobs)
+    best_fits(data, current, &jobs, tracker)
         .into_iter()
         .filter(|(e, r)| match e {
             Extension::Underdamped => oscillates(r),

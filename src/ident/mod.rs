@@ -29,5 +29,6 @@ pub mod scale;
 pub mod staircase;
 pub mod stats;
 pub mod test_causes;
+pub mod tracker;
 mod transient;
 pub mod validation;

@@ -142,6 +142,10 @@ crate::phrases! {
         ),
         RunningLoop => ("Running the loop…", "Rodando o ciclo…"),
         LookingForCause => ("Looking for the leading cause…", "Procurando a causa principal…"),
+        DiagnoseProgress => (
+            "extension {} of at most {} · {} fits so far",
+            "extensão {} de no máximo {} · {} ajustes até agora"
+        ),
         RowHelp => ("Show this model's curve and residuals", "Mostra a curva e os resíduos deste modelo"),
         CopyTable => ("Copy the table", "Copiar a tabela"),
         NothingLoaded => (

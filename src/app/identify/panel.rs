@@ -653,6 +653,9 @@ fn diagnose_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<C
                 out.push(Command::CancelDiagnosis);
             }
             ui.spinner();
+            if let Some(p) = session.diagnose_progress() {
+                ui.label(words::diagnose_progress(&p, lang));
+            }
             return;
         }
         let idle = !session.is_fitting();

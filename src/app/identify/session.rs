@@ -28,6 +28,7 @@ use crate::ident::fit::{
 };
 use crate::ident::handles::{self, Handle};
 use crate::ident::models::{Model, ModelError, Param, Structure, Values};
+use crate::ident::tracker::{DiagnoseProgress, Tracker};
 use crate::lti::{StepInfo, StepInfoOptions};
 
 /// The LECI step test of the course notes (`t, y`), shipped with the app.
@@ -283,7 +284,7 @@ pub struct Session {
     pub markers: MeasuredMarkers,
     /// The chain of the diagnosis: start fit, then one step per extension.
     pub diagnosis: Option<DiagnoseReport>,
-    diagnose_job: Option<Job<(), DiagnoseOutcome>>,
+    diagnose_job: Option<Job<DiagnoseProgress, DiagnoseOutcome>>,
     /// Which model of the chain is shown (0: the start).
     pub selected_step: Option<usize>,
     pub diagnose_note: DiagnoseNote,
@@ -649,6 +650,11 @@ impl Session {
         self.diagnose_job.is_some()
     }
 
+    /// How far the running diagnosis has gone, once it has said.
+    pub fn diagnose_progress(&self) -> Option<DiagnoseProgress> {
+        self.diagnose_job.as_ref().and_then(|j| j.progress)
+    }
+
     pub fn is_fitting(&self) -> bool {
         self.job.is_some()
     }
@@ -950,9 +956,10 @@ impl Session {
         );
     }
 
-    /// Stops waiting for a diagnosis (what it finds is not used).
+    /// Stops a diagnosis (it ends at its next fit; what it found is not used).
     fn cancel_diagnosis(&mut self) {
-        if self.diagnose_job.take().is_some() {
+        if let Some(job) = self.diagnose_job.take() {
+            job.cancel();
             self.diagnose_note = DiagnoseNote::Cancelled;
         }
     }
@@ -976,9 +983,13 @@ impl Session {
         } else {
             DiagnoseNote::LookingForCause
         };
-        self.diagnose_job = Some(Job::spawn(self.waker.clone(), move |_| {
+        self.diagnose_job = Some(Job::spawn(self.waker.clone(), move |ctx| {
             if whole {
-                let chain = diagnose::diagnose_from(&data, report, &DiagnoseOptions::default());
+                let options = DiagnoseOptions::default();
+                let send = |p: DiagnoseProgress| ctx.report(p);
+                let stop = || ctx.cancelled();
+                let tracker = Tracker::new(Some(&send), Some(&stop), options.max_steps);
+                let chain = diagnose::diagnose_tracked(&data, report, &options, &tracker);
                 DiagnoseOutcome::Loop(Box::new(chain))
             } else {
                 DiagnoseOutcome::Step(diagnose::next_step(&data, &report).map(Box::new))

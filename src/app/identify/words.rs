@@ -10,6 +10,7 @@ use crate::ident::experiment::ExperimentError;
 use crate::ident::fit::{FitReport, FitWarning, Method, Termination};
 use crate::ident::handles::Handle;
 use crate::ident::models::{Model, Param};
+use crate::ident::tracker::DiagnoseProgress;
 use crate::text::identify::Phrase;
 use crate::text::{Lang, Localize};
 
@@ -184,6 +185,18 @@ pub fn diagnose_note(note: &DiagnoseNote, lang: Lang) -> String {
         DiagnoseNote::Adequate => format!("none: {}", Cause::None.text(lang)),
         DiagnoseNote::Cancelled => Phrase::DiagnosisCancelled.get(lang).to_string(),
     }
+}
+
+/// How far a running diagnosis has gone: the extension it looks for and the fits made.
+pub fn diagnose_progress(p: &DiagnoseProgress, lang: Lang) -> String {
+    Phrase::DiagnoseProgress.with(
+        lang,
+        &[
+            p.extension.to_string(),
+            p.max_steps.to_string(),
+            p.fits.to_string(),
+        ],
+    )
 }
 
 /// The static gain line of a diagnosis, with what the record does not separate it from.
