@@ -6,10 +6,10 @@
 //!   ≤ 25).
 //! - **scale**: a P1D process (Kp 2, Tp1 8 s, Td 3 s, Y0 5) driven by a measured input
 //!   stepping 0 → 1 → 1.5 (at 20 s and 110 s of a 200 s record), Gaussian noise σ = 0.01, at
-//!   10³, 10⁴, 10⁵ and 10⁶ samples: the default P1D fit and the diagnosis against scipy's
-//!   single-start `least_squares` (`benches/scipy_p1d.py`, best of 3 in-process, when python3
-//!   with numpy and scipy is there). Targets: the fit within 1.5× scipy, the diagnosis
-//!   within 10×.
+//!   10³, 10⁴, 10⁵ and 10⁶ samples: the default P1D fit (16 starts; and from one start) and
+//!   the diagnosis against scipy's single-start `least_squares` (`benches/scipy_p1d.py`, best
+//!   of 3 in-process, when python3 with numpy and scipy is there). Targets: the fit within
+//!   1.5× scipy, the diagnosis within 10×.
 //!
 //! Run: `cargo bench --bench speed` (both), or `-- records`, `-- scale`. Plain timing
 //! (`Instant`), not criterion: each figure is a whole fit or diagnosis of seconds, and the
@@ -247,7 +247,7 @@ fn scale_record(n: usize) -> FitData {
 
 fn scale() {
     eprintln!(
-        "samples | P1D fit (s) | diagnosis (s) | scipy one start (s) | fit/scipy (≤ 1.5) | diagnosis/scipy (≤ 10)"
+        "samples | P1D fit, 16 starts (s) | one start (s) | diagnosis (s) | scipy one start (s) | fit/scipy (≤ 1.5) | one start/scipy | diagnosis/scipy (≤ 10)"
     );
     let p1d = Structure::parse("P1D").expect("a code");
     let p1 = Structure::parse("P1").expect("a code");
@@ -258,16 +258,26 @@ fn scale() {
         let fit = best_of(runs, || {
             degrau::ident::fit::fit(&data, p1d, guess, &FitOptions::default(), &mut ()).ok()
         });
+        let one = FitOptions {
+            starts: 1,
+            ..FitOptions::default()
+        };
+        let single = best_of(runs, || {
+            degrau::ident::fit::fit(&data, p1d, guess, &one, &mut ()).ok()
+        });
         let options = DiagnoseOptions::default();
         let diagnosis = best_of(1, || diagnose(&data, p1, None, &options).ok());
         let start = [Param::Kp, Param::Tp1, Param::Td, Param::Y0].map(|p| guess.get(p));
         match common::scipy_p1d(&data, start) {
             Some((scipy, _)) => eprintln!(
-                "{n} | {fit:.3} | {diagnosis:.3} | {scipy:.3} | {:.2} | {:.1}",
+                "{n} | {fit:.4} | {single:.4} | {diagnosis:.3} | {scipy:.4} | {:.2} | {:.2} | {:.1}",
                 fit / scipy,
+                single / scipy,
                 diagnosis / scipy
             ),
-            None => eprintln!("{n} | {fit:.3} | {diagnosis:.3} | (scipy absent) | | "),
+            None => {
+                eprintln!("{n} | {fit:.4} | {single:.4} | {diagnosis:.3} | (scipy absent) | | | ")
+            }
         }
     }
 }

@@ -684,7 +684,7 @@ impl<'a> Superposition<'a> {
 /// e^z, by its series to z³ when |z| ≤ 1e-4 (the rest under 5e-18): the correction of a
 /// cached advance to a spacing that differs by rounding or jitter.
 fn small_exp(z: C64) -> C64 {
-    if z.im == 0.0 || z.re.abs() + z.im.abs() > 1e-4 {
+    if z.re.abs() + z.im.abs() > 1e-4 {
         return exp(z);
     }
     C64::new(1.0, 0.0) + z * (1.0 + z * (0.5 + z / 6.0))
@@ -766,7 +766,7 @@ impl Advance {
             return self.exp * small_exp(self.center * delta);
         }
         self.h = h;
-        self.exp = (self.center * h).exp();
+        self.exp = exp(self.center * h);
         self.exp
     }
 }
