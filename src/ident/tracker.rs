@@ -125,7 +125,6 @@ mod tests {
         let report = |p: DiagnoseProgress| seen.lock().map(|mut s| s.push(p)).unwrap_or(());
         let tracker = Tracker::new(Some(&report), None, options.max_steps);
         let chain = diagnose_tracked(&data, start.clone(), &options, &tracker);
-        drop(tracker);
         let seen = seen.into_inner().unwrap_or_default();
         assert_eq!(
             chain.steps.first().map(|s| s.cause.id()),
@@ -156,7 +155,6 @@ mod tests {
         t.fitted();
         t.extension(2);
         assert!(t.cancelled());
-        drop(t);
         let seen = seen.into_inner().unwrap_or_default();
         assert_eq!(seen.len(), 4);
         assert_eq!(
