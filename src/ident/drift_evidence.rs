@@ -12,12 +12,17 @@
 //!   level per stretch, a common slope d (the drift: the same whatever the change), and, on
 //!   the stretches after changes, a slope c·Δu that scales with the last change's size and
 //!   sign (a slow process part, which a drift is not) when the record's changes differ
-//!   enough to tell the two apart, and a curvature q·Δu (a slow part decelerates; a drift is
-//!   a straight line);
+//!   enough to tell the two apart (kept only where it is significant, [`Z_SCALED`]), and a
+//!   curvature q·Δu (a slow part decelerates; a drift is a straight line);
 //! - the drift is shown when d is significant (|z| ≥ [`Z_DRIFT`], the standard errors
-//!   widened for the residuals' lag-one correlation), has the sign of the fitted drift, and
-//!   the curvature is not significant. With no settled stretch, or a design that cannot
-//!   tell d from c, the record does not show a drift.
+//!   widened for the residuals' lag-one correlation), has the sign and the size of the
+//!   fitted drift ([`DriftReading::shows`]), and the curvature is not significant. With no
+//!   settled stretch, or a design that cannot tell d from c (no stretch before the first
+//!   change, and the changes after which the stretches are read all of one size), the
+//!   record does not show a drift;
+//! - [`settled_slope_before`] reads the same common slope on a model's own residuals, on
+//!   the settled stretches before an instant: what a trend said to begin there (a load's
+//!   ramp, [`super::test_causes::disturbance`]) already had before it.
 //!
 //! Least squares through the normal equations of a handful of columns, accumulated sample
 //! by sample (nalgebra's Cholesky), so a record of 10⁶ samples costs one pass.
@@ -35,6 +40,16 @@ pub const Z_DRIFT: f64 = 3.0;
 /// A curvature with |z| at or above this says the settled stretches still bend: a slow
 /// part of the process, not a drift.
 pub const Z_CURVATURE: f64 = 3.0;
+
+/// The reading and a fit's drift agree in size when neither is more than this many times
+/// the other ([`DriftReading::shows`]): a trend several times the fitted drift is not that
+/// drift.
+pub const DRIFT_AGREEMENT: f64 = 2.0;
+
+/// The slope scaling with the changes is kept in the reading only when its |z| reaches
+/// this (the usual two-sided 95 % level): a slow part of the process the settled stretches
+/// do not show is no reason to widen the drift's standard error.
+pub const Z_SCALED: f64 = 2.0;
 
 /// Two changes' sizes differ enough to tell a slope that scales with Δu from a drift when
 /// they differ by this share of the larger.
@@ -63,14 +78,38 @@ pub struct DriftReading {
 
 impl DriftReading {
     /// Whether the reading shows the drift `drift` (units per second) a fit found: a slope
-    /// significant, of its sign and within [`Z_DRIFT`] standard errors of it (the trend of a
-    /// few samples before the first change, several times the fitted drift, is a test not
-    /// quite at rest, not the drift the whole record is charged with), in a straight line.
+    /// significant, of its sign and of its size (the trend of a few samples before the first
+    /// change, several times the fitted drift, is a test not quite at rest, not the drift the
+    /// whole record is charged with), in a straight line.
+    ///
+    /// Of its size: within [`Z_DRIFT`] standard errors of it, or within a factor of
+    /// [`DRIFT_AGREEMENT`] of it. The fit's drift carries what the rest of its model gets
+    /// wrong (a Y0 held at the mean before the change, which a drift lifts or lowers, is
+    /// matched by tilting the drift), while the reading gives each stretch its own level; on
+    /// a quiet record the standard error is far smaller than that bias, and the same drift
+    /// read two ways would not agree to within it.
     pub fn shows(&self, drift: f64) -> bool {
         self.z.abs() >= Z_DRIFT
             && self.slope.signum() == drift.signum()
-            && (self.slope - drift).abs() <= Z_DRIFT * self.se
+            && self.agrees(drift)
             && self.curvature_z.abs() < Z_CURVATURE
+    }
+
+    /// Whether the reading goes on with the drift `drift` without showing it on its own: a
+    /// slope of its sign within a factor of [`DRIFT_AGREEMENT`] of its size (nearer the
+    /// drift than no slope at all), in a straight line, whatever its significance (a few
+    /// short stretches after the changes, coloured noise).
+    pub fn continues(&self, drift: f64) -> bool {
+        (1.0 / DRIFT_AGREEMENT..=DRIFT_AGREEMENT).contains(&(self.slope / drift))
+            && self.curvature_z.abs() < Z_CURVATURE
+    }
+
+    /// The slope within [`Z_DRIFT`] standard errors of `drift`, or within a factor of
+    /// [`DRIFT_AGREEMENT`] of it.
+    fn agrees(&self, drift: f64) -> bool {
+        let ratio = self.slope / drift;
+        (self.slope - drift).abs() <= Z_DRIFT * self.se
+            || (1.0 / DRIFT_AGREEMENT..=DRIFT_AGREEMENT).contains(&ratio)
     }
 }
 
@@ -164,12 +203,60 @@ fn read(
         return None;
     }
     let scaled = distinct_changes(&stretches, &used);
+    if before && !scaled && used.iter().all(|&s| stretches[s].du != 0.0) {
+        // Only stretches after changes of one size: a common slope there is as well a slope
+        // that scales with that change (a slow part still answering it), and nothing tells
+        // the two apart.
+        return None;
+    }
     let after: usize = members
         .iter()
         .filter(|m| used.contains(&m.1) && stretches[m.1].du != 0.0)
         .count();
-    let design = Design::new(data, &stretches, &used, scaled, after >= 2 * MIN_STRETCH);
-    design.solve(&data.times, &members, &r, &stretches)
+    let curved = after >= 2 * MIN_STRETCH;
+    let design = Design::new(data, &stretches, &used, scaled, curved);
+    let (reading, scaled_z) = design.solve(&data.times, &members, &r, &stretches)?;
+    if scaled_z.is_some_and(|z| z.abs() < Z_SCALED) {
+        // No slope scaling with the changes is shown: the stretches' slopes are read as the
+        // common one alone, which the nuisance column would only blur.
+        let design = Design::new(data, &stretches, &used, false, curved);
+        return design
+            .solve(&data.times, &members, &r, &stretches)
+            .map(|(reading, _)| reading);
+    }
+    Some(reading)
+}
+
+/// The common slope of `residuals` (of `model` on `data`) on the stretches where `model`
+/// does not move ([`settled_stretches`]) before the instant `until`, each stretch with its
+/// own level: what was already there before a trend said to start at `until` (a load's
+/// ramp begins where the output was steady; a drift's line was there all along). `None`
+/// when those stretches hold too few samples to tell.
+pub fn settled_slope_before(
+    data: &FitData,
+    model: &Model,
+    residuals: &[f64],
+    until: f64,
+) -> Option<DriftReading> {
+    let stretches: Vec<Stretch> = settled_stretches(&[model], data)
+        .into_iter()
+        .filter(|s| s.start < until)
+        .map(|s| Stretch {
+            end: s.end.min(until),
+            ..s
+        })
+        .collect();
+    let members = members(data, &stretches);
+    let used: Vec<usize> = (0..stretches.len())
+        .filter(|&s| members.iter().filter(|m| m.1 == s).count() >= MIN_STRETCH)
+        .collect();
+    if used.is_empty() || residuals.len() != data.times.len() {
+        return None;
+    }
+    let design = Design::new(data, &stretches, &used, false, false);
+    design
+        .solve(&data.times, &members, residuals, &stretches)
+        .map(|(reading, _)| reading)
 }
 
 /// Each sample inside a stretch: (sample index, stretch index).
@@ -262,13 +349,14 @@ impl Design {
         true
     }
 
+    /// The reading, and the t statistic of the slope scaled by the changes when read.
     fn solve(
         &self,
         times: &[f64],
         members: &[(usize, usize)],
         r: &[f64],
         stretches: &[Stretch],
-    ) -> Option<DriftReading> {
+    ) -> Option<(DriftReading, Option<f64>)> {
         let p = self.columns();
         let du_unit = stretches
             .iter()
@@ -318,7 +406,7 @@ impl Design {
         };
         let d = self.levels;
         let curvature = self.levels + 1 + usize::from(self.scaled);
-        Some(DriftReading {
+        let reading = DriftReading {
             slope: beta[d] * r_unit / self.unit,
             z: z(d),
             se: se(d) * r_unit / self.unit,
@@ -326,7 +414,8 @@ impl Design {
             samples: n,
             stretches: self.levels,
             scaled_slope: self.scaled,
-        })
+        };
+        Some((reading, self.scaled.then(|| z(d + 1))))
     }
 }
 
@@ -465,5 +554,95 @@ mod tests {
                 .iter()
                 .all(|s| s.start < 399.0)
         );
+    }
+
+    #[test]
+    fn a_quiet_drift_the_held_y0_tilts_is_still_shown() {
+        // Y0 held at the mean before the change, as the CLI holds it: with a drift that mean
+        // sits half the stretch's drift above the level at the change, and the fit tilts its
+        // drift to make up for it. On a quiet record the reading is many standard errors from
+        // the tilted drift, yet the same size: the same drift.
+        let mut truth = model(
+            "P1",
+            &[
+                (Param::Kp, 1.5),
+                (Param::Tp1, 15.0),
+                (Param::Y0, 200.0),
+                (Param::Drift, 0.01),
+            ],
+        );
+        truth.structure.drift = true;
+        let data = record(&truth, &[(60.0, 40.0)], 400, 0.01);
+        let before = data.times.iter().filter(|t| **t < 60.0).count();
+        let mut s = Structure::parse("P1").expect("code");
+        s.free_offset = false;
+        let mut v = truth.values;
+        v.set(
+            Param::Y0,
+            data.y[..before].iter().sum::<f64>() / before as f64,
+        );
+        let options = FitOptions {
+            starts: 1,
+            ..FitOptions::default()
+        };
+        let current = fit(&data, s, v, &options, &mut ()).expect("fits");
+        let mut with = s;
+        with.drift = true;
+        let mut guess = current.model.values;
+        guess.set(Param::Drift, 0.0);
+        let extended = fit(&data, with, guess, &options, &mut ()).expect("fits");
+        let drift = extended.model.get(Param::Drift);
+        let reading = read_drift(&data, &current.model, &extended).expect("stretches");
+        assert!(
+            (reading.slope - drift).abs() > Z_DRIFT * reading.se,
+            "{reading:?} {drift}"
+        );
+        assert!(reading.shows(drift), "{reading:?} {drift}");
+        assert!((reading.slope - 0.01).abs() < 0.001, "{reading:?}");
+    }
+
+    #[test]
+    fn a_slope_scaling_with_the_changes_is_read_only_where_shown() {
+        // A drift under an up-and-down pair of different sizes: nothing scales with the
+        // changes, and the common slope is read alone.
+        let mut truth = model(
+            "P1",
+            &[
+                (Param::Kp, 1.5),
+                (Param::Tp1, 10.0),
+                (Param::Y0, 200.0),
+                (Param::Drift, 0.004),
+            ],
+        );
+        truth.structure.drift = true;
+        let data = record(&truth, &[(60.0, 40.0), (200.0, 34.0)], 400, 0.05);
+        let (current, extended) = fits(&data, "P1", &truth);
+        let reading = read_drift(&data, &current.model, &extended).expect("stretches");
+        assert!(!reading.scaled_slope, "{reading:?}");
+        assert!(
+            reading.shows(extended.model.get(Param::Drift)),
+            "{reading:?}"
+        );
+    }
+
+    #[test]
+    fn the_slope_before_an_instant_is_read_on_the_settled_stretches_before_it() {
+        let truth = model(
+            "P1",
+            &[(Param::Kp, 1.5), (Param::Tp1, 10.0), (Param::Y0, 200.0)],
+        );
+        let data = record(&truth, &[(60.0, 40.0)], 400, 0.02);
+        // Residuals: a line of 0.003 per second everywhere, and a level step at the change.
+        let r: Vec<f64> = data
+            .times
+            .iter()
+            .map(|&t| 0.003 * t + if t >= 60.0 { 1.0 } else { 0.0 })
+            .collect();
+        let reading = settled_slope_before(&data, &truth, &r, 300.0).expect("stretches");
+        assert_eq!(reading.stretches, 2, "{reading:?}");
+        assert!((reading.slope - 0.003).abs() < 1e-9, "{reading:?}");
+        // Before the change alone when the instant comes before the response settles.
+        let early = settled_slope_before(&data, &truth, &r, 80.0).expect("stretches");
+        assert_eq!(early.stretches, 1, "{early:?}");
     }
 }

@@ -7,7 +7,9 @@
 //! through the whole tail (what a drift would leave) by the BIC, corrected for its own
 //! residuals' correlation (an AR(1) coefficient ρ leaves N·(1 − ρ)/(1 + ρ) independent
 //! samples, so coloured noise wandering about does not count), be flat before its instant,
-//! be significant (z above [`MIN_Z`], with the same correction), and explain the record
+//! be significant (z above [`MIN_Z`], with the same correction), for a ramp not be a slope
+//! the record already had before its instant where the model was steady (a drift's straight
+//! line, [`ramp_was_there`]), and explain the record
 //! better than any structural extension of the model (a drift, an integrator, a zero, …)
 //! would (BIC). A fit of the whole record leans towards the disturbed samples (a load of
 //! half the step's effect can double the gain and push the settling past the record's
@@ -18,6 +20,7 @@
 
 use super::{DisturbanceShape, Handling, TestCause, TestCauseKind, TestEvidence};
 use crate::ident::diagnose::{BIC_THRESHOLD, best_extension_bic};
+use crate::ident::drift_evidence::{Z_DRIFT, settled_slope_before};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
 use crate::ident::models::{Model, Param};
 use crate::ident::stats::lag_one;
@@ -200,6 +203,9 @@ fn look(data: &FitData, current: &FitReport, residuals: &[f64]) -> Option<Found>
     if z.abs() < MIN_Z || !flat(0, k) || !after_flat {
         return None;
     }
+    if shape == DisturbanceShape::Ramp && ramp_was_there(data, current, residuals, t[k], size) {
+        return None;
+    }
     let before: f64 = residuals[..first].iter().map(|r| r * r).sum();
     let (at, end) = (t[k], t[n - 1]);
     let cause = TestCause {
@@ -213,6 +219,23 @@ fn look(data: &FitData, current: &FitReport, residuals: &[f64]) -> Option<Found>
         samples: (first + k..data.times.len()).collect(),
         sse: before + sse,
     })
+}
+
+/// Whether a ramp of `size` found from the instant `at` was already there before it: the
+/// residuals slope the same way, significantly (|z| ≥ [`Z_DRIFT`], correlation-widened), on
+/// the stretches where the model does not move before `at` (before the first change, and
+/// between changes once their responses settle: [`settled_slope_before`]). A load's ramp
+/// begins at its instant where the output was steady; a drift is a straight line across the
+/// whole record, and the model's loop names it.
+fn ramp_was_there(
+    data: &FitData,
+    current: &FitReport,
+    residuals: &[f64],
+    at: f64,
+    size: f64,
+) -> bool {
+    settled_slope_before(data, &current.model, residuals, at)
+        .is_some_and(|d| d.z.abs() >= Z_DRIFT && d.slope.signum() == size.signum())
 }
 
 /// The step or hinge of `shape` from sample `k` fitted to the tail of `sums` (times `t`).
@@ -480,6 +503,37 @@ mod tests {
         let found = detect(&data, &current, &r);
         assert!(found.is_none(), "{found:?} {:?}", current.model);
         let (data, current) = record(|_| 0.0);
+        let r = current.residuals(&data).unwrap();
+        let found = detect(&data, &current, &r);
+        assert!(found.is_none(), "{found:?} {:?}", current.model);
+    }
+
+    #[test]
+    fn a_drift_already_there_before_the_change_is_no_load_ramp() {
+        // A drift over the whole record and a P1 held at the level before the change, as the
+        // CLI holds it: the fit bends its gain and lag to the drift, and what it leaves in
+        // the settled tail is flat, then a line. The same slope before the change says it
+        // was there all along.
+        let s = Structure::parse("P1").unwrap();
+        let mut v = Values::default();
+        v.set(Param::Kp, 2.0);
+        v.set(Param::Tp1, 3.0);
+        v.set(Param::Y0, 50.0);
+        let times: Vec<f64> = (0..400).map(|k| 0.25 * k as f64).collect();
+        let input = Excitation::step(20.0, 1.0);
+        let clean = Model::new(s, v).simulate(&input, &times).unwrap();
+        let mut rng = crate::ident::fit::Lcg(5);
+        let y: Vec<f64> = clean
+            .iter()
+            .zip(&times)
+            .map(|(c, t)| c + 0.005 * rng.symmetric() - 0.006 * t)
+            .collect();
+        let before = times.iter().filter(|t| **t < 20.0).count();
+        let mut held = s;
+        held.free_offset = false;
+        v.set(Param::Y0, y[..before].iter().sum::<f64>() / before as f64);
+        let data = FitData { times, y, input };
+        let current = fit(&data, held, v, &FitOptions::default(), &mut ()).unwrap();
         let r = current.residuals(&data).unwrap();
         let found = detect(&data, &current, &r);
         assert!(found.is_none(), "{found:?} {:?}", current.model);

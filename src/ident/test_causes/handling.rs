@@ -12,7 +12,8 @@ use super::{
     imperfect_step, nonlinearity, not_at_rest, outliers, quantisation, sampling, saturation,
     small_step, steps_held,
 };
-use crate::ident::drift_evidence::{DriftReading, read_drift, read_drift_after};
+use crate::ident::diagnose::bic;
+use crate::ident::drift_evidence::{read_drift, read_drift_after};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit, within_span};
 use crate::ident::guess::auto_guess;
 use crate::ident::models::{Param, Structure};
@@ -57,12 +58,13 @@ impl Kept {
 pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Handled {
     let mut causes = Vec::new();
     let mut current = start;
-    if let Some(cause) = not_at_rest(data)
-        && !drift_explains_motion(data, &current, fit_options)
-    {
-        causes.push(cause);
-        if let Some(r) = with_transient(data, &current, fit_options) {
-            current = r;
+    if let Some(cause) = not_at_rest(data) {
+        let transient = with_transient(data, &current, fit_options);
+        if !drift_explains_motion(data, &current, transient.as_ref(), fit_options) {
+            causes.push(cause);
+            if let Some(r) = transient {
+                current = r;
+            }
         }
     }
     causes.extend(FittedRecord::new(data, &current).and_then(|r| closed_loop(&r)));
@@ -222,20 +224,36 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
     Some((cause, fits))
 }
 
-/// Whether the motion before the first change is a drift rather than a test not at rest:
-/// a drift goes on after the response has settled with the same slope, in a straight line
-/// ([`read_drift`] on the current model with a drift, over the stretch before the change
-/// and the settled ones, and [`read_drift_after`] on the settled ones alone); a test not at
-/// rest is an earlier response dying out, whose slope before the change the settled
-/// stretches do not continue.
-fn drift_explains_motion(data: &FitData, current: &FitReport, options: &FitOptions) -> bool {
+/// Whether the motion before the first change is a drift rather than a test not at rest.
+///
+/// A drift is a straight line across the whole record: its slope before the change goes on,
+/// the same, on the stretches where the test's own responses have settled. A test not at
+/// rest is an earlier response dying out, the free response of the process's own poles: a
+/// curve that bends towards rest, gone by the time the test's responses settle. So the
+/// drift explains the motion when the current model with a drift term shows its drift
+/// ([`read_drift`], over the stretch before the change and the settled ones), and the
+/// settled stretches after the changes alone ([`read_drift_after`]) either show it too, or
+/// go on with its slope (its sign and size, not significant on their own: short stretches,
+/// coloured noise) while the drift explains the record better than the initial transient
+/// does (`transient`, the same model with the transient; BIC, each with its own parameters).
+fn drift_explains_motion(
+    data: &FitData,
+    current: &FitReport,
+    transient: Option<&FitReport>,
+    options: &FitOptions,
+) -> bool {
     let Some(with_drift) = with_drift(data, current, options) else {
         return false;
     };
     let drift = with_drift.model.get(Param::Drift);
-    let shown = |d: Option<DriftReading>| d.is_some_and(|d| d.shows(drift));
-    shown(read_drift(data, &current.model, &with_drift))
-        && shown(read_drift_after(data, &current.model, &with_drift))
+    if !read_drift(data, &current.model, &with_drift).is_some_and(|d| d.shows(drift)) {
+        return false;
+    }
+    let Some(after) = read_drift_after(data, &current.model, &with_drift) else {
+        return false;
+    };
+    after.shows(drift)
+        || (after.continues(drift) && transient.is_none_or(|t| bic(&with_drift) < bic(t)))
 }
 
 /// `current`'s structure with a drift term, fitted from its values (the drift from 0);
