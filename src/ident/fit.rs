@@ -654,6 +654,9 @@ type Intervals = Vec<Option<(f64, f64)>>;
 struct Direction {
     moved: Vec<f64>,
     h: f64,
+    /// Moves the operating point Y0 alone: ŷ moves by exactly h, so the residuals' column is
+    /// −1 (−√w with weights) without a simulation.
+    offset: bool,
 }
 
 /// The least-squares problem in the free parameters, on the record in internal units.
@@ -781,6 +784,16 @@ impl Problem {
         }
     }
 
+    /// The residuals' derivative along Y0 on one piece (`range`) into `out`: r = (y − ŷ)·√w
+    /// and ŷ moves one for one with Y0.
+    fn offset_column(&self, range: std::ops::Range<usize>, out: &mut [f64]) {
+        let out = &mut out[..range.len()];
+        match &self.root_weights {
+            Some(w) => out.iter_mut().zip(&w[range]).for_each(|(c, w)| *c = -w),
+            None => out.iter_mut().for_each(|c| *c = -1.0),
+        }
+    }
+
     /// The record's length: the samples, or on a reduced record the samples they stand for.
     fn samples(&self) -> usize {
         match &self.root_weights {
@@ -837,7 +850,8 @@ impl Problem {
                 let h = self.difference_step(i, x[i]);
                 let mut moved = x.to_vec();
                 moved[i] = x[i] + h;
-                Direction { moved, h }
+                let offset = self.params[i] == Param::Y0;
+                Direction { moved, h, offset }
             })
             .collect()
     }
@@ -861,7 +875,10 @@ impl Problem {
         let base = self.simulator(x).ok()?;
         let shifted_models = directions
             .iter()
-            .map(|d| self.simulator(&d.moved).ok())
+            .map(|d| match d.offset {
+                true => Some(None),
+                false => self.simulator(&d.moved).ok().map(Some),
+            })
             .collect::<Option<Vec<_>>>()?;
         let steps: Vec<f64> = directions.iter().map(|d| d.h).collect();
         let width = CHUNK.min(self.data.y.len());
@@ -879,6 +896,10 @@ impl Problem {
                 }
             };
             for ((column, s), h) in columns.iter_mut().zip(&shifted_models).zip(&steps) {
+                let Some(s) = s else {
+                    self.offset_column(range.clone(), column);
+                    continue;
+                };
                 self.piece(s, range.clone(), column);
                 for (c, base) in column[..len].iter_mut().zip(r) {
                     *c = (*c - base) / h;
@@ -1430,7 +1451,11 @@ impl Problem {
         let h = self.difference_step(i, x[i]);
         let mut moved = x.to_vec();
         (moved[i], moved[j]) = (x[i] + h, x[j] + h);
-        directions[i] = Direction { moved, h };
+        directions[i] = Direction {
+            moved,
+            h,
+            offset: false,
+        };
         let dq = lag_pair::Q_STEP * m * m + f64::EPSILON.sqrt() * q;
         let (a, b) = lag_pair::lags_of(m, q + dq);
         if b < self.lower[j] || a > self.upper[i] {
@@ -1438,7 +1463,11 @@ impl Problem {
         }
         let mut moved = x.to_vec();
         (moved[i], moved[j]) = (a, b);
-        directions[j] = Direction { moved, h: dq };
+        directions[j] = Direction {
+            moved,
+            h: dq,
+            offset: false,
+        };
         let Normal { a, .. } = self.normal_along(x, None, &directions)?;
         let inverse = inverse_scaled(&a).ok()?;
         let c = |k: usize, l: usize| s2 * inverse[(k, l)];
