@@ -257,3 +257,50 @@ fn a_gain_traded_with_another_term_is_said_under_the_chain() {
         "O registro não separa Kp de Drift (as estimativas têm correlação -0,95)",
     );
 }
+
+/// ECAM's heater pulse (30 → 70 → 30 %): both changes held under three of the process's
+/// time constants (306 s and 164 s on a lag of about 166 s). The app says so for each step,
+/// as the CLI's table marks them, and reads no hint of nonlinearity into them.
+#[test]
+fn a_step_held_under_three_time_constants_is_said_and_not_compared() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/records/ecam_tclab_Open_loop_experiment_on_MV_2022-03-01-09h52.txt"
+    );
+    let mut h = Harness::builder()
+        .with_size([1360.0, 860.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
+    h.run_steps(2);
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    let settings = &mut h.state_mut().ident.settings;
+    settings.y_col = "PV".into();
+    settings.u_col = "MV".into();
+    settings.code = "P1D".into();
+    load(&mut h, path);
+    h.get_by_label("Fit").click();
+    wait_for(&mut h, |h| h.query_by_label("joint fit").is_some());
+    wait_for(&mut h, |h| {
+        h.query_all_by_label_contains("not compared")
+            .next()
+            .is_some()
+            || h.query_all_by_label_contains("not linear").next().is_some()
+    });
+    let fits = h
+        .state()
+        .ident
+        .per_step
+        .fits
+        .clone()
+        .expect("the per-step fits");
+    assert_eq!(fits.len(), 2);
+    for (k, f) in fits.iter().enumerate() {
+        h.get_by_label(&format!(
+            "Step {} (t = {} s) was held less than 3 time constants beyond its dead time: its \
+             own values rest on the tail of the response before it, and are not compared.",
+            k + 1,
+            degrau::text::Lang::En.num(f.change.t, 5)
+        ));
+    }
+    assert!(h.query_all_by_label_contains("not linear").next().is_none());
+}

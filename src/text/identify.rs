@@ -244,6 +244,10 @@ crate::phrases! {
             "Step {} (t = {} s) gives {} = {}, beyond the joint fit's {}: beyond both 95 % intervals and what the record resolves. A first hint that the process is not linear.",
             "O degrau {} (t = {} s) dá {} = {}, além do {} do ajuste conjunto: além dos dois intervalos de 95 % e do que o registro resolve. Um primeiro indício de que o processo não é linear."
         ),
+        StepNotHeld => (
+            "Step {} (t = {} s) was held less than 3 time constants beyond its dead time: its own values rest on the tail of the response before it, and are not compared.",
+            "O degrau {} (t = {} s) foi mantido menos de 3 constantes de tempo além do seu tempo morto: os seus valores dependem da cauda da resposta anterior e não são comparados."
+        ),
         StepsAgree => (
             "Every step agrees with the joint fit, within the 95 % intervals or within what the record resolves (5 %, and a sampling period for Td): nothing here says the process is not linear.",
             "Todos os degraus concordam com o ajuste conjunto, dentro dos intervalos de 95 % ou do que o registro resolve (5 %, e um período de amostragem para Td): nada aqui indica que o processo não é linear."

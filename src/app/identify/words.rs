@@ -19,6 +19,7 @@ use super::session::{DiagnoseNote, LoadError, LoadMessage, Source, Status};
 use super::steps::{Agreement, agreement, compared_params};
 use crate::ident::excitation::InputChange;
 use crate::ident::per_step::StepFit;
+use crate::ident::test_causes::fit_held;
 
 /// A number for running text in `lang`.
 fn num(lang: Lang, x: f64, digits: i32) -> String {
@@ -414,15 +415,31 @@ pub struct PerStepTable {
     pub rows: Vec<Vec<String>>,
 }
 
-/// What a student reads under the per-step table: which values differ beyond their
-/// intervals (a first hint of nonlinearity), or that every step agrees.
+/// What a student reads under the per-step table: the steps held too briefly to compare
+/// (their own values rest on the previous response's tail, as the CLI's table marks them),
+/// then, of the others, which values differ beyond their intervals (a first hint of
+/// nonlinearity), or that every step agrees.
 pub fn agreement_lines(
     joint: &FitReport,
     fits: &[StepFit],
     instant_step: f64,
     lang: Lang,
 ) -> Vec<String> {
-    match agreement(joint, fits, instant_step) {
+    let (held, brief): (Vec<(usize, &StepFit)>, Vec<(usize, &StepFit)>) = fits
+        .iter()
+        .enumerate()
+        .partition(|(_, f)| f.fit.is_err() || fit_held(f, &joint.model));
+    let mut lines: Vec<String> = brief
+        .iter()
+        .map(|(k, f)| {
+            Phrase::StepNotHeld.with(lang, &[(k + 1).to_string(), num(lang, f.change.t, 5)])
+        })
+        .collect();
+    if held.is_empty() {
+        return lines;
+    }
+    let compared: Vec<StepFit> = held.iter().map(|(_, f)| (*f).clone()).collect();
+    lines.extend(match agreement(joint, &compared, instant_step) {
         Agreement::Agree => vec![Phrase::StepsAgree.get(lang).to_string()],
         Agreement::Unknown => vec![Phrase::StepsUnknown.get(lang).to_string()],
         Agreement::Differ(list) => list
@@ -432,7 +449,7 @@ pub fn agreement_lines(
                 Phrase::StepDiffers.with(
                     lang,
                     &[
-                        (d.step + 1).to_string(),
+                        (held[d.step].0 + 1).to_string(),
                         num(lang, d.t, 5),
                         d.param.name().to_string(),
                         num(lang, d.value, 4),
@@ -441,7 +458,8 @@ pub fn agreement_lines(
                 )
             })
             .collect(),
-    }
+    });
+    lines
 }
 
 /// The per-step job's progress: "Fitting step 2 of 4…".
