@@ -415,6 +415,9 @@ pub struct PerStepTable {
     pub rows: Vec<Vec<String>>,
 }
 
+/// A step's fit with its index among the record's changes.
+type Numbered<'a> = (usize, &'a StepFit);
+
 /// What a student reads under the per-step table: the steps held too briefly to compare
 /// (their own values rest on the previous response's tail, as the CLI's table marks them),
 /// then, of the others, which values differ beyond their intervals (a first hint of
@@ -425,7 +428,7 @@ pub fn agreement_lines(
     instant_step: f64,
     lang: Lang,
 ) -> Vec<String> {
-    let (held, brief): (Vec<(usize, &StepFit)>, Vec<(usize, &StepFit)>) = fits
+    let (held, brief): (Vec<Numbered>, Vec<Numbered>) = fits
         .iter()
         .enumerate()
         .partition(|(_, f)| f.fit.is_err() || fit_held(f, &joint.model));
