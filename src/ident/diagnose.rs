@@ -866,10 +866,18 @@ fn best_pair(
             starts.extend(fresh_starts(data, current, e2, s));
             starts.extend(warm_starts(data, current, e1));
             starts.extend(warm_starts(data, current, e2));
-            jobs.extend(starts.into_iter().map(|g| ((e1, e2), s, g)));
+            // Both members' fresh starts begin with the pair's own automatic guess: one run
+            // of a start is enough.
+            let mut distinct: Vec<Values> = Vec::with_capacity(starts.len());
+            starts.into_iter().for_each(|g| {
+                if !distinct.contains(&g) {
+                    distinct.push(g);
+                }
+            });
+            jobs.extend(distinct.into_iter().map(|g| ((e1, e2), s, g)));
         }
     }
-    let (pair, r) = best_fits(data, current, &jobs, tracker)
+    let (pair, r) = best_fits(data, current, &jobs, PAIRS_TAKEN_ON, tracker)
         .into_iter()
         .reduce(|best, next| {
             if bic(&next.1) < bic(&best.1) {
@@ -888,12 +896,13 @@ fn best_pair(
 ///
 /// The starts are screened first: each runs [`SCREEN_ITERATIONS`] iterations, and only the
 /// [`KEPT_PER_KEY`] lowest of each key go on to convergence (the next ones when none of
-/// those ends acceptable). Starts in the same basin agree long before they converge, and
+/// those ends acceptable), of the `leaders` keys whose best screened fit has the lowest BIC. Starts in the same basin agree long before they converge, and
 /// one that is far behind after the screen does not overtake the leaders.
 fn best_fits<K: Copy + PartialEq + Sync + Send>(
     data: &FitData,
     current: &FitReport,
     jobs: &[(K, Structure, Values)],
+    leaders: usize,
     tracker: &Tracker,
 ) -> Vec<(K, FitReport)> {
     let full = FitOptions {
@@ -935,6 +944,13 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
             q
         })
         .collect();
+    if leaders < keys.len() {
+        // Only the keys whose best screened fit has the lowest BICs go on.
+        let lead = |i: usize| queues[i].last().map_or(f64::INFINITY, bic);
+        let mut order: Vec<usize> = (0..keys.len()).collect();
+        order.sort_by(|&a, &b| lead(a).total_cmp(&lead(b)));
+        order[leaders..].iter().for_each(|&i| queues[i].clear());
+    }
     let mut best: Vec<Option<FitReport>> = vec![None; keys.len()];
     loop {
         let round: Vec<(usize, FitReport)> = queues
@@ -974,6 +990,9 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         .collect()
 }
 
+/// Pairs of extensions taken on to convergence after the screen (those whose best screened
+/// fit has the lowest BIC): the pair search only needs its winner.
+const PAIRS_TAKEN_ON: usize = 3;
 /// Iterations every start of a candidate runs before the leaders are picked ([`best_fits`]).
 const SCREEN_ITERATIONS: usize = 8;
 /// Screened starts of each candidate taken on to convergence at a time ([`best_fits`]).
@@ -1031,7 +1050,7 @@ fn candidates(
                 .map(move |g| (e, s, g))
         })
         .collect();
-    best_fits(data, current, &jobs, tracker)
+    best_fits(data, current, &jobs, usize::MAX, tracker)
         .into_iter()
         .filter(|(e, r)| match e {
             Extension::Underdamped => oscillates(r),
