@@ -60,23 +60,25 @@ pub fn detect(
         starts: 1,
         ..FitOptions::default()
     };
-    let best = cuts(data, current, residuals)
-        .into_iter()
-        .filter_map(|cut| {
-            let keep: Vec<bool> = (0..data.y.len()).map(|i| i < cut).collect();
-            let before = data.keeping(&keep);
-            let refit = fit(
-                &before,
-                current.model.structure,
-                current.model.values,
-                &options,
-                &mut (),
-            )
-            .ok()?;
-            let r = refit.residuals(data).ok()?;
-            look(data, &refit, &r).map(|found| (found, refit))
-        })
-        .min_by(|a, b| a.0.sse.total_cmp(&b.0.sse))?;
+    // The refits at each cut are independent: spread over the cores, kept in order.
+    let cuts = cuts(data, current, residuals);
+    let best = crate::ident::parallel::map(&cuts, |&cut| {
+        let keep: Vec<bool> = (0..data.y.len()).map(|i| i < cut).collect();
+        let before = data.keeping(&keep);
+        let refit = fit(
+            &before,
+            current.model.structure,
+            current.model.values,
+            &options,
+            &mut (),
+        )
+        .ok()?;
+        let r = refit.residuals(data).ok()?;
+        look(data, &refit, &r).map(|found| (found, refit))
+    })
+    .into_iter()
+    .flatten()
+    .min_by(|a, b| a.0.sse.total_cmp(&b.0.sse))?;
     let (found, refit) = best;
     (!explained_by_structure(data, &refit, found.sse)).then_some((found.cause, found.samples))
 }
