@@ -24,122 +24,10 @@ use degrau::ident::models::{Model, Param, Structure, Values};
 use std::time::Instant;
 
 mod common;
+#[path = "../tests/records/mod.rs"]
+mod records;
 
-/// A record of `tests/data/records` and the flags a user gives `degrau diagnose`:
-/// (file, time column, output, input, sampling period, rows to skip, input before the record).
-type Flags = (
-    &'static str,
-    &'static str,
-    &'static str,
-    &'static str,
-    Option<f64>,
-    usize,
-    Option<f64>,
-);
-
-const RECORDS: [Flags; 13] = [
-    (
-        "apmonitor_arduino_1st_order_SISO_data.csv",
-        "time",
-        "temperature",
-        "voltage",
-        None,
-        0,
-        None,
-    ),
-    ("enclosure_heater_doublet.csv", "1", "4", "2", None, 0, None),
-    (
-        "multistep_heater_synthetic.csv",
-        "",
-        "3",
-        "2",
-        None,
-        0,
-        None,
-    ),
-    (
-        "rc2_square_wave_adc_synthetic.csv",
-        "",
-        "2",
-        "1",
-        Some(0.008),
-        0,
-        None,
-    ),
-    (
-        "rlc_step_underdamped_synthetic.csv",
-        "",
-        "V_C",
-        "V_S",
-        Some(3.3e-6),
-        4,
-        None,
-    ),
-    (
-        "tclab_step_q1_100_spikes.csv",
-        "Time",
-        "T1",
-        "Q1",
-        None,
-        0,
-        Some(0.0),
-    ),
-    (
-        "tclab_step_q1_50_dropouts_synthetic.csv",
-        "Time",
-        "T1",
-        "Q1",
-        None,
-        0,
-        Some(0.0),
-    ),
-    (
-        "tclab_step_q1_50_synthetic.csv",
-        "Time",
-        "T1",
-        "Q1",
-        None,
-        0,
-        None,
-    ),
-    (
-        "ecam_tclab_Open_loop_experiment_on_DV_2022-03-22-20h49.txt",
-        "",
-        "PV",
-        "DV",
-        None,
-        0,
-        None,
-    ),
-    (
-        "ecam_tclab_Open_loop_experiment_on_MV_2022-03-01-09h52.txt",
-        "",
-        "PV",
-        "MV",
-        None,
-        0,
-        None,
-    ),
-    (
-        "pendulum_aprbs_synthetic.txt",
-        "",
-        "y",
-        "u",
-        Some(0.01),
-        0,
-        None,
-    ),
-    (
-        "sbhs_step_not_at_rest_synthetic.txt",
-        "5",
-        "4",
-        "2",
-        None,
-        0,
-        None,
-    ),
-    ("daisy_heating_system.dat", "1", "3", "2", None, 0, None),
-];
+use records::{Flags, RECORDS};
 
 /// Seconds of the fastest of `runs` runs of `f`.
 fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> f64 {
@@ -155,9 +43,7 @@ fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> f64 {
 /// The record's samples as the CLI prepares them, and the held Y0 of a start at rest.
 fn prepared(flags: &Flags) -> Result<(Experiment, FitData, Option<Values>), String> {
     let (file, time, y, u, ts, skip, initial) = *flags;
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/records")
-        .join(file);
+    let path = records::path(file);
     let options = LoadOptions::from_text(time, y, u, ts, skip);
     let test = load_file(&path, &options).map_err(|e| e.to_string())?;
     let experiment = Experiment::new(&test, None, None, initial).map_err(|e| e.to_string())?;

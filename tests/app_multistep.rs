@@ -37,13 +37,26 @@ const CHANGES: [(f64, &str, f64); 4] = [
 
 /// The app in the identification mode with `path` loaded by typing it, model `code`.
 fn loaded(path: &str, code: &str, size: [f32; 2]) -> Harness<'static, DegrauApp> {
+    loaded_from(path, ("", ""), code, size)
+}
+
+/// [`loaded`] with the output and input columns typed first (empty: automatic).
+fn loaded_from(
+    path: &str,
+    (output, input): (&str, &str),
+    code: &str,
+    size: [f32; 2],
+) -> Harness<'static, DegrauApp> {
     let mut h = Harness::builder()
         .with_size(size)
         .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
     h.run_steps(2);
     h.get_by_label("Identify a step test").click();
     h.run_steps(2);
-    h.state_mut().ident.settings.code = code.into();
+    let settings = &mut h.state_mut().ident.settings;
+    settings.y_col = output.into();
+    settings.u_col = input.into();
+    settings.code = code.into();
     load(&mut h, path);
     h
 }
@@ -267,17 +280,7 @@ fn a_step_held_under_three_time_constants_is_said_and_not_compared() {
         env!("CARGO_MANIFEST_DIR"),
         "/tests/data/records/ecam_tclab_Open_loop_experiment_on_MV_2022-03-01-09h52.txt"
     );
-    let mut h = Harness::builder()
-        .with_size([1360.0, 860.0])
-        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
-    h.run_steps(2);
-    h.get_by_label("Identify a step test").click();
-    h.run_steps(2);
-    let settings = &mut h.state_mut().ident.settings;
-    settings.y_col = "PV".into();
-    settings.u_col = "MV".into();
-    settings.code = "P1D".into();
-    load(&mut h, path);
+    let mut h = loaded_from(path, ("PV", "MV"), "P1D", [1360.0, 860.0]);
     h.get_by_label("Fit").click();
     wait_for(&mut h, |h| h.query_by_label("joint fit").is_some());
     wait_for(&mut h, |h| {

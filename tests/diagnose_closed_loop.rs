@@ -26,9 +26,8 @@
 //! Run with `cargo test --test diagnose_closed_loop -- --nocapture` to see the figures.
 
 mod draw;
+mod records;
 use draw::{gaussian, range, signed};
-
-use std::path::PathBuf;
 
 use degrau::ident::data::{LoadOptions, load_file};
 use degrau::ident::diagnose::{DiagnoseOptions, diagnose};
@@ -443,142 +442,12 @@ fn open_loop_records_are_never_named() {
     assert!(named.is_empty(), "named on open-loop cases {named:?}");
 }
 
-fn file(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/records")
-        .join(name)
-}
-
-/// Each real record as the CLI reads it: (file, time, output, input, Ts, rows skipped,
-/// initial input).
-/// How the CLI is told to read a record.
-type Flags = (
-    &'static str,
-    &'static str,
-    &'static str,
-    &'static str,
-    Option<f64>,
-    usize,
-    Option<f64>,
-);
-
-const REAL: [Flags; 13] = [
-    (
-        "apmonitor_arduino_1st_order_SISO_data.csv",
-        "time",
-        "temperature",
-        "voltage",
-        None,
-        0,
-        None,
-    ),
-    (
-        "daisy_heating_system.dat",
-        "1",
-        "3",
-        "2",
-        None,
-        0,
-        Some(6.0),
-    ),
-    (
-        "ecam_tclab_Open_loop_experiment_on_DV_2022-03-22-20h49.txt",
-        "t",
-        "PV",
-        "DV",
-        None,
-        0,
-        None,
-    ),
-    (
-        "ecam_tclab_Open_loop_experiment_on_MV_2022-03-01-09h52.txt",
-        "t",
-        "PV",
-        "MV",
-        None,
-        0,
-        None,
-    ),
-    ("enclosure_heater_doublet.csv", "1", "4", "2", None, 0, None),
-    (
-        "multistep_heater_synthetic.csv",
-        "time (s)",
-        "temperature (degC)",
-        "heater (%)",
-        None,
-        0,
-        None,
-    ),
-    (
-        "pendulum_aprbs_synthetic.txt",
-        "",
-        "y",
-        "u",
-        Some(0.01),
-        0,
-        None,
-    ),
-    (
-        "rc2_square_wave_adc_synthetic.csv",
-        "",
-        "2",
-        "1",
-        Some(0.008),
-        0,
-        None,
-    ),
-    (
-        "rlc_step_underdamped_synthetic.csv",
-        "",
-        "V_C",
-        "V_S",
-        Some(3.3e-6),
-        4,
-        None,
-    ),
-    (
-        "sbhs_step_not_at_rest_synthetic.txt",
-        "1",
-        "4",
-        "2",
-        None,
-        0,
-        None,
-    ),
-    (
-        "tclab_step_q1_100_spikes.csv",
-        "Time",
-        "T1",
-        "Q1",
-        None,
-        0,
-        Some(0.0),
-    ),
-    (
-        "tclab_step_q1_50_dropouts_synthetic.csv",
-        "Time",
-        "T1",
-        "Q1",
-        None,
-        0,
-        Some(0.0),
-    ),
-    (
-        "tclab_step_q1_50_synthetic.csv",
-        "Time",
-        "T1",
-        "Q1",
-        None,
-        0,
-        None,
-    ),
-];
-
 #[test]
 fn no_real_record_in_the_repo_is_named() {
-    for (name, time, output, input, ts, skip, initial) in REAL {
+    for (name, time, output, input, ts, skip, initial) in records::RECORDS {
         let options = LoadOptions::from_text(time, output, input, ts, skip);
-        let test = load_file(file(name), &options).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+        let test =
+            load_file(records::path(name), &options).unwrap_or_else(|e| panic!("{name}: {e:?}"));
         let experiment =
             Experiment::new(&test, None, None, initial).unwrap_or_else(|e| panic!("{name}: {e:?}"));
         let data = experiment

@@ -1468,6 +1468,19 @@ mod tests {
         fit(data, m.structure, m.values, &options, &mut ()).unwrap()
     }
 
+    /// `r` with a drift term, refitted on `data` from its values and `drift` (one start).
+    fn refitted_with_drift(data: &FitData, r: &FitReport, drift: f64) -> FitReport {
+        let mut s = r.model.structure;
+        s.drift = true;
+        let mut v = r.model.values;
+        v.set(Param::Drift, drift);
+        let options = FitOptions {
+            starts: 1,
+            ..FitOptions::default()
+        };
+        fit(data, s, v, &options, &mut ()).unwrap()
+    }
+
     #[test]
     fn the_backward_look_takes_out_a_drift_that_no_longer_pays() {
         let data = p1_record();
@@ -1476,15 +1489,7 @@ mod tests {
             "P1",
             &[(Param::Kp, 2.0), (Param::Tp1, 10.0), (Param::Y0, 50.0)],
         );
-        let mut s = current.model.structure;
-        s.drift = true;
-        let mut v = current.model.values;
-        v.set(Param::Drift, 1e-4);
-        let options = FitOptions {
-            starts: 1,
-            ..FitOptions::default()
-        };
-        let with_drift = fit(&data, s, v, &options, &mut ()).unwrap();
+        let with_drift = refitted_with_drift(&data, &current, 1e-4);
         let (e, step) = backward_step(&data, &with_drift, Extension::Pole).expect("taken out");
         assert_eq!(e, Extension::Drift);
         assert!(step.removed && step.cause == Cause::Drift);
@@ -1517,15 +1522,7 @@ mod tests {
             .map(|&t| (18.0..=35.0).contains(&t))
             .collect();
         let short = data.keeping(&keep);
-        let mut s = settled.model.structure;
-        s.drift = true;
-        let mut v = settled.model.values;
-        v.set(Param::Drift, 0.0);
-        let options = FitOptions {
-            starts: 1,
-            ..FitOptions::default()
-        };
-        let with_drift = fit(&short, s, v, &options, &mut ()).unwrap();
+        let with_drift = refitted_with_drift(&short, &settled, 0.0);
         let trade = gain_trade(&with_drift).expect("trades");
         assert!(matches!(trade.with, Param::Drift | Param::Tp1), "{trade:?}");
         assert!(trade.correlation.abs() >= TRADE_CORRELATION);

@@ -88,16 +88,7 @@ impl Transient {
                 center,
                 offsets,
                 radius,
-            } => {
-                let row = divided::exp_last_row(offsets, *radius, tau);
-                let e = (center * tau).exp();
-                // The last entry is e^{p_m τ}; earlier ones the higher divided differences.
-                self.coefficients
-                    .iter()
-                    .zip(row.iter().rev())
-                    .map(|(x, r)| x * e * r.re)
-                    .sum()
-            }
+            } => self.combine(&real_basis(*center, offsets, *radius, tau)),
             Modes::Pair {
                 sigma,
                 omega_squared,
@@ -164,6 +155,15 @@ impl Transient {
     }
 }
 
+/// The real-pole basis at τ, e^{cτ}·(last row of exp(τN)), evaluated afresh: its last entry
+/// is e^{p_m τ}, the earlier ones the higher divided differences.
+fn real_basis(center: f64, offsets: &[C64], radius: f64, tau: f64) -> Vec<C64> {
+    let e = (center * tau).exp();
+    let mut row = divided::exp_last_row(offsets, radius, tau);
+    row.iter_mut().for_each(|r| *r *= e);
+    row
+}
+
 /// The real-pole basis e^{cτ}·(last row of exp(τN)) advanced from instant to instant.
 struct Walk<'a> {
     center: f64,
@@ -205,9 +205,7 @@ impl<'a> Walk<'a> {
     }
 
     fn exact(&mut self, tau: f64) {
-        let e = (self.center * tau).exp();
-        self.row = divided::exp_last_row(self.offsets, self.radius, tau);
-        self.row.iter_mut().for_each(|r| *r *= e);
+        self.row = real_basis(self.center, self.offsets, self.radius, tau);
         self.tau = tau;
         self.walked = 0;
     }
@@ -256,6 +254,35 @@ mod tests {
                 let exact = x.value(t + 1.5);
                 assert!((w - exact).abs() <= 1e-12 * scale, "k {k}: {w} vs {exact}");
             }
+        }
+    }
+
+    #[test]
+    fn the_basis_is_the_newton_basis_of_the_exponentials() {
+        // Two distinct lags: x(τ) = X1·e^{qτ} + X2·(e^{qτ} − e^{pτ})/(q − p), the closed form
+        // of the divided difference, X1 on the last pole listed (q = −1/Tp2, p = −1/Tp1);
+        // one lag: X1·e^{−τ/Tp1}.
+        let (t1, t2, x1, x2) = (30.0, 5.0, 1.3, -0.4);
+        let x = transient(
+            "P2",
+            &[
+                (Param::Tp1, t1),
+                (Param::Tp2, t2),
+                (Param::X1, x1),
+                (Param::X2, x2),
+            ],
+        );
+        let (p1, p2) = (-1.0 / t1, -1.0 / t2);
+        let one = transient("P1", &[(Param::Tp1, t1), (Param::X1, x1)]);
+        for tau in [0.0, 0.7, 4.0, 25.0, 140.0] {
+            let (e1, e2) = ((p1 * tau).exp(), (p2 * tau).exp());
+            let closed = x1 * e2 + x2 * (e2 - e1) / (p2 - p1);
+            assert!(
+                (x.value(tau) - closed).abs() <= 1e-14,
+                "τ {tau}: {} vs {closed}",
+                x.value(tau)
+            );
+            assert!((one.value(tau) - x1 * e1).abs() <= 1e-15, "τ {tau}");
         }
     }
 

@@ -409,22 +409,28 @@ mod tests {
     use crate::ident::excitation::Excitation;
     use crate::ident::models::{Structure, Values};
 
-    fn record(load: impl Fn(f64) -> f64) -> (FitData, FitReport) {
+    /// The P1 (Kp 2, Tp1 3 s, from 50), its values, and 100 s of it stepped at `t0` with
+    /// uniform noise of half-width `noise` and `load(t)` added.
+    fn p1_record(t0: f64, noise: f64, load: impl Fn(f64) -> f64) -> (FitData, Structure, Values) {
         let s = Structure::parse("P1").unwrap();
         let mut v = Values::default();
         v.set(Param::Kp, 2.0);
         v.set(Param::Tp1, 3.0);
         v.set(Param::Y0, 50.0);
         let times: Vec<f64> = (0..400).map(|k| 0.25 * k as f64).collect();
-        let input = Excitation::step(5.0, 1.0);
+        let input = Excitation::step(t0, 1.0);
         let clean = Model::new(s, v).simulate(&input, &times).unwrap();
         let mut rng = crate::ident::fit::Lcg(5);
         let y = clean
             .iter()
             .zip(&times)
-            .map(|(c, t)| c + 0.01 * rng.symmetric() + load(*t))
+            .map(|(c, t)| c + noise * rng.symmetric() + load(*t))
             .collect();
-        let data = FitData { times, y, input };
+        (FitData { times, y, input }, s, v)
+    }
+
+    fn record(load: impl Fn(f64) -> f64) -> (FitData, FitReport) {
+        let (data, s, v) = p1_record(5.0, 0.01, load);
         let r = fit(&data, s, v, &FitOptions::default(), &mut ()).unwrap();
         (data, r)
     }
@@ -516,25 +522,14 @@ mod tests {
         // CLI holds it: the fit bends its gain and lag to the drift, and what it leaves in
         // the settled tail is flat, then a line. The same slope before the change says it
         // was there all along.
-        let s = Structure::parse("P1").unwrap();
-        let mut v = Values::default();
-        v.set(Param::Kp, 2.0);
-        v.set(Param::Tp1, 3.0);
-        v.set(Param::Y0, 50.0);
-        let times: Vec<f64> = (0..400).map(|k| 0.25 * k as f64).collect();
-        let input = Excitation::step(20.0, 1.0);
-        let clean = Model::new(s, v).simulate(&input, &times).unwrap();
-        let mut rng = crate::ident::fit::Lcg(5);
-        let y: Vec<f64> = clean
-            .iter()
-            .zip(&times)
-            .map(|(c, t)| c + 0.005 * rng.symmetric() - 0.006 * t)
-            .collect();
-        let before = times.iter().filter(|t| **t < 20.0).count();
+        let (data, s, mut v) = p1_record(20.0, 0.005, |t| -0.006 * t);
+        let before = data.times.iter().filter(|t| **t < 20.0).count();
         let mut held = s;
         held.free_offset = false;
-        v.set(Param::Y0, y[..before].iter().sum::<f64>() / before as f64);
-        let data = FitData { times, y, input };
+        v.set(
+            Param::Y0,
+            data.y[..before].iter().sum::<f64>() / before as f64,
+        );
         let current = fit(&data, held, v, &FitOptions::default(), &mut ()).unwrap();
         let r = current.residuals(&data).unwrap();
         let found = detect(&data, &current, &r);
