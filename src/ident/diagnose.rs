@@ -877,7 +877,7 @@ fn best_pair(
             jobs.extend(distinct.into_iter().map(|g| ((e1, e2), s, g)));
         }
     }
-    let (pair, r) = best_fits(data, current, &jobs, PAIRS_TAKEN_ON, tracker)
+    let (pair, r) = best_fits(data, current, &jobs, PAIRS_TAKEN_ON, tracker, &|_, _| false)
         .into_iter()
         .reduce(|best, next| {
             if bic(&next.1) < bic(&best.1) {
@@ -897,13 +897,15 @@ fn best_pair(
 /// The starts are screened first: each runs [`SCREEN_ITERATIONS`] iterations, and only the
 /// [`KEPT_PER_KEY`] lowest of each key go on to convergence (the next ones when none of
 /// those ends acceptable), of the `leaders` keys whose best screened fit has the lowest BIC. Starts in the same basin agree long before they converge, and
-/// one that is far behind after the screen does not overtake the leaders.
+/// one that is far behind after the screen does not overtake the leaders. A screened fit
+/// that is already `enough` for the caller is returned alone, before any goes on.
 fn best_fits<K: Copy + PartialEq + Sync + Send>(
     data: &FitData,
     current: &FitReport,
     jobs: &[(K, Structure, Values)],
     leaders: usize,
     tracker: &Tracker,
+    enough: &(dyn Fn(K, &FitReport) -> bool + Sync),
 ) -> Vec<(K, FitReport)> {
     let full = FitOptions {
         starts: 1,
@@ -911,6 +913,7 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
     };
     let screen = FitOptions {
         max_iterations: SCREEN_ITERATIONS,
+        screen: true,
         ..full
     };
     let fit_with = |options: &FitOptions, s: Structure, g: Values| {
@@ -921,7 +924,29 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         tracker.fitted();
         r.ok().filter(|r| r.ln_mse.is_finite())
     };
-    let screened = super::parallel::map(jobs, |&(_, s, g)| fit_with(&screen, s, g));
+    // The first start of each key is screened first: a witness there spares the rest.
+    let first_of_key: Vec<bool> = (0..jobs.len())
+        .map(|i| !jobs[..i].iter().any(|j| j.0 == jobs[i].0))
+        .collect();
+    let mut screened: Vec<Option<FitReport>> = vec![None; jobs.len()];
+    for round in [true, false] {
+        let picked: Vec<usize> = (0..jobs.len())
+            .filter(|&i| first_of_key[i] == round)
+            .collect();
+        let fits = super::parallel::map(&picked, |&i| fit_with(&screen, jobs[i].1, jobs[i].2));
+        for (&i, r) in picked.iter().zip(fits) {
+            screened[i] = r;
+        }
+        let witness = picked.iter().find_map(|&i| {
+            screened[i]
+                .as_ref()
+                .filter(|r| enough(jobs[i].0, r))
+                .map(|r| (jobs[i].0, r.clone()))
+        });
+        if let Some(found) = witness {
+            return vec![found];
+        }
+    }
     let acceptable = |r: &FitReport| !aliased(r) && !beyond_record(data, &current.model, &r.model);
     let mut keys: Vec<K> = Vec::new();
     jobs.iter().for_each(|(k, _, _)| {
@@ -1019,17 +1044,22 @@ fn gain(before: &FitReport, after: &FitReport) -> Gain {
     }
 }
 
-/// The BIC of the best single extension of `current` on `data`, if any can be fitted.
-pub fn best_extension_bic(data: &FitData, current: &FitReport) -> Option<f64> {
-    best_extension(data, current).map(|(_, r)| bic(&r))
-}
-
-/// The extension whose refit has the lowest BIC (aliased fits excluded).
-fn best_extension(data: &FitData, current: &FitReport) -> Option<(Extension, FitReport)> {
-    candidates(data, current, &EXTENSIONS, &Tracker::none())
+/// Whether some single extension of `current` explains `data` with a BIC at most `bound`.
+/// The first screened fit that already does (a witness: its alias checked, the candidates'
+/// own conditions met) answers without fitting the rest to convergence; otherwise the best
+/// extension decides, as the loop would choose it.
+pub fn extension_reaches(data: &FitData, current: &FitReport, bound: f64) -> bool {
+    let enough = |e: Extension, r: &FitReport| {
+        bic(r) <= bound
+            && kept_candidate(data, current, e, r)
+            && super::fit::alias_warning(&r.model, data).is_none()
+            && !beyond_record(data, &current.model, &r.model)
+    };
+    candidates_until(data, current, &EXTENSIONS, &Tracker::none(), &enough)
         .into_iter()
         .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
         .and_then(|winner| on_every_sample(data, winner))
+        .is_some_and(|(_, r)| bic(&r) <= bound)
 }
 
 /// Every extension of `current` that can be fitted, with its refit (on the record's
@@ -1041,6 +1071,17 @@ fn candidates(
     allowed: &[Extension],
     tracker: &Tracker,
 ) -> Vec<(Extension, FitReport)> {
+    candidates_until(data, current, allowed, tracker, &|_, _| false)
+}
+
+/// [`candidates`], or only the first screened fit that is `enough` (see [`best_fits`]).
+fn candidates_until(
+    data: &FitData,
+    current: &FitReport,
+    allowed: &[Extension],
+    tracker: &Tracker,
+    enough: &(dyn Fn(Extension, &FitReport) -> bool + Sync),
+) -> Vec<(Extension, FitReport)> {
     let jobs: Vec<(Extension, Structure, Values)> = allowed
         .iter()
         .filter_map(|&e| Some((e, e.apply(current.model.structure)?)))
@@ -1050,15 +1091,21 @@ fn candidates(
                 .map(move |g| (e, s, g))
         })
         .collect();
-    best_fits(data, current, &jobs, usize::MAX, tracker)
+    best_fits(data, current, &jobs, usize::MAX, tracker, enough)
         .into_iter()
-        .filter(|(e, r)| match e {
-            Extension::Underdamped => oscillates(r),
-            Extension::Drift => drift_shown(data, &current.model, r),
-            _ => true,
-        })
-        .filter(|(_, r)| bic(r).is_finite())
+        .filter(|(e, r)| kept_candidate(data, current, *e, r))
         .collect()
+}
+
+/// A candidate's own conditions: a pair that oscillates, a drift the record shows, a
+/// finite BIC.
+fn kept_candidate(data: &FitData, current: &FitReport, e: Extension, r: &FitReport) -> bool {
+    let own = match e {
+        Extension::Underdamped => oscillates(r),
+        Extension::Drift => drift_shown(data, &current.model, r),
+        _ => true,
+    };
+    own && bic(r).is_finite()
 }
 
 /// Whether a fit with a drift term shows it where only a drift explains it

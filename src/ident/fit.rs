@@ -143,6 +143,10 @@ pub struct FitOptions {
     pub max_iterations: usize,
     /// Seed of the spread-out starts (fits are reproducible).
     pub seed: u64,
+    /// A screen ranks starts: a run it stops at `max_iterations` goes on later or is
+    /// dropped, so it is not checked for an alias (the check costs 16 evaluations of the
+    /// model per sample interval), and its report carries no alias warning.
+    pub screen: bool,
 }
 
 impl Default for FitOptions {
@@ -152,6 +156,7 @@ impl Default for FitOptions {
             starts: 16,
             max_iterations: 200,
             seed: 1,
+            screen: false,
         }
     }
 }
@@ -514,15 +519,53 @@ fn fit_on(
     let searched = search.as_ref().unwrap_or(&problem);
     let starts = searched.starts(&x0, options.starts.max(1), options.seed);
     let n = data.y.len() as f64;
-    let mut runs: Vec<Run> = Vec::new();
+    let screens = options.method == Method::LevenbergMarquardt
+        && starts.len() > START_SCREEN_KEPT
+        && options.max_iterations > START_SCREEN_ITERATIONS;
+    let first_pass = FitOptions {
+        max_iterations: if screens {
+            START_SCREEN_ITERATIONS
+        } else {
+            options.max_iterations
+        },
+        ..*options
+    };
+    let mut runs: Vec<Option<Run>> = Vec::new();
     for (k, start) in starts.iter().enumerate() {
         if observer.cancelled() {
             break;
         }
-        let best_cost = runs.iter().map(|r| r.sse / n).fold(f64::INFINITY, f64::min);
+        let best_cost = lowest_cost(&runs) / n;
         let mut report = progress(&problem, observer, (k, starts.len()), best_cost);
-        runs.extend(searched.run(options.method, start, options, &mut report));
+        runs.push(searched.run(options.method, start, &first_pass, &mut report));
     }
+    // A screen: only the lowest unfinished runs go on; the others are dropped.
+    let continued = if screens {
+        leading_unfinished(&runs, START_SCREEN_KEPT)
+    } else {
+        Vec::new()
+    };
+    for &k in &continued {
+        if observer.cancelled() {
+            break;
+        }
+        let best_cost = lowest_cost(&runs) / n;
+        let mut report = progress(&problem, observer, (k, starts.len()), best_cost);
+        if let Some(run) = runs[k].as_mut() {
+            searched.go_on(run, options, &mut report);
+        }
+    }
+    let runs: Vec<Run> = runs
+        .into_iter()
+        .enumerate()
+        .filter(|(k, r)| {
+            let unfinished = r
+                .as_ref()
+                .is_some_and(|r| r.termination == Termination::IterationLimit);
+            !screens || !unfinished || continued.contains(k)
+        })
+        .filter_map(|(_, r)| r)
+        .collect();
     let cancelled = observer.cancelled();
     let mut run = best_run(runs, &problem).unwrap_or_else(|| Run {
         x: x0.clone(),
@@ -530,7 +573,6 @@ fn fit_on(
         iterations: 0,
         termination: Termination::Cancelled,
         path: vec![x0.clone()],
-        aliased: false,
     });
     let ending = match end_on {
         Samples::Reduced => searched,
@@ -552,19 +594,49 @@ fn fit_on(
     ending.report(run, options, starts.len(), &problem)
 }
 
+/// Iterations each start of a multi-start fit runs before the screen ranks them.
+const START_SCREEN_ITERATIONS: usize = 8;
+/// Unfinished starts that go on to convergence after the screen (the lowest-cost ones).
+/// Starts in the same basin agree long before they converge, and one far behind after the
+/// screen does not overtake the leaders; the finished ones are all kept.
+const START_SCREEN_KEPT: usize = 3;
+
+/// The lowest cost (SSE) among `runs`, infinite when there is none.
+fn lowest_cost(runs: &[Option<Run>]) -> f64 {
+    runs.iter()
+        .flatten()
+        .map(|r| r.sse)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The indices of the `kept` runs of lowest cost among those the iteration limit stopped.
+fn leading_unfinished(runs: &[Option<Run>], kept: usize) -> Vec<usize> {
+    let mut unfinished: Vec<(usize, f64)> = runs
+        .iter()
+        .enumerate()
+        .filter_map(|(k, r)| r.as_ref().map(|r| (k, r)))
+        .filter(|(_, r)| r.termination == Termination::IterationLimit)
+        .map(|(k, r)| (k, r.sse))
+        .collect();
+    unfinished.sort_by(|a, b| a.1.total_cmp(&b.1));
+    unfinished.into_iter().take(kept).map(|(k, _)| k).collect()
+}
+
 /// The run of lowest cost that is not an alias, else the lowest: a run without alias beats
 /// any aliased one, since an alias can match the samples better than the true optimum (it
 /// does on the LECI data) while being wrong between them. The (costly) alias check runs on
-/// the runs in order of cost until one passes.
+/// the runs in order of cost until one passes, and not at all when there is one run (the
+/// report checks the run it ends with).
 fn best_run(mut runs: Vec<Run>, problem: &Problem) -> Option<Run> {
     runs.sort_by(|a, b| a.sse.total_cmp(&b.sse));
-    let clean = runs.iter().position(|r| problem.alias(&r.x).is_none());
-    let chosen = clean.unwrap_or(0);
-    (chosen < runs.len()).then(|| {
-        let mut run = runs.swap_remove(chosen);
-        run.aliased = clean.is_none();
-        run
-    })
+    let chosen = match runs.len() {
+        0 | 1 => 0,
+        _ => runs
+            .iter()
+            .position(|r| problem.alias(&r.x).is_none())
+            .unwrap_or(0),
+    };
+    (chosen < runs.len()).then(|| runs.swap_remove(chosen))
 }
 
 /// The progress callback of start `k` of `starts`: reports each iteration to `observer`
@@ -626,8 +698,6 @@ struct Run {
     iterations: usize,
     termination: Termination,
     path: Vec<Vec<f64>>,
-    /// Whether the result oscillates faster than the sampling shows (see [`alias_warning`]).
-    aliased: bool,
 }
 
 /// When Levenberg–Marquardt stops.
@@ -654,9 +724,22 @@ type Intervals = Vec<Option<(f64, f64)>>;
 struct Direction {
     moved: Vec<f64>,
     h: f64,
-    /// Moves the operating point Y0 alone: ŷ moves by exactly h, so the residuals' column is
-    /// −1 (−√w with weights) without a simulation.
-    offset: bool,
+    column: Column,
+}
+
+/// How a Jacobian column is had.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Column {
+    /// The difference of the residuals at the moved point, over its step.
+    Difference,
+    /// The operating point Y0: ŷ moves one for one with it, so the residuals' column is
+    /// −1 (−√w with weights), without a simulation.
+    Offset,
+    /// The gain Kp (≠ 0): the forced response is proportional to it and nothing else is,
+    /// so the column is −(ŷ − Y0 − drift − transient)/Kp, read off the residuals.
+    Gain(f64),
+    /// The drift: ŷ moves by (t − t₀) per unit.
+    Drift,
 }
 
 /// The least-squares problem in the free parameters, on the record in internal units.
@@ -784,13 +867,52 @@ impl Problem {
         }
     }
 
-    /// The residuals' derivative along Y0 on one piece (`range`) into `out`: r = (y − ŷ)·√w
-    /// and ŷ moves one for one with Y0.
-    fn offset_column(&self, range: std::ops::Range<usize>, out: &mut [f64]) {
+    /// The residuals' derivative on one piece (`range`) into `out` along a parameter whose
+    /// column is known without a simulation (see [`Column`]): r = (y − ŷ)·√w, `residuals`
+    /// the piece's residuals at the point, `base` its simulator.
+    fn exact_column(
+        &self,
+        column: Column,
+        base: &Simulator,
+        range: std::ops::Range<usize>,
+        residuals: &[f64],
+        out: &mut [f64],
+    ) {
         let out = &mut out[..range.len()];
+        let times = &self.data.times[range.clone()];
+        match column {
+            Column::Offset => out.iter_mut().for_each(|c| *c = 1.0),
+            // Never asked for: its column is a difference of simulations.
+            Column::Difference => out.iter_mut().for_each(|c| *c = 0.0),
+            Column::Drift => {
+                let t0 = base.drift_origin();
+                out.iter_mut().zip(times).for_each(|(c, t)| *c = t - t0);
+            }
+            Column::Gain(kp) => {
+                // ŷ = y − r/√w, then its forced part.
+                let y = &self.data.y[range.clone()];
+                match &self.root_weights {
+                    Some(w) => {
+                        for (((c, y), r), w) in
+                            out.iter_mut().zip(y).zip(residuals).zip(&w[range.clone()])
+                        {
+                            *c = if *w > 0.0 { y - r / w } else { 0.0 };
+                        }
+                    }
+                    None => {
+                        for ((c, y), r) in out.iter_mut().zip(y).zip(residuals) {
+                            *c = y - r;
+                        }
+                    }
+                }
+                base.forced_from(times, out);
+                out.iter_mut().for_each(|c| *c /= kp);
+            }
+        }
+        // ∂r/∂p = −√w·∂ŷ/∂p.
         match &self.root_weights {
-            Some(w) => out.iter_mut().zip(&w[range]).for_each(|(c, w)| *c = -w),
-            None => out.iter_mut().for_each(|c| *c = -1.0),
+            Some(w) => out.iter_mut().zip(&w[range]).for_each(|(c, w)| *c *= -w),
+            None => out.iter_mut().for_each(|c| *c = -*c),
         }
     }
 
@@ -850,8 +972,13 @@ impl Problem {
                 let h = self.difference_step(i, x[i]);
                 let mut moved = x.to_vec();
                 moved[i] = x[i] + h;
-                let offset = self.params[i] == Param::Y0;
-                Direction { moved, h, offset }
+                let column = match self.params[i] {
+                    Param::Y0 => Column::Offset,
+                    Param::Drift => Column::Drift,
+                    Param::Kp if x[i] != 0.0 && x[i].is_finite() => Column::Gain(x[i]),
+                    _ => Column::Difference,
+                };
+                Direction { moved, h, column }
             })
             .collect()
     }
@@ -875,9 +1002,9 @@ impl Problem {
         let base = self.simulator(x).ok()?;
         let shifted_models = directions
             .iter()
-            .map(|d| match d.offset {
-                true => Some(None),
-                false => self.simulator(&d.moved).ok().map(Some),
+            .map(|d| match d.column {
+                Column::Difference => self.simulator(&d.moved).ok().map(Some),
+                _ => Some(None),
             })
             .collect::<Option<Vec<_>>>()?;
         let steps: Vec<f64> = directions.iter().map(|d| d.h).collect();
@@ -895,9 +1022,14 @@ impl Problem {
                     &r[..len]
                 }
             };
-            for ((column, s), h) in columns.iter_mut().zip(&shifted_models).zip(&steps) {
+            for (((column, s), h), d) in columns
+                .iter_mut()
+                .zip(&shifted_models)
+                .zip(&steps)
+                .zip(directions)
+            {
                 let Some(s) = s else {
-                    self.offset_column(range.clone(), column);
+                    self.exact_column(d.column, &base, range.clone(), r, column);
                     continue;
                 };
                 self.piece(s, range.clone(), column);
@@ -1060,7 +1192,6 @@ impl Problem {
             iterations,
             termination,
             path,
-            aliased: false,
         })
     }
     /// One local search from `start` by `method`.
@@ -1076,6 +1207,30 @@ impl Problem {
                 self.levenberg_marquardt(start, options.max_iterations, Stop::CostSettles, report)
             }
             Method::NelderMead => self.nelder_mead(start, options.max_iterations * 10, report),
+        }
+    }
+
+    /// Continues a run a screen stopped, from where it stopped, to the whole iteration limit
+    /// (the test that stops it is the one the first pass used).
+    fn go_on(
+        &self,
+        run: &mut Run,
+        options: &FitOptions,
+        report: &mut dyn FnMut(usize, f64, &[f64]) -> bool,
+    ) {
+        let left = options.max_iterations.saturating_sub(run.iterations);
+        let Some(more) = self.levenberg_marquardt(&run.x, left, Stop::CostSettles, report) else {
+            return;
+        };
+        if more.sse <= run.sse {
+            run.iterations += more.iterations;
+            run.path.extend(more.path.into_iter().skip(1));
+            run.x = more.x;
+            run.sse = more.sse;
+            run.termination = match more.termination {
+                Termination::NoImprovement => Termination::SmallCostChange,
+                other => other,
+            };
         }
     }
 
@@ -1243,7 +1398,6 @@ impl Problem {
             iterations,
             termination,
             path,
-            aliased: false,
         })
     }
 
@@ -1317,7 +1471,10 @@ impl Problem {
                 zeta: model.get(Param::Zeta),
             });
         }
-        if let Some(alias) = checked.alias(&run.x) {
+        let unfinished = run.termination == Termination::IterationLimit;
+        if !(options.screen && unfinished)
+            && let Some(alias) = checked.alias(&run.x)
+        {
             warnings.push(alias);
         }
         match run.termination {
@@ -1454,7 +1611,7 @@ impl Problem {
         directions[i] = Direction {
             moved,
             h,
-            offset: false,
+            column: Column::Difference,
         };
         let dq = lag_pair::Q_STEP * m * m + f64::EPSILON.sqrt() * q;
         let (a, b) = lag_pair::lags_of(m, q + dq);
@@ -1466,7 +1623,7 @@ impl Problem {
         directions[j] = Direction {
             moved,
             h: dq,
-            offset: false,
+            column: Column::Difference,
         };
         let Normal { a, .. } = self.normal_along(x, None, &directions)?;
         let inverse = inverse_scaled(&a).ok()?;

@@ -278,10 +278,18 @@ pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
 
 /// [`auto_guess`] in the record's units as they are: read off the curve for one step
 /// from rest, by least squares on the whole record otherwise ([`regression_guess`]).
+///
+/// On a long record the regression runs on its reduction ([`super::reduce`]: block means,
+/// every sample kept where the response moves): a guess needs the curve's shape, not every
+/// sample's noise, and the fit that follows uses every sample.
 fn guess_as_given(data: &FitData, structure: Structure, y0: Option<f64>) -> Values {
     if needs_regression(data, structure) {
         let start = curve_guess(data, structure, y0);
-        return regression_guess(data, structure, y0, start).unwrap_or(start);
+        let guess = match super::reduce::reduce(&data.times, &data.input) {
+            Some(r) => regression_guess(&r.apply(data), structure, y0, start),
+            None => regression_guess(data, structure, y0, start),
+        };
+        return guess.unwrap_or(start);
     }
     curve_guess(data, structure, y0)
 }

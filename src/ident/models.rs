@@ -605,6 +605,27 @@ impl Simulator {
         }
     }
 
+    /// The forced response (what the input drives, proportional to the gain) from the
+    /// output `values` this simulator filled at `times`: Y0, the drift's line and the initial
+    /// transient are taken out in place.
+    pub fn forced_from(&self, times: &[f64], values: &mut [f64]) {
+        let (t0, y0, drift) = (self.t0, self.y0, self.drift);
+        for (v, &t) in values.iter_mut().zip(times) {
+            *v -= y0 + drift * (t - t0);
+        }
+        if let Some(x) = &self.transient {
+            let n = times.len().min(values.len());
+            let mut free = vec![0.0; n];
+            x.add_to(&times[..n], self.origin, &mut free);
+            values.iter_mut().zip(&free).for_each(|(v, f)| *v -= f);
+        }
+    }
+
+    /// The first change's instant (s), the origin of the drift's line.
+    pub fn drift_origin(&self) -> f64 {
+        self.t0
+    }
+
     /// a·g(t − s) into `out`, 0 before s.
     fn one_step(&self, s: f64, a: f64, times: &[f64], out: &mut [f64]) {
         let n = times.len();

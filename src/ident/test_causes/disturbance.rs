@@ -19,7 +19,7 @@
 //! input, and not a drift.
 
 use super::{DisturbanceShape, Handling, TestCause, TestCauseKind, TestEvidence};
-use crate::ident::diagnose::{BIC_THRESHOLD, best_extension_bic};
+use crate::ident::diagnose::{BIC_THRESHOLD, extension_reaches};
 use crate::ident::drift_evidence::{Z_DRIFT, settled_slope_before};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
 use crate::ident::models::{Model, Param};
@@ -273,7 +273,7 @@ fn explained_by_structure(data: &FitData, current: &FitReport, sse: f64) -> bool
     let n = data.y.len() as f64;
     let p = current.params.len() as f64 + 3.0;
     let disturbance = n * (sse / n).ln() + p * n.ln();
-    best_extension_bic(data, current).is_some_and(|b| b <= disturbance + BIC_THRESHOLD)
+    extension_reaches(data, current, disturbance + BIC_THRESHOLD)
 }
 
 /// How long the model's response takes to settle (s): its exact 2 % settling time (MATLAB's
