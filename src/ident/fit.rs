@@ -595,7 +595,7 @@ fn fit_on(
 }
 
 /// Iterations each start of a multi-start fit runs before the screen ranks them.
-const START_SCREEN_ITERATIONS: usize = 8;
+const START_SCREEN_ITERATIONS: usize = 5;
 /// Unfinished starts that go on to convergence after the screen (the lowest-cost ones).
 /// Starts in the same basin agree long before they converge, and one far behind after the
 /// screen does not overtake the leaders; the finished ones are all kept.

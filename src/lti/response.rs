@@ -700,8 +700,9 @@ fn exp(z: C64) -> C64 {
 }
 
 /// [`Superposition`] for a simple pole c (its contribution q·e^{cτ}), written out: the running
-/// sum is one complex number, advanced by e^{ch} from the cached advance (nothing for the
-/// pole at the origin of a step), so an instant costs a few multiplications.
+/// sum is one number, advanced by e^{ch} from the cached advance (nothing for the pole at
+/// the origin of a step), so an instant costs a few multiplications. A real pole walks in
+/// real arithmetic: the same products, since every imaginary part would be zero.
 fn superpose_simple(
     c: &Cluster,
     delay: f64,
@@ -710,13 +711,75 @@ fn superpose_simple(
     times: &[f64],
     out: &mut [f64],
 ) {
-    let zero = C64::new(0.0, 0.0);
     let d = c.coeffs[0] * c.weight;
-    let constant = c.center == zero;
-    let mut sum = zero;
+    if c.center.im == 0.0 {
+        walk_simple(c.center.re, d.re, delay, scale, steps, times, out);
+    } else {
+        walk_simple(c.center, d, delay, scale, steps, times, out);
+    }
+}
+
+/// A pole's number: real or complex, with what the walk needs of it.
+trait PoleNumber:
+    Copy + PartialEq + std::ops::Mul<Output = Self> + std::ops::MulAssign + std::ops::AddAssign<f64>
+{
+    const ZERO: Self;
+    const ONE: Self;
+    /// e^{self·h}.
+    fn exp_times(self, h: f64) -> Self;
+    /// e^{self·δ} for a tiny δ.
+    fn small_exp_times(self, delta: f64) -> Self;
+    /// Re(self·other).
+    fn re_product(self, other: Self) -> f64;
+}
+
+impl PoleNumber for f64 {
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    fn exp_times(self, h: f64) -> Self {
+        (self * h).exp()
+    }
+    fn small_exp_times(self, delta: f64) -> Self {
+        let z = self * delta;
+        if z.abs() > 1e-4 {
+            return z.exp();
+        }
+        1.0 + z * (1.0 + z * (0.5 + z / 6.0))
+    }
+    fn re_product(self, other: Self) -> f64 {
+        self * other
+    }
+}
+
+impl PoleNumber for C64 {
+    const ZERO: Self = C64::new(0.0, 0.0);
+    const ONE: Self = C64::new(1.0, 0.0);
+    fn exp_times(self, h: f64) -> Self {
+        exp(self * h)
+    }
+    fn small_exp_times(self, delta: f64) -> Self {
+        small_exp(self * delta)
+    }
+    fn re_product(self, other: Self) -> f64 {
+        (self * other).re
+    }
+}
+
+/// The walk of [`superpose_simple`] for a pole `center` and coefficient `d`.
+fn walk_simple<P: PoleNumber>(
+    center: P,
+    d: P,
+    delay: f64,
+    scale: f64,
+    steps: &[(f64, f64)],
+    times: &[f64],
+    out: &mut [f64],
+) {
+    let constant = center == P::ZERO;
+    let mut sum = P::ZERO;
     let mut at = f64::NEG_INFINITY;
     let mut added = 0;
-    let mut advance = Advance::new(c.center);
+    let mut advance = Advance::new(center);
     for (o, &t) in out.iter_mut().zip(times) {
         while let Some(&(s, a)) = steps.get(added) {
             let start = s + delay;
@@ -737,36 +800,36 @@ fn superpose_simple(
             sum *= advance.over(t - at);
         }
         at = at.max(t);
-        *o += (d * sum).re;
+        *o += d.re_product(sum);
     }
 }
 
 /// e^{ch} for the spacings h of a walk, kept for the last distinct one (see [`SAME_ADVANCE`]).
-struct Advance {
-    center: C64,
+struct Advance<P> {
+    center: P,
     h: f64,
-    exp: C64,
+    exp: P,
 }
 
-impl Advance {
-    fn new(center: C64) -> Self {
+impl<P: PoleNumber> Advance<P> {
+    fn new(center: P) -> Self {
         Self {
             center,
             h: f64::NAN,
-            exp: C64::new(1.0, 0.0),
+            exp: P::ONE,
         }
     }
 
-    fn over(&mut self, h: f64) -> C64 {
+    fn over(&mut self, h: f64) -> P {
         let delta = h - self.h;
         if delta == 0.0 {
             return self.exp;
         }
         if delta.abs() <= SAME_ADVANCE * h {
-            return self.exp * small_exp(self.center * delta);
+            return self.exp * self.center.small_exp_times(delta);
         }
         self.h = h;
-        self.exp = exp(self.center * h);
+        self.exp = self.center.exp_times(h);
         self.exp
     }
 }
