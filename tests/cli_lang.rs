@@ -196,3 +196,97 @@ fn numbers_are_read_with_either_separator() {
     assert_eq!(numbers("Kp 1,5; Tp1 2 s", ','), [1.5, 2.0]);
     assert_eq!(numbers("-1e-5 and 3e2", '.'), [-1e-5, 300.0]);
 }
+
+/// Every kind of refusal clap makes is said in Portuguese under `--lang pt` (issue 22,
+/// item 11), and a negative number says what the flag takes, in both languages.
+#[test]
+fn the_argument_parser_refuses_in_portuguese() {
+    let cases: [(&[&str], &str); 9] = [
+        (
+            &["prbs", "--n", "1e3", "--lang", "pt"],
+            "valor inválido '1e3' para '--n <N>': '1e3' não é um número inteiro",
+        ),
+        (
+            &["prbs", "--n", "-1", "--lang", "pt"],
+            "--n recebe um número inteiro a partir de 0, não -1",
+        ),
+        (
+            &["fit", "--lang", "pt"],
+            "faltam argumentos obrigatórios: <FILE>",
+        ),
+        (&["frob", "--lang", "pt"], "subcomando desconhecido 'frob'"),
+        (
+            &["fit", STEP, "--method", "foo", "--lang", "pt"],
+            "valor inválido 'foo' para '--method <METHOD>': os valores possíveis são lm, nelder-mead",
+        ),
+        (
+            &["fit", STEP, "--tempo", "3", "--lang", "pt"],
+            "argumento inesperado '--tempo'",
+        ),
+        (
+            &["prbs", "--n", "10", "--n", "5", "--lang", "pt"],
+            "não pode ser dado mais de uma vez",
+        ),
+        (
+            &["prbs", "--n", "10", "--ts", "-1", "--lang", "pt"],
+            "--ts não aceita valor negativo, e foi dado -1",
+        ),
+        (&["fit", STEP, "--json=3", "--lang", "pt"], "erro:"),
+    ];
+    for (args, words) in cases {
+        let out = degrau(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = stderr(&out);
+        assert!(err.starts_with("erro: "), "{args:?}: {err}");
+        assert!(err.contains(words), "{args:?}: {err}");
+        assert!(
+            err.contains("Para mais informações, use '--help'."),
+            "{err}"
+        );
+        for english in [
+            "error:",
+            "invalid value",
+            "unexpected",
+            "required",
+            "For more",
+        ] {
+            assert!(!err.contains(english), "{args:?}: {err}");
+        }
+    }
+    let negative = stderr(&degrau(&["prbs", "--n", "-1"]));
+    assert!(
+        negative.starts_with("error: --n takes a whole number from 0 up, not -1"),
+        "{negative}"
+    );
+    let digits = stderr(&degrau(&["prbs", "--n", "1e3"]));
+    assert!(digits.contains("'1e3' is not a whole number"), "{digits}");
+}
+
+/// A one-column file has no time column: the message says so and names `--ts` (issue 22,
+/// item 12), whichever flags were guessed; a missing file's reason is in the language asked.
+#[test]
+fn a_one_column_file_asks_for_the_sampling_period() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/one_column.txt");
+    for args in [
+        vec!["fit", file],
+        vec!["hand", file, "--y-col", "1"],
+        vec!["fit", file, "--time-col", "1", "--y-col", "1"],
+    ] {
+        let err = stderr(&degrau(&args));
+        assert!(
+            err.contains("the file has one column, the output, and no time column")
+                && err.contains("--ts"),
+            "{args:?}: {err}"
+        );
+        assert!(!err.contains("same column"), "{err}");
+    }
+    let pt = stderr(&degrau(&["fit", file, "--lang", "pt"]));
+    assert!(
+        pt.contains("nenhuma coluna de tempo: dê o período de amostragem com --ts"),
+        "{pt}"
+    );
+    let fitted = degrau(&["fit", file, "--ts", "0.5", "--t0", "0.9", "--du", "1"]);
+    assert_eq!(fitted.status.code(), Some(0), "{}", stderr(&fitted));
+    let missing = stderr(&degrau(&["fit", "no_such_file.csv", "--lang", "pt"]));
+    assert!(missing.contains("esse arquivo não existe"), "{missing}");
+}

@@ -538,7 +538,7 @@ pub fn main() -> ExitCode {
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
     let cli = match Cli::try_parse_from(&args) {
         Ok(cli) => cli,
-        Err(e) => return refuse_arguments(&e, lang_in(&args).unwrap_or_default()),
+        Err(e) => return refuse_arguments(&e, &args, lang_in(&args).unwrap_or_default()),
     };
     let lang = cli.lang;
     // The window takes the language only when it is asked for; else it keeps its own.
@@ -561,11 +561,15 @@ pub fn main() -> ExitCode {
     }
 }
 
-/// clap's refusal: help and version go to stdout with code 0, usage errors to stderr with
-/// code 2. A refused flag value is said in `lang` (clap's own usage text stays English).
-fn refuse_arguments(e: &clap::Error, lang: Lang) -> ExitCode {
+/// clap's refusal of the command line `args`: help and version go to stdout with code 0,
+/// usage errors to stderr with code 2, said in `lang` ([`crate::text::clap_words`]).
+fn refuse_arguments(e: &clap::Error, args: &[std::ffi::OsString], lang: Lang) -> ExitCode {
     let code = ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(EXIT_BAD_INPUT));
-    match crate::text::cli::refused_value(e, lang) {
+    let args: Vec<String> = args
+        .iter()
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    match crate::text::clap_words::refused_arguments(e, &args, lang) {
         Some(words) => eprintln!("{}: {words}", StepPhrase::Error.get(lang)),
         None => {
             let _ = e.print();

@@ -334,9 +334,10 @@ pub enum DataNote {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
 pub enum DataError {
-    /// The system's reason (its own words) for not reading `path`.
+    /// The system's reason (its own words, and its kind) for not reading `path`.
     Io {
         path: String,
+        kind: std::io::ErrorKind,
         reason: String,
     },
     /// A zero byte: a binary file, not text.
@@ -440,6 +441,7 @@ fn read_capped(path: &Path) -> Result<Vec<u8>, DataError> {
     let shown = || path.display().to_string();
     let io = |e: std::io::Error| DataError::Io {
         path: shown(),
+        kind: e.kind(),
         reason: e.to_string(),
     };
     // Checked before opening, then again on the file opened (had the path been replaced).
@@ -1263,6 +1265,13 @@ fn check_distinct(layout: &Layout, chosen: [(Role, Option<usize>); 3]) -> Result
             if let (Some(a), Some(b)) = (a, b)
                 && a == b
             {
+                if layout.columns == 1 && first == Role::Time {
+                    // One column, asked to be the time too: the file has no time column.
+                    return Err(DataError::NoTime {
+                        line: layout.defined_at,
+                        available: layout.available(),
+                    });
+                }
                 return Err(DataError::SameColumn {
                     line: layout.defined_at,
                     first,

@@ -6,6 +6,7 @@
 
 use crate::cli::CliError;
 use crate::cli::fit::StartsError;
+use crate::ident::data::{Columns, DataError};
 use crate::ident::fit::MAX_STARTS;
 use crate::lti::Behaviour;
 use crate::lti::parse::ParseError;
@@ -91,35 +92,31 @@ pub fn no_window(reason: &str, lang: Lang) -> String {
     )
 }
 
-/// A flag value clap refused, in `lang`: `invalid value 'NaN' for '--t0 <T0>': …`. `None`
-/// for another kind of error, or in English, where clap's own message is printed.
-pub fn refused_value(e: &clap::Error, lang: Lang) -> Option<String> {
-    use clap::error::{ContextKind, ContextValue, ErrorKind};
-    if lang == Lang::En || e.kind() != ErrorKind::ValueValidation {
-        return None;
+/// A file with one column asked for its time: it has no time column, and the flag that
+/// gives the sampling period is said. `None` for any other load error.
+fn no_time_column(error: &DataError, lang: Lang) -> Option<String> {
+    let single = match error {
+        DataError::NoTime { available, .. } => columns_count(available) == 1,
+        _ => false,
+    };
+    single.then(|| {
+        lang.pick(
+            "the file has one column, the output, and no time column: give its sampling \
+             period with --ts (seconds, e.g. --ts 0.1)"
+                .to_string(),
+            "o arquivo tem uma coluna, a saída, e nenhuma coluna de tempo: dê o período de \
+             amostragem com --ts (segundos, por exemplo --ts 0.1)"
+                .to_string(),
+        )
+    })
+}
+
+/// How many columns a file has, as a message lists them.
+fn columns_count(columns: &Columns) -> usize {
+    match columns {
+        Columns::Unnamed { count } => *count,
+        Columns::Named(list) => list.shown.len() + list.more,
     }
-    let context = |kind| match e.get(kind) {
-        Some(ContextValue::String(s)) => Some(s.clone()),
-        _ => None,
-    };
-    let arg = context(ContextKind::InvalidArg)?;
-    let value = context(ContextKind::InvalidValue).unwrap_or_default();
-    let source = std::error::Error::source(e);
-    let why = match source {
-        Some(s) => match (
-            s.downcast_ref::<ParseError>(),
-            s.downcast_ref::<StartsError>(),
-        ) {
-            (Some(p), _) => parse_words(p, lang),
-            (_, Some(n)) => n.text(lang),
-            _ => s.to_string(),
-        },
-        None => String::new(),
-    };
-    Some(lang.pick(
-        format!("invalid value '{value}' for '{arg}': {why}"),
-        format!("valor inválido '{value}' para '{arg}': {why}"),
-    ))
 }
 
 impl Localize for StartsError {
@@ -254,7 +251,10 @@ impl Localize for CliError {
                 format!("could not write the output: {e}"),
                 format!("não foi possível escrever a saída: {e}"),
             ),
-            CliError::Data { path, error } => format!("{path}: {}", error.text(lang)),
+            CliError::Data { path, error } => match no_time_column(error, lang) {
+                Some(words) => format!("{path}: {words}"),
+                None => format!("{path}: {}", error.text(lang)),
+            },
             CliError::Experiment(e) => experiment_error(e, lang, Where::Cli),
             CliError::Diagnose(e) => e.text(lang),
             CliError::BadY0(text) => lang.pick(

@@ -402,13 +402,32 @@ impl Localize for DataNote {
 // ---------------------------------------------------------------------------------------
 // Errors
 
+/// Why a file could not be read, in `lang`: the common kinds in words, any other in the
+/// system's own (`reason`).
+fn io_reason(kind: std::io::ErrorKind, reason: &str, lang: Lang) -> String {
+    use std::io::ErrorKind;
+    let words = match kind {
+        ErrorKind::NotFound => ("there is no such file", "esse arquivo não existe"),
+        ErrorKind::PermissionDenied => (
+            "permission to read it was denied",
+            "não há permissão para lê-lo",
+        ),
+        ErrorKind::IsADirectory => ("it is a folder, not a file", "é uma pasta, não um arquivo"),
+        _ => return reason.to_string(),
+    };
+    lang.pick(words.0, words.1).to_string()
+}
+
 impl Localize for DataError {
     fn text(&self, lang: Lang) -> String {
         match self {
-            DataError::Io { path, reason } => lang.pick(
-                format!("could not read {path}: {reason}"),
-                format!("não foi possível ler {path}: {reason}"),
-            ),
+            DataError::Io { path, kind, reason } => {
+                let reason = io_reason(*kind, reason, lang);
+                lang.pick(
+                    format!("could not read {path}: {reason}"),
+                    format!("não foi possível ler {path}: {reason}"),
+                )
+            }
             DataError::Binary { line } => lang.pick(
                 format!(
                     "line {line} contains a zero byte: this is a binary file (a .mat or a \
@@ -1739,6 +1758,7 @@ fn data_errors() -> Vec<DataError> {
     vec![
         DataError::Io {
             path: "step.csv".into(),
+            kind: std::io::ErrorKind::NotFound,
             reason: "No such file or directory (os error 2)".into(),
         },
         DataError::Binary { line: 3 },

@@ -17,6 +17,7 @@ use serde::{Deserialize, Serialize};
 
 pub mod app;
 pub mod approx;
+pub mod clap_words;
 pub mod cli;
 pub mod code;
 pub mod design;
