@@ -204,3 +204,34 @@ fn the_table_compares_every_method_in_markdown() {
     assert!(table.iter().skip(2).all(|l| cells(l) == 6), "{text}");
     assert_eq!(cells(table[0]), 6);
 }
+
+/// "Within 5 %" is judged on the relative change for every metric, the overshoot too:
+/// 2.12 % → 4.32 % is a change of 103 %, not within (issue 22, item 14); the table says
+/// what was judged.
+#[test]
+fn within_is_judged_on_the_relative_change() {
+    let args = [
+        "approx",
+        "--num",
+        "1",
+        "--den",
+        "2,60,704,4144,12840,18000",
+        "--method",
+        "dominant",
+    ];
+    let mut with_json = args.to_vec();
+    with_json.push("--json");
+    let j = json(&with_json);
+    let overshoot = &j["metrics_error"]["overshoot"];
+    assert!((f(&overshoot["original"]) - 2.124).abs() < 1e-3, "{overshoot}");
+    assert_eq!(overshoot["within"], false, "{overshoot}");
+    for (name, m) in j["metrics_error"].as_object().unwrap() {
+        if let Some(rel) = m["relative"].as_f64() {
+            let negligible = m["difference"].as_f64().unwrap().abs() <= 0.1
+                && ["overshoot", "undershoot"].contains(&name.as_str());
+            assert_eq!(m["within"], rel.abs() <= 0.05 || negligible, "{name}: {m}");
+        }
+    }
+    let text = stdout(&degrau(&args));
+    assert!(text.contains("Within 5 % (relative)"), "{text}");
+}

@@ -29,7 +29,7 @@ crate::phrases! {
         Ise => ("ISE: ∫ (Δy)² dt", "ISE: ∫ (Δy)² dt (erro quadrático)"),
         Metric => ("Metric", "Métrica"),
         Difference => ("Difference", "Diferença"),
-        Within => ("Within 5 %", "Dentro de 5 %"),
+        Within => ("Within 5 % (relative)", "Dentro de 5 % (relativo)"),
         Yes => ("yes", "sim"),
         No => ("no", "não"),
         Model => ("Model", "Modelo"),
