@@ -223,7 +223,10 @@ fn within_is_judged_on_the_relative_change() {
     with_json.push("--json");
     let j = json(&with_json);
     let overshoot = &j["metrics_error"]["overshoot"];
-    assert!((f(&overshoot["original"]) - 2.124).abs() < 1e-3, "{overshoot}");
+    assert!(
+        (f(&overshoot["original"]) - 2.124).abs() < 1e-3,
+        "{overshoot}"
+    );
     assert_eq!(overshoot["within"], false, "{overshoot}");
     for (name, m) in j["metrics_error"].as_object().unwrap() {
         if let Some(rel) = m["relative"].as_f64() {

@@ -107,3 +107,34 @@ fn an_adequate_start_has_no_steps() {
     assert_eq!(j["steps"].as_array().unwrap().len(), 0, "{}", j["steps"]);
     assert_eq!(j["adequate"], true);
 }
+
+/// A dead time shorter than a sample on a PRBS record of 286 changes: its evidence gathers
+/// the samples just after every change (each signed by its change's direction), not one
+/// window shorter than a sample with one residual (issue 22, item 16). The record was made
+/// by `degrau prbs --n 600 --ts 0.1 --model P1D --params Kp=2,Tp1=0.6,Td=0.05 --noise 0.005
+/// --seed 3`.
+#[test]
+fn a_dead_time_on_many_changes_rests_on_all_of_them() {
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/prbs_short_dead_time.csv"
+    );
+    let j = diagnose(&[file]);
+    let steps = j["steps"].as_array().expect("steps");
+    let dead = steps
+        .iter()
+        .find(|s| s["cause"] == "dead_time")
+        .unwrap_or_else(|| panic!("{j}"));
+    let words = dead["evidence"].as_str().expect("evidence words");
+    assert!(
+        words.contains("after each of the 286 input changes"),
+        "{words}"
+    );
+    let tokens: Vec<&str> = words.split_whitespace().collect();
+    let n: usize = tokens
+        .windows(3)
+        .find(|w| w[0] == "the" && w[2] == "residuals")
+        .and_then(|w| w[1].parse().ok())
+        .unwrap_or(0);
+    assert!(n >= 200, "{n}: {words}");
+}

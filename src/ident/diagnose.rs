@@ -200,8 +200,10 @@ pub struct Bias {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum Evidence {
     /// The data stays near its operating point over `bias` while the model moves; a dead
-    /// time `td` makes the model wait.
-    DeadTime { bias: Bias, td: f64 },
+    /// time `td` makes the model wait. On a record of several `changes`, `bias` gathers the
+    /// `td` after every change (its residuals signed by each change's direction; `start` and
+    /// `end` are the first window's start and the last one's end).
+    DeadTime { bias: Bias, td: f64, changes: usize },
     /// The residuals are biased over the whole record; the model assumes `y0_held`, the
     /// data say `y0_estimated`.
     Offset {
@@ -1304,10 +1306,15 @@ fn interval_stats(data: &FitData, r: &[f64], (a, b): (f64, f64)) -> Bias {
         .filter(|(t, _)| **t >= a && **t <= b)
         .map(|(_, e)| *e)
         .collect();
+    bias_of(&inside, (a, b))
+}
+
+/// The mean of the residuals `inside` and the share of them of its sign, said of (a, b).
+fn bias_of(inside: &[f64], (start, end): (f64, f64)) -> Bias {
     let n = inside.len();
     let none = Bias {
-        start: a,
-        end: b,
+        start,
+        end,
         n: 0,
         mean: 0.0,
         same_sign: 0.0,
@@ -1327,6 +1334,30 @@ fn interval_stats(data: &FitData, r: &[f64], (a, b): (f64, f64)) -> Bias {
         same_sign: same,
         ..none
     }
+}
+
+/// The residuals `r` just after every input change, each signed by its change's direction
+/// (the dead time's misfit turns with the change), gathered into one [`Bias`] from the first
+/// change to the last window's end. A change's window runs from the sample after it to the
+/// first sample `td` or more after it: where the model has moved and the data has not yet
+/// (or less), however short the dead time against the sampling.
+fn after_each_change(data: &FitData, r: &[f64], td: f64) -> Bias {
+    let changes = &data.input.changes;
+    let t = &data.times;
+    let mut end = f64::NAN;
+    let mut oriented = Vec::new();
+    for c in changes {
+        let first = t.partition_point(|&s| s <= c.t);
+        let last = t
+            .partition_point(|&s| s < c.t + td)
+            .min(t.len().saturating_sub(1));
+        if first <= last && first < t.len() {
+            oriented.extend(r[first..=last].iter().map(|e| c.du.signum() * e));
+            end = t[last];
+        }
+    }
+    let start = changes.first().map_or(0.0, |c| c.t);
+    bias_of(&oriented, (start, if end.is_nan() { start } else { end }))
 }
 
 /// The evidence for a cause: which statistic over which interval.
@@ -1352,9 +1383,13 @@ fn explain(
     match cause {
         Cause::DeadTime => {
             let td = v.get(Param::Td);
-            let interval = (t0, t0 + td);
-            let bias = interval_stats(data, &r, interval);
-            (Evidence::DeadTime { bias, td }, Some(interval))
+            let changes = data.input.changes.len();
+            let bias = match changes {
+                0 | 1 => interval_stats(data, &r, (t0, t0 + td)),
+                _ => after_each_change(data, &r, td),
+            };
+            let interval = (bias.start, bias.end);
+            (Evidence::DeadTime { bias, td, changes }, Some(interval))
         }
         Cause::Offset => {
             let bias = interval_stats(data, &r, (t_first, t_last));

@@ -1319,7 +1319,31 @@ fn maybe(lang: Lang, t: Option<f64>) -> String {
 impl Localize for Evidence {
     fn text(&self, lang: Lang) -> String {
         match self {
-            Evidence::DeadTime { bias, td } => {
+            Evidence::DeadTime { bias, td, changes } if *changes > 1 => {
+                let (a, b, td) = (n4(lang, bias.start), n4(lang, bias.end), n4(lang, *td));
+                let (n, mean, same) = (
+                    bias.n,
+                    n4(lang, bias.mean),
+                    n4(lang, 100.0 * bias.same_sign),
+                );
+                lang.pick(
+                    format!(
+                        "Just after each of the {changes} input changes (to the first sample \
+                         {td} s or more after it; from t = {a} s to {b} s) the data has moved \
+                         less than the model: the {n} residuals there, each signed by its \
+                         change's direction, average {mean} ({same} % of one sign). A dead time \
+                         Td = {td} s makes the model wait."
+                    ),
+                    format!(
+                        "Logo depois de cada uma das {changes} mudanças da entrada (até a primeira \
+                         amostra {td} s ou mais depois dela; de t = {a} s a {b} s) os dados se \
+                         moveram menos que o modelo: os {n} resíduos ali, cada um com o sinal da \
+                         direção da sua mudança, têm média {mean} ({same} % de um mesmo sinal). \
+                         Um tempo morto Td = {td} s faz o modelo esperar."
+                    ),
+                )
+            }
+            Evidence::DeadTime { bias, td, .. } => {
                 let (a, b, w, td) = (
                     n4(lang, bias.start),
                     n4(lang, bias.end),
@@ -1866,7 +1890,16 @@ fn evidence() -> Vec<Evidence> {
         same_sign: 0.92,
     };
     vec![
-        Evidence::DeadTime { bias, td: 1.76 },
+        Evidence::DeadTime {
+            bias,
+            td: 1.76,
+            changes: 1,
+        },
+        Evidence::DeadTime {
+            bias,
+            td: 0.008,
+            changes: 266,
+        },
         Evidence::Offset {
             bias,
             y0_held: 20.9,

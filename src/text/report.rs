@@ -597,6 +597,7 @@ mod tests {
                     same_sign: 1.0,
                 },
                 td: 1.759,
+                changes: 1,
             },
             interval: Some((5.0, 6.759)),
             gain: Gain {
