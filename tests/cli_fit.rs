@@ -189,3 +189,48 @@ fn a_flat_rest_of_eight_samples_holds_y0_on_a_prbs_record() {
     let kp = p["Kp"].as_f64().unwrap();
     assert!((kp - 2.0).abs() < 0.1, "Kp = {kp}");
 }
+
+/// Input and output logged to two files on their own grids (the spray dryer's layout, a
+/// step logged as two rows at one instant), joined on time by `--u-file` (issue 22, item
+/// 17): the fit and the diagnosis find the process's gain (0.9) and lag (2.4). The files
+/// are synthetic: a P1D (Kp 0.9, Tp1 2.4, Td 0.16) stepped 165 → 175 at 4.961, noise 0.05.
+#[test]
+fn the_input_can_come_from_its_own_file() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
+    let (output, input) = (
+        format!("{dir}two_files_output.txt"),
+        format!("{dir}two_files_input.txt"),
+    );
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_degrau"))
+            .args(args)
+            .output()
+            .expect("run degrau")
+    };
+    let fitted = fit(&[&output, "--u-file", &input]);
+    let kp = fitted["params"]["Kp"].as_f64().expect("Kp");
+    assert!((kp - 0.9).abs() < 0.02, "fit: Kp {kp}");
+    let diagnosed = run(&["diagnose", &output, "--u-file", &input]);
+    let text = String::from_utf8_lossy(&diagnosed.stdout);
+    let gain: f64 = text
+        .split("Static gain Kp = Δy/Δu = ")
+        .nth(1)
+        .and_then(|rest| rest.split(',').next())
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or_else(|| panic!("{text}"));
+    assert!((gain - 0.9).abs() < 0.02, "diagnose: Kp {gain}");
+    let missing = run(&[
+        "fit",
+        &output,
+        "--u-file",
+        "no_such_input.txt",
+        "--lang",
+        "pt",
+    ]);
+    assert_eq!(missing.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&missing.stderr);
+    assert!(
+        err.contains("no_such_input.txt: não foi possível ler"),
+        "{err}"
+    );
+}

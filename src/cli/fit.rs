@@ -32,9 +32,13 @@ pub struct DataArgs {
     /// Output column: name or 1-based position.
     #[arg(long)]
     pub y_col: Option<String>,
-    /// Input column: name or 1-based position.
+    /// Input column: name or 1-based position (in --u-file when one is given).
     #[arg(long)]
     pub u_col: Option<String>,
+    /// The input in a second file (its own time and input columns, its own grid), joined
+    /// on time: each sample takes the input's last value logged at or before it.
+    #[arg(long, value_name = "FILE")]
+    pub u_file: Option<PathBuf>,
     /// Sampling period in seconds, for a file without a time column.
     #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub ts: Option<f64>,
@@ -143,9 +147,13 @@ pub struct OpenArgs {
     /// Output column: name or 1-based position.
     #[arg(long)]
     pub y_col: Option<String>,
-    /// Input column: name or 1-based position.
+    /// Input column: name or 1-based position (in --u-file when one is given).
     #[arg(long)]
     pub u_col: Option<String>,
+    /// The input in a second file (its own time and input columns, its own grid), joined
+    /// on time: each sample takes the input's last value logged at or before it.
+    #[arg(long, value_name = "FILE")]
+    pub u_file: Option<PathBuf>,
     /// Sampling period in seconds, for a file without a time column.
     #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub ts: Option<f64>,
@@ -195,15 +203,32 @@ impl DataArgs {
     /// The file as loaded, before any window or filter.
     pub fn read(&self) -> Result<StepTest, CliError> {
         let text = |c: &Option<String>| c.clone().unwrap_or_default();
+        let input = match self.u_file {
+            Some(_) => "none".to_string(),
+            None => text(&self.u_col),
+        };
         let options = LoadOptions::from_text(
             &text(&self.time_col),
             &text(&self.y_col),
-            &text(&self.u_col),
+            &input,
             self.ts,
             self.skip_rows,
         );
-        data::load_file(&self.file, &options).map_err(|error| CliError::Data {
-            path: self.file.display().to_string(),
+        let load = |path: &std::path::Path, options: &LoadOptions| {
+            data::load_file(path, options).map_err(|error| CliError::Data {
+                path: path.display().to_string(),
+                error,
+            })
+        };
+        let test = load(&self.file, &options)?;
+        let Some(u_file) = &self.u_file else {
+            return Ok(test);
+        };
+        // The input's file: its value column is read as that file's "output".
+        let values = LoadOptions::from_text("", &text(&self.u_col), "none", self.ts, 0);
+        let input = load(u_file, &values)?;
+        crate::ident::join::join_on_time(test, &input).map_err(|error| CliError::Data {
+            path: u_file.display().to_string(),
             error,
         })
     }

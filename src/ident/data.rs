@@ -328,6 +328,9 @@ pub enum DataNote {
     IndexIgnored { columns: ColumnList },
     /// More pairs of rows share a time than were listed.
     MoreEqualTimes { pairs: usize },
+    /// The input came from a second file joined on time ([`super::join`]); the first
+    /// `held_back` output samples came before its first instant and took its first value.
+    InputJoined { held_back: usize },
 }
 
 /// Why a file could not be loaded; lines are 1-based, as an editor shows them.
@@ -425,6 +428,11 @@ pub enum DataError {
     TimeOverflow {
         sampling_period: f64,
         rows: usize,
+    },
+    /// The input's file ([`super::join`]) starts after the output's last sample.
+    InputAfterOutput {
+        input_start: f64,
+        output_end: f64,
     },
 }
 

@@ -13,6 +13,7 @@ pub mod guess;
 pub mod hand;
 pub mod handles;
 pub mod holdout;
+pub mod join;
 pub mod lag_pair;
 pub mod landscape;
 pub mod models;

@@ -371,6 +371,27 @@ impl Localize for DataNote {
                     format!("mantidas as amostras {first} a {last} de {count} (t = {a} s a {b} s)"),
                 )
             }
+            DataNote::InputJoined { held_back: 0 } => lang
+                .pick(
+                    "the input was read from its own file and joined on time: each sample \
+                     takes the input's last value logged at or before it",
+                    "a entrada foi lida do seu próprio arquivo e unida pelo tempo: cada amostra \
+                     recebe o último valor da entrada registrado até o seu instante",
+                )
+                .to_string(),
+            DataNote::InputJoined { held_back } => lang.pick(
+                format!(
+                    "the input was read from its own file and joined on time: each sample takes \
+                     the input's last value logged at or before it; the first {held_back} \
+                     sample(s), before the input's first, took its first value"
+                ),
+                format!(
+                    "a entrada foi lida do seu próprio arquivo e unida pelo tempo: cada amostra \
+                     recebe o último valor da entrada registrado até o seu instante; a(s) \
+                     {held_back} primeira(s) amostra(s), antes da primeira da entrada, \
+                     recebeu(ram) o seu primeiro valor"
+                ),
+            ),
             DataNote::IndexIgnored { columns } => {
                 let one = columns.shown.len() == 1 && columns.more == 0;
                 let list = columns_text(columns, lang, |c| c.position.to_string());
@@ -637,6 +658,22 @@ impl Localize for DataError {
                         "{w} tem {size} bytes ou mais, acima do limite de {MAX_FILE_BYTES} \
                          (1 GiB): um ensaio ao degrau é bem menor; mantenha as linhas de que \
                          precisa (ou uma a cada n) e carregue isso"
+                    ),
+                )
+            }
+            DataError::InputAfterOutput {
+                input_start,
+                output_end,
+            } => {
+                let (a, b) = (full(lang, *input_start), full(lang, *output_end));
+                lang.pick(
+                    format!(
+                        "the input's file starts at t = {a} s, after the output's last sample \
+                         (t = {b} s): the two files share no time"
+                    ),
+                    format!(
+                        "o arquivo da entrada começa em t = {a} s, depois da última amostra da \
+                         saída (t = {b} s): os dois arquivos não têm tempo em comum"
                     ),
                 )
             }
@@ -1665,10 +1702,11 @@ fn data_note_id(n: &DataNote) -> &'static str {
         DataNote::Window { .. } => "Window",
         DataNote::IndexIgnored { .. } => "IndexIgnored",
         DataNote::MoreEqualTimes { .. } => "MoreEqualTimes",
+        DataNote::InputJoined { .. } => "InputJoined",
     }
 }
 #[cfg(test)]
-const DATA_NOTE_VARIANTS: usize = 16;
+const DATA_NOTE_VARIANTS: usize = 17;
 
 fn named(position: usize, name: &str) -> Column {
     Column {
@@ -1743,6 +1781,7 @@ fn data_notes() -> Vec<DataNote> {
                 more: 0,
             },
         },
+        DataNote::InputJoined { held_back: 1 },
         DataNote::MoreEqualTimes { pairs: 4 },
     ]
 }
@@ -1769,10 +1808,11 @@ fn data_error_id(e: &DataError) -> &'static str {
         DataError::NotAFile { .. } => "NotAFile",
         DataError::TooLarge { .. } => "TooLarge",
         DataError::TimeOverflow { .. } => "TimeOverflow",
+        DataError::InputAfterOutput { .. } => "InputAfterOutput",
     }
 }
 #[cfg(test)]
-const DATA_ERROR_VARIANTS: usize = 20;
+const DATA_ERROR_VARIANTS: usize = 21;
 
 fn data_errors() -> Vec<DataError> {
     let named_columns = Columns::Named(ColumnList {
@@ -1860,6 +1900,10 @@ fn data_errors() -> Vec<DataError> {
         DataError::TimeOverflow {
             sampling_period: 1e308,
             rows: 10,
+        },
+        DataError::InputAfterOutput {
+            input_start: 12.5,
+            output_end: 10.0,
         },
     ]
 }
