@@ -37,7 +37,7 @@ use crate::lti::poly::format_poly;
 use crate::lti::tf::Stability;
 use crate::lti::{
     Behaviour, C64, LtiError, StepAnalysis, StepInfo, StepInfoOptions, StepResponse,
-    TransferFunction, analyse, fmt_c,
+    TransferFunction, analyse, fmt_c_rounded,
 };
 use crate::text::cli::{Heading, StepPhrase};
 use crate::text::step::Metric;
@@ -804,7 +804,7 @@ fn system_lines(a: &Analysis, lang: Lang) -> Vec<String> {
             StepPhrase::NoRoots.get(lang).to_string()
         } else {
             r.iter()
-                .map(|&c| lang.localize_number(&fmt_c(c)))
+                .map(|&c| lang.localize_number(&fmt_c_rounded(c)))
                 .collect::<Vec<_>>()
                 .join(lang.pick(", ", "; "))
         }
@@ -820,7 +820,7 @@ fn system_lines(a: &Analysis, lang: Lang) -> Vec<String> {
     let rows = [
         (
             StepPhrase::System.get(lang),
-            format!("G(s) = {}", tf.describe()),
+            format!("G(s) = {}", tf.describe_rounded()),
         ),
         ("", format!("G(s) = {}", polynomial_form(tf))),
         (StepPhrase::Poles.get(lang), roots(tf.poles())),

@@ -220,6 +220,24 @@ impl Localize for LtiError {
                     )
                 }
             }
+            LoopPolesUnresolved { kp } => {
+                let kp = num(lang, *kp);
+                if en {
+                    format!(
+                        "at Kp = {kp} the closed loop's poles (the roots of den + Kp·num) are \
+                         beyond double precision: its coefficients span so many decades that \
+                         rounding hides a pole or the side of the imaginary axis it lies on; \
+                         a smaller Kp can be computed"
+                    )
+                } else {
+                    format!(
+                        "com Kp = {kp} os polos da malha fechada (as raízes de den + Kp·num) \
+                         estão além da precisão dupla: seus coeficientes se espalham por tantas \
+                         décadas que o arredondamento esconde um polo ou o lado do eixo \
+                         imaginário em que ele está; um Kp menor pode ser calculado"
+                    )
+                }
+            }
             OutOfRange => lang
                 .pick(
                     "the poles and zeros span too many decades for double precision: the step \
@@ -417,6 +435,7 @@ pub fn messages() -> Vec<Message> {
         LtiError::DcGainNotScalable(_) => LtiError::DcGainNotScalable(0.0),
         LtiError::DelayInLoop => LtiError::DelayInLoop,
         LtiError::BadLoopGain(_) => LtiError::BadLoopGain(f64::INFINITY),
+        LtiError::LoopPolesUnresolved { .. } => LtiError::LoopPolesUnresolved { kp: 1e300 },
         LtiError::OutOfRange => LtiError::OutOfRange,
         LtiError::Subnormal { .. } => LtiError::Subnormal {
             what: coefficient,
