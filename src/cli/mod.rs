@@ -40,7 +40,7 @@ use crate::lti::{
     TransferFunction, analyse, fmt_c_rounded,
 };
 use crate::text::cli::{Heading, StepPhrase};
-use crate::text::step::Metric;
+use crate::text::step::{IntegratorPole, Metric, static_gain_words};
 use crate::text::{Lang, Localize};
 
 /// The most samples one system may ask for (8 MB each for t and y).
@@ -810,11 +810,8 @@ fn system_lines(a: &Analysis, lang: Lang) -> Vec<String> {
         }
     };
     let dc_gain = tf.dc_gain();
-    let dc_text = if dc_gain.is_finite() {
-        prose_number(dc_gain, lang)
-    } else {
-        format!("{dc_gain} ({})", StepPhrase::Integrates.get(lang))
-    };
+    let dc_text = static_gain_words(dc_gain, IntegratorPole::S, lang)
+        .unwrap_or_else(|| prose_number(dc_gain, lang));
     let stability = crate::text::cli::stability_line(tf.stability(), a.response.behaviour(), lang);
     let step = crate::text::cli::step_line(&prose_number(a.response.amplitude(), lang), lang);
     let rows = [

@@ -16,6 +16,7 @@ pub mod divided;
 pub mod expr;
 pub mod feedback;
 pub mod locus;
+pub mod markov;
 pub mod metrics;
 pub mod number;
 pub mod parse;

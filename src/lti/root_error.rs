@@ -180,7 +180,7 @@ mod tests {
     fn an_exact_root_has_no_backward_error() {
         assert_eq!(backward_error(&[1.0, 3.0, 2.0], C64::new(-1.0, 0.0)), 0.0);
         let e = backward_error(&[1.0, 3.0, 2.0], C64::new(-1.5, 0.0));
-        assert!((e - 0.25 / 6.75).abs() < 1e-15, "{e}");
+        assert!((e - 0.25 / 8.75).abs() < 1e-15, "{e}");
     }
 
     #[test]

@@ -199,17 +199,23 @@ impl TransferFunction {
 
     /// Poles left after removing those exactly equal to a zero.
     pub fn uncancelled_poles(&self) -> Vec<C64> {
+        self.cancelled_roots().1
+    }
+
+    /// The zeros and the poles left after each pole exactly equal to a zero cancels with it
+    /// (s/s is 1): the same G(s), of the lowest order its roots show.
+    pub fn cancelled_roots(&self) -> (Vec<C64>, Vec<C64>) {
         let mut zeros = self.zeros.clone();
-        let mut out = Vec::with_capacity(self.poles.len());
+        let mut poles = Vec::with_capacity(self.poles.len());
         for &p in &self.poles {
             match zeros.iter().position(|&z| z == p) {
                 Some(i) => {
-                    zeros.swap_remove(i);
+                    zeros.remove(i);
                 }
-                None => out.push(p),
+                None => poles.push(p),
             }
         }
-        out
+        (zeros, poles)
     }
 
     /// G evaluated at a complex frequency s (delay included).

@@ -202,12 +202,41 @@ impl Localize for DiscreteError {
             }
             DiscreteError::NumeratorTooLong { na, nb } => lang.pick(
                 format!(
-                    "nb = {nb} b's for na = {na}: d2c inverts nb ≤ na, or nb = 2 with na = 1 (a fractional dead time)"
+                    "nb = {nb} b's for na = {na}: the ZOH image of a proper G(s) has at most na + 1 (d2c inverts nb ≤ na + 1)"
                 ),
                 format!(
-                    "nb = {nb} b's para na = {na}: o d2c inverte nb ≤ na, ou nb = 2 com na = 1 (um tempo morto fracionário)"
+                    "nb = {nb} b's para na = {na}: a imagem ZOH de um G(s) próprio tem no máximo na + 1 (o d2c inverte nb ≤ na + 1)"
                 ),
             ),
+            DiscreteError::DelayTooLong { samples } => {
+                let samples = lang.num(*samples, 6);
+                let most = lang.num(crate::lti::discrete::MAX_DELAY_SAMPLES as f64, 6);
+                lang.pick(
+                    format!(
+                        "the dead time spans {samples} sampling periods: at most {most} can be counted exactly in double precision"
+                    ),
+                    format!(
+                        "o tempo morto abrange {samples} períodos de amostragem: no máximo {most} podem ser contados exatamente em precisão dupla"
+                    ),
+                )
+            }
+            DiscreteError::CommonFactor { root } => {
+                let z = pole_text(*root, lang);
+                lang.pick(
+                    format!(
+                        "B(z) and A(z) share the root z = {z}: a pole cancelled by a zero, so H(z) is of lower order than A(z) says; write it without the common factor"
+                    ),
+                    format!(
+                        "B(z) e A(z) têm a raiz z = {z} em comum: um polo cancelado por um zero, então H(z) é de ordem menor do que A(z) diz; escreva-o sem o fator comum"
+                    ),
+                )
+            }
+            DiscreteError::NoZohEquivalent => lang
+                .pick(
+                    "no continuous G(s)·e^(−θs) has these samples: the zero-order-hold discretisation of the candidate does not give H(z) back",
+                    "nenhum G(s)·e^(−θs) contínuo tem estas amostras: a discretização com segurador de ordem zero do candidato não devolve H(z)",
+                )
+                .into(),
             DiscreteError::Lti(e) => e.text(lang),
         }
     }
@@ -315,7 +344,12 @@ pub fn messages() -> Vec<Message> {
         DiscreteError::RepeatedPoles {
             pole: C64::new(0.5, 0.0),
         },
-        DiscreteError::NumeratorTooLong { na: 2, nb: 3 },
+        DiscreteError::NumeratorTooLong { na: 2, nb: 4 },
+        DiscreteError::DelayTooLong { samples: 1e19 },
+        DiscreteError::CommonFactor {
+            root: C64::new(0.9, 0.0),
+        },
+        DiscreteError::NoZohEquivalent,
     ];
     let prbs = [
         PrbsError::BadOrder(40),
