@@ -545,5 +545,78 @@ proptest! {
             "stable"
         };
         prop_assert_eq!(v["stability"].as_str(), Some(expected), "{:?}", args);
+        // Routh–Hurwitz on den + K·num, in 768 bits, says the same where it is clear.
+        if let Some(right_half_plane) = routh_unstable_roots(&characteristic) {
+            let stated = v["stability"].as_str().unwrap_or_default();
+            prop_assert_eq!(
+                stated == "unstable",
+                right_half_plane > 0,
+                "{:?}: Routh counts {} roots in the right half plane",
+                args,
+                right_half_plane
+            );
+        }
     }
+}
+
+/// The number of roots of p in the right half plane by Routh's array in 768-bit arithmetic
+/// (sign changes of its first column), `None` where a first-column entry is 0 or cancels to
+/// within 1e-8 of the products it is the difference of (a root near the axis, where the
+/// rounding of p's coefficients may decide).
+fn routh_unstable_roots(p: &[f64]) -> Option<usize> {
+    use astro_float::{BigFloat, RoundingMode};
+    const BITS: usize = 768;
+    const RM: RoundingMode = RoundingMode::ToEven;
+    let big = |x: f64| BigFloat::from_f64(x, BITS);
+    let float = |x: &BigFloat| x.to_string().parse::<f64>().unwrap_or(f64::NAN);
+    let mut rows: Vec<Vec<BigFloat>> = vec![
+        p.iter().step_by(2).map(|&c| big(c)).collect(),
+        p.iter().skip(1).step_by(2).map(|&c| big(c)).collect(),
+    ];
+    let mut firsts: Vec<f64> = rows.iter().map(|row| float(&row[0])).collect();
+    while rows.len() < p.len() {
+        let (upper, lower) = (&rows[rows.len() - 2], &rows[rows.len() - 1]);
+        let lead = lower[0].clone();
+        if lead.is_zero() {
+            return None;
+        }
+        let at = |row: &[BigFloat], j: usize| row.get(j).cloned().unwrap_or_else(|| big(0.0));
+        let terms = |j: usize| {
+            (
+                lead.mul(&at(upper, j + 1), BITS, RM),
+                upper[0].mul(&at(lower, j + 1), BITS, RM),
+            )
+        };
+        let (a, b) = terms(0);
+        let first = a.sub(&b, BITS, RM).div(&lead, BITS, RM);
+        let size = (float(&a).abs() + float(&b).abs()) / float(&lead).abs();
+        if float(&first).abs() <= 1e-8 * size {
+            return None;
+        }
+        firsts.push(float(&first));
+        let next: Vec<BigFloat> = (0..upper.len().saturating_sub(1).max(1))
+            .map(|j| {
+                let (a, b) = terms(j);
+                a.sub(&b, BITS, RM).div(&lead, BITS, RM)
+            })
+            .collect();
+        rows.push(next);
+    }
+    if firsts.iter().any(|x| x.is_nan() || *x == 0.0) {
+        return None;
+    }
+    Some(
+        firsts
+            .windows(2)
+            .filter(|w| w[0].signum() != w[1].signum())
+            .count(),
+    )
+}
+
+#[test]
+fn routh_counts_the_right_half_plane_roots() {
+    assert_eq!(routh_unstable_roots(&[1.0, 6.0, 11.0, 6.0]), Some(0));
+    assert_eq!(routh_unstable_roots(&[1.0, 7.0, 5e21, 5e22]), Some(2));
+    assert_eq!(routh_unstable_roots(&[1.0, -1.0]), Some(1));
+    assert_eq!(routh_unstable_roots(&[1.0, 1.0, 1.0, 1.0]), None, "±j");
 }

@@ -460,7 +460,7 @@ struct DelaySplit {
 /// none. More than [`MAX_DELAY_SAMPLES`] samples is refused.
 fn split_delay(theta: f64, h: f64) -> Result<DelaySplit, DiscreteError> {
     let samples = theta / h;
-    if !(samples <= MAX_DELAY_SAMPLES as f64) {
+    if samples > MAX_DELAY_SAMPLES as f64 {
         return Err(DiscreteError::DelayTooLong { samples });
     }
     let fraction = theta % h;

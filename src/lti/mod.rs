@@ -66,8 +66,9 @@ pub enum LtiError {
     DelayInLoop,
     /// The closed-loop gain Kp is not finite.
     BadLoopGain(f64),
-    /// The closed loop's poles at this Kp cannot be computed right in double precision
-    /// (den + Kp·num spans too many decades).
+    /// The closed loop's poles at this Kp cannot be computed right in double precision: a
+    /// root of den + Kp·num is not one to rounding, or rounding hides its side of the
+    /// imaginary axis.
     LoopPolesUnresolved { kp: f64 },
     /// The roots span too many decades for double precision.
     OutOfRange,

@@ -225,16 +225,14 @@ impl Localize for LtiError {
                 if en {
                     format!(
                         "at Kp = {kp} the closed loop's poles (the roots of den + Kp·num) are \
-                         beyond double precision: its coefficients span so many decades that \
-                         rounding hides a pole or the side of the imaginary axis it lies on; \
-                         a smaller Kp can be computed"
+                         beyond double precision: rounding in its coefficients hides a pole, or \
+                         the side of the imaginary axis one lies on"
                     )
                 } else {
                     format!(
                         "com Kp = {kp} os polos da malha fechada (as raízes de den + Kp·num) \
-                         estão além da precisão dupla: seus coeficientes se espalham por tantas \
-                         décadas que o arredondamento esconde um polo ou o lado do eixo \
-                         imaginário em que ele está; um Kp menor pode ser calculado"
+                         estão além da precisão dupla: o arredondamento dos seus coeficientes \
+                         esconde um polo, ou o lado do eixo imaginário em que um deles está"
                     )
                 }
             }
