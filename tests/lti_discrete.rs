@@ -286,13 +286,37 @@ fn c2d_at_a_nanosecond_has_its_static_gain_and_its_samples() {
 }
 
 #[test]
+fn c2d_refuses_periods_whose_model_double_precision_cannot_hold() {
+    for (args, en, pt) in [
+        (
+            ["--num", "1", "--den", "1,1", "--ts", "1e-20"],
+            "is too short for the pole s = -1",
+            "é curto demais para o polo s = -1",
+        ),
+        (
+            ["--num", "1", "--den", "1,0,0", "--ts", "1e200"],
+            "the coefficients of B(z) fall outside double precision's range",
+            "os coeficientes de B(z) saem da faixa da precisão dupla",
+        ),
+    ] {
+        for (lang, words) in [("en", en), ("pt", pt)] {
+            let mut all = vec!["--lang", lang, "c2d"];
+            all.extend_from_slice(&args);
+            let out = degrau(&all);
+            assert_eq!(out.status.code(), Some(2), "{all:?}: {}", stdout(&out));
+            assert!(stderr(&out).contains(words), "{}", stderr(&out));
+        }
+    }
+}
+
+#[test]
 fn c2d_refuses_a_delay_beyond_exact_sample_counts() {
     for delay in ["1e19", "1e18"] {
         for (lang, words) in [
-            ("en", "sampling periods: at most 9.0072e15 can be counted"),
+            ("en", "sampling periods: at most 1.09951e12 are counted"),
             (
                 "pt",
-                "períodos de amostragem: no máximo 9,0072e15 podem ser contados",
+                "períodos de amostragem: no máximo 1,09951e12 são contados",
             ),
         ] {
             let out = degrau(&[
@@ -303,11 +327,15 @@ fn c2d_refuses_a_delay_beyond_exact_sample_counts() {
             assert!(stderr(&out).contains(words), "{}", stderr(&out));
         }
     }
-    // 1e14 s is 10¹⁵ samples exactly, plus the hold's one.
+    // 1e10 s is 10¹¹ samples exactly, plus the hold's one, and d2c gives it back.
     let v = json(&[
-        "c2d", "--num", "1", "--den", "1,1", "--ts", "0.1", "--delay", "1e14", "--json",
+        "c2d", "--num", "1", "--den", "1,1", "--ts", "0.1", "--delay", "1e10", "--json",
     ]);
-    assert_eq!(v["nk"].as_u64(), Some(1_000_000_000_000_001));
+    assert_eq!(v["nk"].as_u64(), Some(100_000_000_001));
+    let g = there_and_back(&[
+        "--num", "1", "--den", "1,1", "--ts", "0.1", "--delay", "1e10",
+    ]);
+    assert_eq!(g["delay"].as_f64(), Some(1e10), "{g}");
     // 0.3 s at 0.1 s is three whole samples, though 0.3 < 3 × 0.1 in binary.
     let v = json(&[
         "c2d", "--num", "1", "--den", "1,1", "--ts", "0.1", "--delay", "0.3", "--json",

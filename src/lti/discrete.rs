@@ -6,7 +6,7 @@
 //! - **c2d** ([`c2d`]): the exact zero-order-hold discretisation of a
 //!   [`TransferFunction`] with its dead time θ, fractional part included: θ = d·h + L with
 //!   d whole samples and 0 ≤ L < h, split exactly (L = θ mod h; d up to
-//!   [`MAX_DELAY_SAMPLES`], beyond which a count of samples is not exact). Poles and zeros
+//!   [`MAX_DELAY_SAMPLES`], beyond which θ's own rounding is a good part of a sample). Poles and zeros
 //!   that are exactly equal cancel first (s/s is the gain 1, whose image is B = [1]). The
 //!   denominator has the poles e^{pᵢh}; the numerator comes from the pulse response
 //!   g(k) = s(kh) − s((k−1)h) of the step response s(t) of G·e^{−Ls}, through B = A·G
@@ -86,6 +86,13 @@ pub enum DiscreteError {
     NumeratorTooLong { na: usize, nb: usize },
     /// A dead time of more samples than [`MAX_DELAY_SAMPLES`] (θ/h here).
     DelayTooLong { samples: f64 },
+    /// A sampling period so short against this continuous pole that e^{p·h} differs from 1
+    /// by less than [`MIN_POLE_STEP`]: A(z)'s coefficients could not tell it from an
+    /// integrator.
+    PeriodTooShort { ts: f64, pole: C64 },
+    /// B(z)'s coefficients at this period fall outside double precision's normal range
+    /// (they scale as h^r for a relative degree r).
+    NumeratorOutOfRange { ts: f64 },
     /// B(z) and A(z) share this root: a pole cancelled by a zero, so H is of lower order
     /// than A says.
     CommonFactor { root: C64 },
@@ -106,9 +113,14 @@ impl From<LtiError> for DiscreteError {
 /// [`c2d`]: the rounding left where the exact coefficient is 0.
 const NEGLIGIBLE: f64 = 1e-13;
 
-/// The most samples a dead time may span: counts up to 2⁵³ are exact in double precision
-/// (θ/h = 1e20 would be rounded to a multiple of 16384 samples).
-pub const MAX_DELAY_SAMPLES: usize = 1 << 53;
+/// The most samples a dead time may span: up to 2⁴⁰, θ = d·h + L in double precision places
+/// θ within 2⁻¹² of a sample, so d is exact and L is known (at θ/h = 1e20, θ's own rounding
+/// is 16384 samples).
+pub const MAX_DELAY_SAMPLES: usize = 1 << 40;
+
+/// The least |p·h| of a pole p ≠ 0 that [`c2d`] samples: A(z)'s coefficients then hold
+/// 1 − e^{p·h} to three digits (at 1e-16 they would hold none, and say z = 1).
+pub const MIN_POLE_STEP: f64 = 1e-13;
 
 /// c2d(d2c(H)) must give H's coefficients back to this, relative to the largest of A's and
 /// of B's.
@@ -353,16 +365,17 @@ impl DiscreteTf {
     /// Refuses `g` unless c2d(g) is this H (A and B to [`ROUND_TRIP`], the same delay).
     fn check_round_trip(&self, g: &TransferFunction) -> Result<(), DiscreteError> {
         let back = c2d(g, self.ts)?.normalized();
+        if self.nk.abs_diff(back.nk) > self.a.len() + self.b.len() {
+            return Err(DiscreteError::NoZohEquivalent);
+        }
         let base = self.nk.min(back.nk);
-        let (own, other) = (self.numerator_from(base), back.numerator_from(base));
         let same = |x: &[f64], y: &[f64]| {
             let len = x.len().max(y.len());
             let at = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(0.0);
             let scale = x.iter().fold(0.0f64, |m, c| m.max(c.abs()));
             (0..len).all(|i| (at(x, i) - at(y, i)).abs() <= ROUND_TRIP * scale)
         };
-        let close_delays = self.nk.abs_diff(back.nk) <= self.a.len() + self.b.len();
-        if close_delays && same(&self.a, &back.a) && same(&own, &other) {
+        if same(&self.a, &back.a) && same(&self.numerator_from(base), &back.numerator_from(base)) {
             Ok(())
         } else {
             Err(DiscreteError::NoZohEquivalent)
@@ -503,6 +516,12 @@ pub fn c2d(tf: &TransferFunction, ts: f64) -> Result<DiscreteTf, DiscreteError> 
         let d = DiscreteTf::new(vec![1.0], vec![tf.gain()], nk, ts)?;
         return Ok(sampled(d, Vec::new()));
     }
+    if let Some(&pole) = poles
+        .iter()
+        .find(|p| p.norm() != 0.0 && p.norm() * ts < MIN_POLE_STEP)
+    {
+        return Err(DiscreteError::PeriodTooShort { ts, pole });
+    }
     let g = TransferFunction::from_zpk(&zeros, &poles, tf.gain())?;
     let zp: Vec<C64> = poles.iter().map(|p| (*p * ts).exp()).collect();
     let a = poly::poly_from_roots(&zp);
@@ -543,6 +562,9 @@ fn zoh_numerator(
         if x.abs() <= NEGLIGIBLE * scale {
             *x = 0.0;
         }
+    }
+    if c.iter().all(|&x| x == 0.0) || c.iter().any(|x| !x.is_finite() || x.is_subnormal()) {
+        return Err(DiscreteError::NumeratorOutOfRange { ts });
     }
     let first = c.iter().position(|&x| x != 0.0).unwrap_or(0);
     let last = c.iter().rposition(|&x| x != 0.0).unwrap_or(first);

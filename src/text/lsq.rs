@@ -213,10 +213,32 @@ impl Localize for DiscreteError {
                 let most = lang.num(crate::lti::discrete::MAX_DELAY_SAMPLES as f64, 6);
                 lang.pick(
                     format!(
-                        "the dead time spans {samples} sampling periods: at most {most} can be counted exactly in double precision"
+                        "the dead time spans {samples} sampling periods: at most {most} are counted, beyond which double precision cannot place it within a sample"
                     ),
                     format!(
-                        "o tempo morto abrange {samples} períodos de amostragem: no máximo {most} podem ser contados exatamente em precisão dupla"
+                        "o tempo morto abrange {samples} períodos de amostragem: no máximo {most} são contados, além disso a precisão dupla não o situa dentro de uma amostra"
+                    ),
+                )
+            }
+            DiscreteError::PeriodTooShort { ts, pole } => {
+                let (h, p) = (lang.num(*ts, 6), pole_text(*pole, lang));
+                lang.pick(
+                    format!(
+                        "h = {h} s is too short for the pole s = {p}: e^(p·h) differs from 1 by less than A(z)'s coefficients can hold in double precision, so they could not tell it from an integrator; sample more slowly"
+                    ),
+                    format!(
+                        "h = {h} s é curto demais para o polo s = {p}: e^(p·h) difere de 1 menos do que os coeficientes de A(z) conseguem guardar em precisão dupla, então eles não o distinguiriam de um integrador; amostre mais devagar"
+                    ),
+                )
+            }
+            DiscreteError::NumeratorOutOfRange { ts } => {
+                let h = lang.num(*ts, 6);
+                lang.pick(
+                    format!(
+                        "at h = {h} s the coefficients of B(z) fall outside double precision's range (2.2e-308 to 1.8e308): change the sampling period or the units of time"
+                    ),
+                    format!(
+                        "com h = {h} s os coeficientes de B(z) saem da faixa da precisão dupla (2,2e-308 a 1,8e308): mude o período de amostragem ou a unidade de tempo"
                     ),
                 )
             }
@@ -346,6 +368,11 @@ pub fn messages() -> Vec<Message> {
         },
         DiscreteError::NumeratorTooLong { na: 2, nb: 4 },
         DiscreteError::DelayTooLong { samples: 1e19 },
+        DiscreteError::PeriodTooShort {
+            ts: 1e-20,
+            pole: C64::new(-1.0, 0.0),
+        },
+        DiscreteError::NumeratorOutOfRange { ts: 1e-160 },
         DiscreteError::CommonFactor {
             root: C64::new(0.9, 0.0),
         },
