@@ -1,7 +1,8 @@
 //! `degrau c2d` (the system flags of `degrau step` and `--ts`): the exact ZOH discretisation
 //! of G(s)·e^{−θs}, fractional dead time included; `degrau d2c --num B --den A --nk N --ts H`:
 //! back from H(z) = B(z⁻¹)/A(z⁻¹)·z^−nk (coefficients in powers of z⁻¹, as MATLAB's `arx`
-//! writes them) to G(s) with its dead time. `--json` on both.
+//! writes them) to G(s) with its dead time, checked by c2d. `--json` on both (an infinite
+//! static gain is `null` there, and words in the text).
 
 use std::io::{self, Write};
 
@@ -46,7 +47,7 @@ pub struct D2cArgs {
     /// A: 1, a1, a2, … (powers of z⁻¹).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub den: String,
-    /// Delay of b1 in samples.
+    /// Delay of b1 in samples (0: b1 is a direct feedthrough, G biproper).
     #[arg(long, default_value_t = 1)]
     pub nk: usize,
     /// Sampling period h (s).

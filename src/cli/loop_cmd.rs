@@ -2,7 +2,9 @@
 //! `degrau step`: the closed loop at a gain (`--kp`) or at the gain found for specs
 //! (`--find "overshoot<=10"`, …), its exact step metrics, the error constants and
 //! steady-state errors, the critical gain and crossing frequency, the breakaway points and,
-//! with `--locus`, the root locus's points. Text, or one JSON object with stable keys.
+//! with `--locus`, the root locus's points. Text (numbers with six significant digits), or
+//! one JSON object with stable keys (every digit). A gain at which double precision cannot
+//! give the closed loop's poles is refused ([`crate::lti::LtiError::LoopPolesUnresolved`]).
 //!
 //! A system with a dead time is closed through the Padé (m, n) approximant of its delay
 //! (`--pade m,n`, default [`PadeOrder::default`]): everything after is of the approximated
