@@ -3,6 +3,7 @@
 
 mod run;
 
+use proptest::prelude::*;
 use run::{degrau, stderr, stdout};
 use serde_json::Value;
 
@@ -345,4 +346,277 @@ fn step_gives_impulse_ramp_and_parabola_responses() {
         }
         assert_eq!(v["expression"].is_null(), input == "impulse");
     }
+}
+
+/// The coefficients of k·Π(s − rᵢ) (descending powers) for real or conjugate-paired roots.
+fn from_roots(k: f64, roots: &[C]) -> Vec<f64> {
+    let mut acc: Vec<C> = vec![(k, 0.0)];
+    for &(re, im) in roots {
+        let mut next = vec![(0.0, 0.0); acc.len() + 1];
+        for (i, &(a, b)) in acc.iter().enumerate() {
+            next[i].0 += a;
+            next[i].1 += b;
+            next[i + 1].0 -= a * re - b * im;
+            next[i + 1].1 -= a * im + b * re;
+        }
+        acc = next;
+    }
+    acc.iter().map(|c| c.0).collect()
+}
+
+/// den + K·num, descending powers.
+fn characteristic(den: &[f64], num: &[f64], k: f64) -> Vec<f64> {
+    let mut p = den.to_vec();
+    let offset = den.len() - num.len();
+    for (i, c) in num.iter().enumerate() {
+        p[offset + i] += k * c;
+    }
+    p
+}
+
+/// |p(r)| / Σ|cᵢ||r|ⁱ: how far r is from being a root of p, relative to the coefficients.
+fn relative_residual(p: &[f64], r: C) -> f64 {
+    let (re, im) = horner(p, r);
+    let size = p
+        .iter()
+        .fold(0.0, |acc: f64, c| acc * re_im_norm(r) + c.abs());
+    re.hypot(im) / size
+}
+
+fn re_im_norm(r: C) -> f64 {
+    r.0.hypot(r.1)
+}
+
+#[test]
+fn a_huge_gain_gives_the_unstable_poles_of_den_plus_k_num() {
+    // 0.5(s + 10)/((s² + 2s + 5)(s + 5)) at Kp = 1e22: s³ + 7s² + (5e21 + 15)s + (5e22 + 25),
+    // whose poles are 1.5 ± 7.07e10j (their sum is −7, the third tends to −10).
+    let v = json(&[
+        "loop",
+        "--poles=-1+2j,-1-2j,-5",
+        "--zeros=-10",
+        "--gain",
+        "0.5",
+        "--kp",
+        "1e22",
+        "--json",
+    ]);
+    assert_eq!(v["stability"], "unstable");
+    let p = poles(&v);
+    let pair: Vec<&C> = p.iter().filter(|r| r.1 != 0.0).collect();
+    assert_eq!(pair.len(), 2, "{p:?}");
+    for r in &pair {
+        assert!((r.0 - 1.5).abs() < 1e-6, "{p:?}");
+        assert!((r.1.abs() / 5e21f64.sqrt() - 1.0).abs() < 1e-12, "{p:?}");
+    }
+    let den: Vec<f64> = v["closed_loop"]["den"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(num)
+        .collect();
+    assert_eq!(den, vec![1.0, 7.0, 5e21, 5e22], "den + K·num as computed");
+}
+
+#[test]
+fn a_gain_beyond_double_precision_is_refused_in_both_languages() {
+    for system in [
+        &["--poles=-1+2j,-1-2j,-5", "--zeros=-10", "--gain", "0.5"][..],
+        &["--num", "1,5,5", "--den", "1,1.65,5,6.5,2"][..],
+    ] {
+        for (lang, words) in [
+            ("en", "Kp = 1e300 the closed loop's poles"),
+            ("pt", "Kp = 1e300 os polos da malha fechada"),
+        ] {
+            let mut args = vec!["--lang", lang, "loop", "--kp", "1e300", "--json"];
+            args.extend_from_slice(system);
+            let out = degrau(&args);
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {}", stdout(&out));
+            assert!(stdout(&out).is_empty(), "{}", stdout(&out));
+            assert!(stderr(&out).contains(words), "{}", stderr(&out));
+        }
+    }
+}
+
+#[test]
+fn the_text_writes_six_digits_and_the_json_every_digit() {
+    let args = ["loop", "--num", "0.5", "--den", "1,7,15,25", "--kp", "1"];
+    let out = degrau(&args);
+    let text = stdout(&out);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        text.contains("G(s) = 0.5 / ((s+1-2j)(s+1+2j)(s+5))"),
+        "{text}"
+    );
+    assert!(text.contains("-0.987623+2.02472j"), "{text}");
+    assert!(!text.contains("0000000"), "{text}");
+    let mut json_args = args.to_vec();
+    json_args.push("--json");
+    let v = json(&json_args);
+    let first = poles(&v)[0];
+    assert!(format!("{}", first.0).len() > 10, "{first:?}");
+}
+
+/// A pole or zero drawn as text for `--poles`/`--zeros`, and its conjugate when complex.
+fn roots_arg(roots: &[C]) -> String {
+    roots
+        .iter()
+        .map(|&(re, im)| {
+            if im == 0.0 {
+                format!("{re}")
+            } else {
+                format!("{re}{:+}j", im)
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+prop_compose! {
+    /// A real root or a conjugate pair, each part in ±[0.1, 100].
+    fn root_set()(
+        re in -100.0f64..100.0,
+        im in prop_oneof![Just(0.0), 0.1f64..100.0],
+    ) -> Vec<C> {
+        let re = if re.abs() < 0.1 { re.signum() * 0.1 } else { re };
+        if im == 0.0 { vec![(re, 0.0)] } else { vec![(re, im), (re, -im)] }
+    }
+}
+
+proptest! {
+    #![proptest_config(run::proptest_config(48))]
+
+    /// Every pole `loop` gives is a root of den + K·num to 1e-9 of the coefficients' terms,
+    /// and the stability it states follows from the poles; or the gain is refused as beyond
+    /// double precision.
+    #[test]
+    fn closed_loop_poles_are_roots_of_the_characteristic_polynomial(
+        poles in prop::collection::vec(root_set(), 1..4),
+        zeros in prop::collection::vec(root_set(), 0..2),
+        gain in 0.01f64..100.0,
+        log_kp in -3.0f64..40.0,
+    ) {
+        let poles: Vec<C> = poles.concat();
+        let mut zeros: Vec<C> = zeros.concat();
+        zeros.truncate(poles.len());
+        if zeros.last().is_some_and(|z| z.1 > 0.0) {
+            zeros.pop();
+        }
+        let kp = 10f64.powf(log_kp);
+        let (p, z, g, k) = (roots_arg(&poles), roots_arg(&zeros), format!("{gain}"), format!("{kp}"));
+        let mut args = vec!["loop", "--poles", &p, "--gain", &g, "--kp", &k, "--json"];
+        if !zeros.is_empty() {
+            args.extend(["--zeros", &z]);
+        }
+        let out = degrau(&args);
+        if !out.status.success() {
+            prop_assert!(stderr(&out).contains("beyond double precision"), "{args:?}: {}", stderr(&out));
+            return Ok(());
+        }
+        let v: Value = serde_json::from_str(&stdout(&out)).expect("one JSON object");
+        let characteristic = characteristic(&from_roots(1.0, &poles), &from_roots(gain, &zeros), kp);
+        let found = self::poles(&v);
+        prop_assert_eq!(found.len(), poles.len());
+        for &r in &found {
+            let e = relative_residual(&characteristic, r);
+            prop_assert!(e <= 1e-9, "{args:?}: pole {r:?}, residual {e:e}");
+        }
+        // A pole cancelled exactly by a zero does not count; a pole within a few units in
+        // the last place of a zero (JSON's digits may not tell them apart) is not judged.
+        let cl_zeros: Vec<C> = v["closed_loop"]["zeros"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|z| (num(&z[0]), num(&z[1])))
+            .collect();
+        let near_zero = |r: &C| {
+            cl_zeros
+                .iter()
+                .any(|z| (z.0 - r.0).hypot(z.1 - r.1) <= 1e-14 * re_im_norm(*z))
+        };
+        if found.iter().any(near_zero) {
+            return Ok(());
+        }
+        let expected = if found.iter().any(|r| r.0 > 0.0) {
+            "unstable"
+        } else if found.iter().any(|r| r.0 == 0.0) {
+            "marginally_stable"
+        } else {
+            "stable"
+        };
+        prop_assert_eq!(v["stability"].as_str(), Some(expected), "{:?}", args);
+        // Routh–Hurwitz on den + K·num, in 768 bits, says the same where it is clear.
+        if let Some(right_half_plane) = routh_unstable_roots(&characteristic) {
+            let stated = v["stability"].as_str().unwrap_or_default();
+            prop_assert_eq!(
+                stated == "unstable",
+                right_half_plane > 0,
+                "{:?}: Routh counts {} roots in the right half plane",
+                args,
+                right_half_plane
+            );
+        }
+    }
+}
+
+/// The number of roots of p in the right half plane by Routh's array in 768-bit arithmetic
+/// (sign changes of its first column), `None` where a first-column entry is 0 or cancels to
+/// within 1e-8 of the products it is the difference of (a root near the axis, where the
+/// rounding of p's coefficients may decide).
+fn routh_unstable_roots(p: &[f64]) -> Option<usize> {
+    use astro_float::{BigFloat, RoundingMode};
+    const BITS: usize = 768;
+    const RM: RoundingMode = RoundingMode::ToEven;
+    let big = |x: f64| BigFloat::from_f64(x, BITS);
+    let float = |x: &BigFloat| x.to_string().parse::<f64>().unwrap_or(f64::NAN);
+    let mut rows: Vec<Vec<BigFloat>> = vec![
+        p.iter().step_by(2).map(|&c| big(c)).collect(),
+        p.iter().skip(1).step_by(2).map(|&c| big(c)).collect(),
+    ];
+    let mut firsts: Vec<f64> = rows.iter().map(|row| float(&row[0])).collect();
+    while rows.len() < p.len() {
+        let (upper, lower) = (&rows[rows.len() - 2], &rows[rows.len() - 1]);
+        let lead = lower[0].clone();
+        if lead.is_zero() {
+            return None;
+        }
+        let at = |row: &[BigFloat], j: usize| row.get(j).cloned().unwrap_or_else(|| big(0.0));
+        let terms = |j: usize| {
+            (
+                lead.mul(&at(upper, j + 1), BITS, RM),
+                upper[0].mul(&at(lower, j + 1), BITS, RM),
+            )
+        };
+        let (a, b) = terms(0);
+        let first = a.sub(&b, BITS, RM).div(&lead, BITS, RM);
+        let size = (float(&a).abs() + float(&b).abs()) / float(&lead).abs();
+        if float(&first).abs() <= 1e-8 * size {
+            return None;
+        }
+        firsts.push(float(&first));
+        let next: Vec<BigFloat> = (0..upper.len().saturating_sub(1).max(1))
+            .map(|j| {
+                let (a, b) = terms(j);
+                a.sub(&b, BITS, RM).div(&lead, BITS, RM)
+            })
+            .collect();
+        rows.push(next);
+    }
+    if firsts.iter().any(|x| x.is_nan() || *x == 0.0) {
+        return None;
+    }
+    Some(
+        firsts
+            .windows(2)
+            .filter(|w| w[0].signum() != w[1].signum())
+            .count(),
+    )
+}
+
+#[test]
+fn routh_counts_the_right_half_plane_roots() {
+    assert_eq!(routh_unstable_roots(&[1.0, 6.0, 11.0, 6.0]), Some(0));
+    assert_eq!(routh_unstable_roots(&[1.0, 7.0, 5e21, 5e22]), Some(2));
+    assert_eq!(routh_unstable_roots(&[1.0, -1.0]), Some(1));
+    assert_eq!(routh_unstable_roots(&[1.0, 1.0, 1.0, 1.0]), None, "±j");
 }

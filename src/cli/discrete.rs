@@ -1,7 +1,8 @@
 //! `degrau c2d` (the system flags of `degrau step` and `--ts`): the exact ZOH discretisation
 //! of G(s)·e^{−θs}, fractional dead time included; `degrau d2c --num B --den A --nk N --ts H`:
 //! back from H(z) = B(z⁻¹)/A(z⁻¹)·z^−nk (coefficients in powers of z⁻¹, as MATLAB's `arx`
-//! writes them) to G(s) with its dead time. `--json` on both.
+//! writes them) to G(s) with its dead time, checked by c2d. `--json` on both (an infinite
+//! static gain is `null` there, and words in the text).
 
 use std::io::{self, Write};
 
@@ -12,7 +13,9 @@ use crate::lti::discrete::{DiscreteTf, c2d};
 use crate::lti::parse::parse_real_list;
 use crate::lti::{C64, TransferFunction, fmt_c};
 use crate::text::Lang;
+use crate::text::cli::StepPhrase;
 use crate::text::lsq::LsqPhrase;
+use crate::text::step::{IntegratorPole, static_gain_words};
 
 use super::arx::LsqCliError;
 use super::{CliError, StepArgs, SystemArgs, as_pairs};
@@ -44,7 +47,7 @@ pub struct D2cArgs {
     /// A: 1, a1, a2, … (powers of z⁻¹).
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub den: String,
-    /// Delay of b1 in samples.
+    /// Delay of b1 in samples (0: b1 is a direct feedthrough, G biproper).
     #[arg(long, default_value_t = 1)]
     pub nk: usize,
     /// Sampling period h (s).
@@ -108,12 +111,21 @@ fn list(values: &[f64], lang: Lang) -> String {
     v.join(", ")
 }
 
+/// The roots with every digit (a discrete pole 0.9999999999 must not read 1), or "none".
 fn roots(values: &[C64], lang: Lang) -> String {
+    if values.is_empty() {
+        return StepPhrase::NoRoots.get(lang).to_string();
+    }
     let v: Vec<String> = values
         .iter()
         .map(|z| lang.localize_number(&fmt_c(*z)))
         .collect();
     v.join(", ")
+}
+
+/// A static gain with 8 digits, or in words when a pole at `pole` makes it infinite.
+fn static_gain(value: f64, pole: IntegratorPole, lang: Lang) -> String {
+    static_gain_words(value, pole, lang).unwrap_or_else(|| lang.num(value, 8))
 }
 
 /// `degrau c2d`.
@@ -150,7 +162,7 @@ pub fn run_c2d(args: &C2dArgs, lang: Lang) -> Result<(), LsqCliError> {
                 out,
                 "{}: {}",
                 LsqPhrase::StaticGain.get(lang),
-                lang.num(json.dc_gain, 8)
+                static_gain(d.dc_gain(), IntegratorPole::Z, lang)
             )
         })()
     };
@@ -187,7 +199,7 @@ pub fn run_d2c(args: &D2cArgs, lang: Lang) -> Result<(), LsqCliError> {
                 out,
                 "{}: {}",
                 LsqPhrase::StaticGain.get(lang),
-                lang.num(g.dc_gain(), 8)
+                static_gain(g.dc_gain(), IntegratorPole::S, lang)
             )
         })()
     };

@@ -2,7 +2,9 @@
 //! `degrau step`: the closed loop at a gain (`--kp`) or at the gain found for specs
 //! (`--find "overshoot<=10"`, …), its exact step metrics, the error constants and
 //! steady-state errors, the critical gain and crossing frequency, the breakaway points and,
-//! with `--locus`, the root locus's points. Text, or one JSON object with stable keys.
+//! with `--locus`, the root locus's points. Text (numbers with six significant digits), or
+//! one JSON object with stable keys (every digit). A gain at which double precision cannot
+//! give the closed loop's poles is refused ([`crate::lti::LtiError::LoopPolesUnresolved`]).
 //!
 //! A system with a dead time is closed through the Padé (m, n) approximant of its delay
 //! (`--pade m,n`, default [`PadeOrder::default`]): everything after is of the approximated
@@ -161,6 +163,9 @@ pub struct LoopAnalysis {
     pub rational: RationalLoop,
     pub kp: f64,
     pub search: Option<GainSearch>,
+    /// The closed loop's Kp·num and den + Kp·num as computed from the coefficients
+    /// ([`TransferFunction::closed_loop_coeffs`]).
+    pub closed_coeffs: (Vec<f64>, Vec<f64>),
     pub closed: Analysis,
     pub constants: ErrorConstants,
     pub locus: Locus,
@@ -230,6 +235,7 @@ pub fn analyse_loop(args: &LoopArgs) -> Result<LoopAnalysis, LoopError> {
     };
     let kp = search.as_ref().map_or(args.kp.unwrap_or(1.0), |s| s.k);
     let cl = g.closed_loop(kp)?;
+    let closed_coeffs = g.closed_loop_coeffs(kp)?;
     let options = StepInfoOptions::default();
     let response = StepResponse::new(&cl, 1.0).map_err(CliError::from)?;
     let info = analyse(&response, &options).info;
@@ -252,6 +258,7 @@ pub fn analyse_loop(args: &LoopArgs) -> Result<LoopAnalysis, LoopError> {
         rational,
         kp,
         search,
+        closed_coeffs,
         closed,
         locus,
         drawn,
@@ -282,8 +289,8 @@ impl LoopReport {
                 [Some(lo), hi.is_finite().then_some(hi)]
             }),
             closed_loop: ClosedLoopKeys {
-                num: cl.num(),
-                den: cl.den(),
+                num: a.closed_coeffs.0.clone(),
+                den: a.closed_coeffs.1.clone(),
                 poles: pairs(cl.poles()),
                 zeros: pairs(cl.zeros()),
             },
@@ -328,7 +335,7 @@ pub fn human_loop_report(a: &LoopAnalysis, lang: Lang) -> String {
         Limit::Finite(x) => n(x),
         Limit::Infinite => "∞".to_string(),
     };
-    let mut lines = vec![L::OpenLoop(a.system.describe()).text(lang)];
+    let mut lines = vec![L::OpenLoop(a.system.describe_rounded()).text(lang)];
     if let Some(p) = &a.rational.approximant {
         lines.push(
             L::Approximant {
@@ -391,7 +398,7 @@ pub fn human_loop_report(a: &LoopAnalysis, lang: Lang) -> String {
             let roots: Vec<String> = p
                 .roots
                 .iter()
-                .map(|r| lang.localize_number(&crate::lti::fmt_c(*r)))
+                .map(|r| lang.localize_number(&crate::lti::fmt_c_rounded(*r)))
                 .collect();
             lines.push(format!("  K = {}\t{}", n(p.k), roots.join("  ")));
         }

@@ -37,10 +37,10 @@ use crate::lti::poly::format_poly;
 use crate::lti::tf::Stability;
 use crate::lti::{
     Behaviour, C64, LtiError, StepAnalysis, StepInfo, StepInfoOptions, StepResponse,
-    TransferFunction, analyse, fmt_c,
+    TransferFunction, analyse, fmt_c_rounded,
 };
 use crate::text::cli::{Heading, StepPhrase};
-use crate::text::step::Metric;
+use crate::text::step::{IntegratorPole, Metric, static_gain_words};
 use crate::text::{Lang, Localize};
 
 /// The most samples one system may ask for (8 MB each for t and y).
@@ -808,23 +808,20 @@ fn system_lines(a: &Analysis, lang: Lang) -> Vec<String> {
             StepPhrase::NoRoots.get(lang).to_string()
         } else {
             r.iter()
-                .map(|&c| lang.localize_number(&fmt_c(c)))
+                .map(|&c| lang.localize_number(&fmt_c_rounded(c)))
                 .collect::<Vec<_>>()
                 .join(lang.pick(", ", "; "))
         }
     };
     let dc_gain = tf.dc_gain();
-    let dc_text = if dc_gain.is_finite() {
-        prose_number(dc_gain, lang)
-    } else {
-        format!("{dc_gain} ({})", StepPhrase::Integrates.get(lang))
-    };
+    let dc_text = static_gain_words(dc_gain, IntegratorPole::S, lang)
+        .unwrap_or_else(|| prose_number(dc_gain, lang));
     let stability = crate::text::cli::stability_line(tf.stability(), a.response.behaviour(), lang);
     let step = crate::text::cli::step_line(&prose_number(a.response.amplitude(), lang), lang);
     let rows = [
         (
             StepPhrase::System.get(lang),
-            format!("G(s) = {}", tf.describe()),
+            format!("G(s) = {}", tf.describe_rounded()),
         ),
         ("", format!("G(s) = {}", polynomial_form(tf))),
         (StepPhrase::Poles.get(lang), roots(tf.poles())),

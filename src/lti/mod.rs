@@ -16,11 +16,13 @@ pub mod divided;
 pub mod expr;
 pub mod feedback;
 pub mod locus;
+pub mod markov;
 pub mod metrics;
 pub mod number;
 pub mod parse;
 pub mod poly;
 pub mod response;
+pub mod root_error;
 pub mod tf;
 
 pub use analysis::{StepAnalysis, analyse};
@@ -64,6 +66,10 @@ pub enum LtiError {
     DelayInLoop,
     /// The closed-loop gain Kp is not finite.
     BadLoopGain(f64),
+    /// The closed loop's poles at this Kp cannot be computed right in double precision: a
+    /// root of den + Kp·num is not one to rounding, or rounding hides its side of the
+    /// imaginary axis.
+    LoopPolesUnresolved { kp: f64 },
     /// The roots span too many decades for double precision.
     OutOfRange,
     /// A number typed is subnormal (0 < |x| < 2.2e-308).
@@ -121,13 +127,23 @@ pub enum Quantity {
     Root { role: RootRole, index: usize },
 }
 
-/// `-1+2j` style text for a complex number.
+/// `-1+2j` style text for a complex number, with every digit ([`exact`]).
 pub fn fmt_c(c: C64) -> String {
+    complex_with(c, exact)
+}
+
+/// `-1+2j` style text for people: six significant digits ([`number::format_number`]).
+pub fn fmt_c_rounded(c: C64) -> String {
+    complex_with(c, number::format_number)
+}
+
+/// `-1+2j` style text, each part written by `number`.
+fn complex_with(c: C64, number: fn(f64) -> String) -> String {
     if c.im == 0.0 {
-        exact(c.re)
+        number(c.re)
     } else {
         let sign = if c.im < 0.0 { '-' } else { '+' };
-        format!("{}{}{}j", exact(c.re), sign, exact(c.im.abs()))
+        format!("{}{}{}j", number(c.re), sign, number(c.im.abs()))
     }
 }
 

@@ -9,7 +9,10 @@
 //! real, and whether it lies on the imaginary axis (s³ + s² + s + 1 = (s + 1)(s² + 1) gives
 //! ±j with a real part of about 2e-17, whose sign would decide between "oscillates forever"
 //! and "unstable"). So a root within [`REAL_AXIS_TOLERANCE`] of its modulus of either axis
-//! is put exactly on it.
+//! is put exactly on it: on the real axis always, on the imaginary axis only when the
+//! polynomial has a root there to rounding ([`super::root_error::on_imaginary_axis`]: the
+//! roots 1.5 ± 7.07e10j of s³ + 7s² + 5e21·s + 5e22 are 2e-11 from the axis relative to
+//! their modulus, and unstable).
 
 use std::cmp::Ordering;
 
@@ -112,7 +115,10 @@ pub fn roots(coeffs: &[f64]) -> Result<Vec<C64>, LtiError> {
     debug_assert_eq!(found.len(), n);
     let mut closed = conjugate_closed(found);
     for r in closed.iter_mut() {
-        if r.im != 0.0 && r.re.abs() <= REAL_AXIS_TOLERANCE * r.norm() {
+        if r.im != 0.0
+            && r.re.abs() <= REAL_AXIS_TOLERANCE * r.norm()
+            && super::root_error::on_imaginary_axis(reduced, r.im)
+        {
             r.re = 0.0;
         }
     }
@@ -230,7 +236,7 @@ fn scaled_monic(coeffs: &[f64]) -> (Vec<f64>, i32) {
 }
 
 /// x·2^k without overflow or underflow in the intermediate power of two.
-fn mul_pow2(mut x: f64, mut k: i32) -> f64 {
+pub(super) fn mul_pow2(mut x: f64, mut k: i32) -> f64 {
     while k > 1000 && x.is_finite() && x != 0.0 {
         x *= 2f64.powi(1000);
         k -= 1000;

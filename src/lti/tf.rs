@@ -8,6 +8,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::poly::{self, C64};
+use super::root_error;
 use super::{LtiError, Polynomial, Quantity, RootRole};
 
 /// The largest order accepted: far above anything taught, and it keeps every computation
@@ -198,17 +199,23 @@ impl TransferFunction {
 
     /// Poles left after removing those exactly equal to a zero.
     pub fn uncancelled_poles(&self) -> Vec<C64> {
+        self.cancelled_roots().1
+    }
+
+    /// The zeros and the poles left after each pole exactly equal to a zero cancels with it
+    /// (s/s is 1): the same G(s), of the lowest order its roots show.
+    pub fn cancelled_roots(&self) -> (Vec<C64>, Vec<C64>) {
         let mut zeros = self.zeros.clone();
-        let mut out = Vec::with_capacity(self.poles.len());
+        let mut poles = Vec::with_capacity(self.poles.len());
         for &p in &self.poles {
             match zeros.iter().position(|&z| z == p) {
                 Some(i) => {
-                    zeros.swap_remove(i);
+                    zeros.remove(i);
                 }
-                None => out.push(p),
+                None => poles.push(p),
             }
         }
-        out
+        (zeros, poles)
     }
 
     /// G evaluated at a complex frequency s (delay included).
@@ -218,8 +225,25 @@ impl TransferFunction {
         num / den * self.gain * (-s * self.delay).exp()
     }
 
-    /// The unity-feedback closed loop Kp·G/(1 + Kp·G), MATLAB's `feedback(Kp*G, 1)`.
+    /// The unity-feedback closed loop Kp·G/(1 + Kp·G), MATLAB's `feedback(Kp*G, 1)`: its
+    /// poles are the roots of den + Kp·num, refused ([`LtiError::LoopPolesUnresolved`]) when
+    /// double precision cannot give them right (a root that is not one to
+    /// [`root_error::BACKWARD_LIMIT`], or whose side of the imaginary axis rounding hides).
     pub fn closed_loop(&self, kp: f64) -> Result<Self, LtiError> {
+        let (num, den) = self.closed_loop_coeffs(kp)?;
+        let cl = Self::from_coeffs(&num, &den)?;
+        if root_error::resolved(&den, cl.poles()) {
+            Ok(cl)
+        } else {
+            Err(LtiError::LoopPolesUnresolved { kp })
+        }
+    }
+
+    /// The closed loop's Kp·num and den + Kp·num (descending powers), both divided by the
+    /// leading coefficient of den + Kp·num (1 unless G is biproper): the closed loop as
+    /// computed from the coefficients, not rebuilt from its roots. A coefficient beyond
+    /// double precision's range is [`LtiError::LoopPolesUnresolved`].
+    pub fn closed_loop_coeffs(&self, kp: f64) -> Result<(Vec<f64>, Vec<f64>), LtiError> {
         if !kp.is_finite() {
             return Err(LtiError::BadLoopGain(kp));
         }
@@ -232,19 +256,45 @@ impl TransferFunction {
         for (i, c) in num.iter().enumerate() {
             den[offset + i] += c;
         }
-        Self::from_coeffs(&num, &den)
+        if num.iter().chain(&den).any(|c| !c.is_finite()) {
+            return Err(LtiError::LoopPolesUnresolved { kp });
+        }
+        let den = poly::strip_leading_zeros(&den, Polynomial::Denominator)?;
+        let lead = den[0];
+        Ok((
+            num.iter().map(|c| c / lead).collect(),
+            den.iter().map(|c| c / lead).collect(),
+        ))
     }
 
-    /// A one-line description in factored form, e.g. `0.5 (s+10) / ((s+1-2j)(s+1+2j)(s+5))`.
+    /// A one-line description in factored form with every digit, e.g.
+    /// `0.5 (s+10) / ((s+1-2j)(s+1+2j)(s+5))` (the shortest text that reads back as each
+    /// number: for code, logs and messages about one system).
     pub fn describe(&self) -> String {
-        let factors = |roots: &[C64]| roots.iter().map(|&r| linear_factor(r)).collect::<String>();
+        self.describe_with(super::exact)
+    }
+
+    /// The factored form for people: six significant digits
+    /// ([`super::number::format_number`]), so a root computed as 1.0000000000000002 reads 1.
+    pub fn describe_rounded(&self) -> String {
+        self.describe_with(super::number::format_number)
+    }
+
+    /// The factored form with each number written by `number`.
+    fn describe_with(&self, number: fn(f64) -> String) -> String {
+        let factors = |roots: &[C64]| {
+            roots
+                .iter()
+                .map(|&r| linear_factor(r, number))
+                .collect::<String>()
+        };
         let num = if self.zeros.is_empty() {
             String::new()
         } else {
             format!(" {}", factors(&self.zeros))
         };
         let delay = if self.delay > 0.0 {
-            format!(" e^(-{} s)", super::exact(self.delay))
+            format!(" e^(-{} s)", number(self.delay))
         } else {
             String::new()
         };
@@ -253,17 +303,17 @@ impl TransferFunction {
             1 => factors(&self.poles),
             _ => format!("({})", factors(&self.poles)),
         };
-        format!("{}{num} / {den}{delay}", super::exact(self.gain))
+        format!("{}{num} / {den}{delay}", number(self.gain))
     }
 }
 
-/// `(s+1-2j)` for the root −1+2j, `s` for the origin.
-fn linear_factor(root: C64) -> String {
+/// `(s+1-2j)` for the root −1+2j, `s` for the origin, each number written by `number`.
+fn linear_factor(root: C64, number: fn(f64) -> String) -> String {
     let signed = |v: f64| {
         if v < 0.0 {
-            format!("-{}", super::exact(-v))
+            format!("-{}", number(-v))
         } else {
-            format!("+{}", super::exact(v))
+            format!("+{}", number(v))
         }
     };
     match (root.re == 0.0, root.im == 0.0) {
@@ -364,6 +414,18 @@ mod tests {
         let extreme =
             TransferFunction::from_zpk(&[], &[c(-1e200, 0.0), c(-2.5e-7, 0.0)], 1.0).unwrap();
         assert_eq!(extreme.describe(), "1 / ((s+2.5e-7)(s+1e200))");
+    }
+
+    #[test]
+    fn the_rounded_description_has_six_digits() {
+        let g = TransferFunction::from_zpk(
+            &[],
+            &[c(-1.0000000000000002, 2.0), c(-1.0000000000000002, -2.0)],
+            0.5,
+        )
+        .unwrap();
+        assert_eq!(g.describe_rounded(), "0.5 / ((s+1-2j)(s+1+2j))");
+        assert!(g.describe().contains("1.0000000000000002"));
     }
 
     #[test]

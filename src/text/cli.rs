@@ -27,10 +27,6 @@ crate::phrases! {
         Stability => ("Stability", "Estabilidade"),
         Step => ("Step", "Degrau"),
         NoRoots => ("none", "nenhum"),
-        Integrates => (
-            "a pole at s = 0: the system integrates",
-            "um polo em s = 0: o sistema é integrador"
-        ),
         Error => ("error", "erro"),
     }
 }

@@ -202,12 +202,63 @@ impl Localize for DiscreteError {
             }
             DiscreteError::NumeratorTooLong { na, nb } => lang.pick(
                 format!(
-                    "nb = {nb} b's for na = {na}: d2c inverts nb ≤ na, or nb = 2 with na = 1 (a fractional dead time)"
+                    "nb = {nb} b's for na = {na}: the ZOH image of a proper G(s) has at most na + 1 (d2c inverts nb ≤ na + 1)"
                 ),
                 format!(
-                    "nb = {nb} b's para na = {na}: o d2c inverte nb ≤ na, ou nb = 2 com na = 1 (um tempo morto fracionário)"
+                    "nb = {nb} b's para na = {na}: a imagem ZOH de um G(s) próprio tem no máximo na + 1 (o d2c inverte nb ≤ na + 1)"
                 ),
             ),
+            DiscreteError::DelayTooLong { samples } => {
+                let samples = lang.num(*samples, 6);
+                let most = lang.num(crate::lti::discrete::MAX_DELAY_SAMPLES as f64, 6);
+                lang.pick(
+                    format!(
+                        "the dead time spans {samples} sampling periods: at most {most} are counted, beyond which double precision cannot place it within a sample"
+                    ),
+                    format!(
+                        "o tempo morto abrange {samples} períodos de amostragem: no máximo {most} são contados, além disso a precisão dupla não o situa dentro de uma amostra"
+                    ),
+                )
+            }
+            DiscreteError::PeriodTooShort { ts, pole } => {
+                let (h, p) = (lang.num(*ts, 6), pole_text(*pole, lang));
+                lang.pick(
+                    format!(
+                        "h = {h} s is too short for the pole s = {p}: e^(p·h) differs from 1 by less than A(z)'s coefficients can hold in double precision, so they could not tell it from an integrator; sample more slowly"
+                    ),
+                    format!(
+                        "h = {h} s é curto demais para o polo s = {p}: e^(p·h) difere de 1 menos do que os coeficientes de A(z) conseguem guardar em precisão dupla, então eles não o distinguiriam de um integrador; amostre mais devagar"
+                    ),
+                )
+            }
+            DiscreteError::NumeratorOutOfRange { ts } => {
+                let h = lang.num(*ts, 6);
+                lang.pick(
+                    format!(
+                        "at h = {h} s the coefficients of B(z) fall outside double precision's range (2.2e-308 to 1.8e308): change the sampling period or the units of time"
+                    ),
+                    format!(
+                        "com h = {h} s os coeficientes de B(z) saem da faixa da precisão dupla (2,2e-308 a 1,8e308): mude o período de amostragem ou a unidade de tempo"
+                    ),
+                )
+            }
+            DiscreteError::CommonFactor { root } => {
+                let z = pole_text(*root, lang);
+                lang.pick(
+                    format!(
+                        "B(z) and A(z) share the root z = {z}: a pole cancelled by a zero, so H(z) is of lower order than A(z) says; write it without the common factor"
+                    ),
+                    format!(
+                        "B(z) e A(z) têm a raiz z = {z} em comum: um polo cancelado por um zero, então H(z) é de ordem menor do que A(z) diz; escreva-o sem o fator comum"
+                    ),
+                )
+            }
+            DiscreteError::NoZohEquivalent => lang
+                .pick(
+                    "no continuous G(s)·e^(−θs) has these samples: the zero-order-hold discretisation of the candidate does not give H(z) back",
+                    "nenhum G(s)·e^(−θs) contínuo tem estas amostras: a discretização com segurador de ordem zero do candidato não devolve H(z)",
+                )
+                .into(),
             DiscreteError::Lti(e) => e.text(lang),
         }
     }
@@ -315,7 +366,17 @@ pub fn messages() -> Vec<Message> {
         DiscreteError::RepeatedPoles {
             pole: C64::new(0.5, 0.0),
         },
-        DiscreteError::NumeratorTooLong { na: 2, nb: 3 },
+        DiscreteError::NumeratorTooLong { na: 2, nb: 4 },
+        DiscreteError::DelayTooLong { samples: 1e19 },
+        DiscreteError::PeriodTooShort {
+            ts: 1e-20,
+            pole: C64::new(-1.0, 0.0),
+        },
+        DiscreteError::NumeratorOutOfRange { ts: 1e-160 },
+        DiscreteError::CommonFactor {
+            root: C64::new(0.9, 0.0),
+        },
+        DiscreteError::NoZohEquivalent,
     ];
     let prbs = [
         PrbsError::BadOrder(40),

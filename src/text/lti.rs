@@ -220,6 +220,22 @@ impl Localize for LtiError {
                     )
                 }
             }
+            LoopPolesUnresolved { kp } => {
+                let kp = num(lang, *kp);
+                if en {
+                    format!(
+                        "at Kp = {kp} the closed loop's poles (the roots of den + Kp·num) are \
+                         beyond double precision: rounding in its coefficients hides a pole, or \
+                         the side of the imaginary axis one lies on"
+                    )
+                } else {
+                    format!(
+                        "com Kp = {kp} os polos da malha fechada (as raízes de den + Kp·num) \
+                         estão além da precisão dupla: o arredondamento dos seus coeficientes \
+                         esconde um polo, ou o lado do eixo imaginário em que um deles está"
+                    )
+                }
+            }
             OutOfRange => lang
                 .pick(
                     "the poles and zeros span too many decades for double precision: the step \
@@ -417,6 +433,7 @@ pub fn messages() -> Vec<Message> {
         LtiError::DcGainNotScalable(_) => LtiError::DcGainNotScalable(0.0),
         LtiError::DelayInLoop => LtiError::DelayInLoop,
         LtiError::BadLoopGain(_) => LtiError::BadLoopGain(f64::INFINITY),
+        LtiError::LoopPolesUnresolved { .. } => LtiError::LoopPolesUnresolved { kp: 1e300 },
         LtiError::OutOfRange => LtiError::OutOfRange,
         LtiError::Subnormal { .. } => LtiError::Subnormal {
             what: coefficient,

@@ -271,6 +271,41 @@ pub fn stability_reason(s: Stability, lang: Lang) -> &'static str {
     lang.pick(en, pt)
 }
 
+/// Where the pole lies that makes a static gain infinite: s = 0 for G(s), z = 1 for H(z).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum IntegratorPole {
+    S,
+    Z,
+}
+
+/// A static gain that is not a number in words ("infinite: the system integrates (a pole
+/// at s = 0)"), `None` for a finite one, which the caller writes with its own digits.
+pub fn static_gain_words(value: f64, pole: IntegratorPole, lang: Lang) -> Option<String> {
+    if value.is_finite() {
+        return None;
+    }
+    let at = match pole {
+        IntegratorPole::S => "s = 0",
+        IntegratorPole::Z => "z = 1",
+    };
+    Some(if value.is_nan() {
+        lang.pick(
+            format!("undefined: the numerator and the denominator both vanish at {at}"),
+            format!("indefinido: o numerador e o denominador se anulam em {at}"),
+        )
+    } else {
+        let sign = match (value > 0.0, lang) {
+            (true, _) => "",
+            (false, Lang::En) => ", negative",
+            (false, Lang::Pt) => ", negativo",
+        };
+        lang.pick(
+            format!("infinite{sign}: the system integrates (a pole at {at})"),
+            format!("infinito{sign}: o sistema é integrador (um polo em {at})"),
+        )
+    })
+}
+
 /// Every metric name, definition, absence, behaviour and stability, for the catalogue test.
 pub fn messages() -> Vec<Message> {
     let options = StepInfoOptions::default();
@@ -315,6 +350,18 @@ pub fn messages() -> Vec<Message> {
                 stability(s, Lang::Pt),
                 stability_reason(s, Lang::Pt)
             ),
+        });
+    }
+    for (value, pole) in [
+        (f64::INFINITY, IntegratorPole::S),
+        (f64::NEG_INFINITY, IntegratorPole::Z),
+        (f64::NAN, IntegratorPole::Z),
+    ] {
+        let words = |lang| static_gain_words(value, pole, lang).unwrap_or_default();
+        all.push(Message {
+            id: format!("static_gain_words({value}, {pole:?})"),
+            en: words(Lang::En),
+            pt: words(Lang::Pt),
         });
     }
     all

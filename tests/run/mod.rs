@@ -34,3 +34,19 @@ pub fn json(args: &[&str]) -> serde_json::Value {
     assert!(out.status.success(), "{}", stderr(&out));
     serde_json::from_slice(&out.stdout).expect("one JSON object")
 }
+
+/// A proptest configuration with a fixed seed, so that every run checks the same cases;
+/// `DEGRAU_PROPTEST_SCALE` multiplies the count and `DEGRAU_PROPTEST_SEED` changes the seed
+/// for a deeper search (as in `tests/lti_properties.rs`).
+pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
+    let env = |name: &str| std::env::var(name).ok().and_then(|v| v.parse::<u64>().ok());
+    let scale = env("DEGRAU_PROPTEST_SCALE").unwrap_or(1) as u32;
+    proptest::test_runner::Config {
+        cases: cases.saturating_mul(scale.max(1)),
+        rng_seed: proptest::test_runner::RngSeed::Fixed(
+            env("DEGRAU_PROPTEST_SEED").unwrap_or(0x00de_9a00),
+        ),
+        failure_persistence: None,
+        ..proptest::test_runner::Config::default()
+    }
+}
