@@ -62,7 +62,7 @@ fn a_method_picked_on_a_dragged_system_shows_the_overlay_and_the_error_table() {
     assert!(!APPROX_CURVE_NAME.is_empty());
 
     // The error table: its header and, for every metric, the row the text layer writes.
-    h.get_by_label("Within 5 %");
+    h.get_by_label("Within 5 % (relative)");
     h.get_by_label_contains("max |Δy| / step's effect");
     h.get_by_label_contains("G̃(s) = ");
     let outcome = h.state().design.approx.outcome.clone().unwrap().unwrap();
@@ -141,6 +141,6 @@ fn a_dead_time_stand_in_starts_the_wrong_way_in_portuguese_too() {
     assert!(first_dip[1] < 0.0 && first_dip[0] < 0.1, "{first_dip:?}");
     assert!(scene.original.iter().all(|p| p[0] >= 1.0 || p[1] == 0.0));
     h.get_by_label("resposta ao degrau da aproximação");
-    h.get_by_label("Dentro de 5 %");
+    h.get_by_label("Dentro de 5 % (relativo)");
     h.get_by_label_contains("Tempo morto → Padé (1, 1)");
 }
