@@ -3,6 +3,9 @@
 
 use std::process::{Command, Output};
 
+mod run;
+use run::scaled_step;
+
 const TCLAB: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/data/records/tclab_step_q1_50_synthetic.csv"
@@ -156,4 +159,103 @@ fn refusals_are_said_in_words() {
         err.contains("estabilizar") || err.contains("nunca atinge"),
         "{err}"
     );
+}
+
+#[test]
+fn every_method_reads_the_same_at_1e300_and_1e_minus_300() {
+    // Issue 22, item 7: the table printed fit % NaN at 1e±300.
+    let unit = json(&[&scaled_step("hand", 1.0)]);
+    for k in [1e300, 1e-300] {
+        let path = scaled_step("hand", k);
+        let scaled = json(&[&path]);
+        let pairs = unit["methods"].as_array().unwrap().iter();
+        for (u, s) in pairs.zip(scaled["methods"].as_array().unwrap()) {
+            let at = format!("at {k:e}: {s} vs {u}");
+            assert_eq!(u["model"], s["model"], "{at}");
+            // K = Δy/Δu, τ, ζ, ωn are scale-free; θ to 1e-9 of the record's 30 s.
+            for key in ["K", "tau", "tau1", "tau2", "zeta", "omega_n"] {
+                if let Some(x) = u[key].as_f64() {
+                    let y = f(&s[key]);
+                    assert!((x - y).abs() <= 1e-9 * x.abs(), "{key} {at}");
+                }
+            }
+            assert!(
+                (f(&u["theta"]) - f(&s["theta"])).abs() <= 1e-9 * 30.0,
+                "θ {at}"
+            );
+            assert!(
+                (f(&u["fit_percent"]) - f(&s["fit_percent"])).abs() < 1e-7,
+                "{at}"
+            );
+            assert_eq!(u["warnings"], s["warnings"], "{at}");
+        }
+        for lang in ["en", "pt"] {
+            let out = hand(&[&path, "--lang", lang]);
+            let text = String::from_utf8(out.stdout).unwrap();
+            assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
+        }
+    }
+}
+
+#[test]
+fn a_tangent_outside_the_record_is_refused() {
+    // Issue 22, item 8: --tangent-at 1e9 was placed at the record's end (θ = −6236 s).
+    let path = scaled_step("hand", 1.0);
+    for (t, lang, words) in [
+        ("1e9", "en", "outside the response"),
+        ("1e9", "pt", "fora da resposta"),
+        ("-5", "en", "outside the response"),
+        ("1", "pt", "fora da resposta"),
+    ] {
+        let out = hand(&[
+            &path,
+            "--method",
+            "tangent",
+            "--tangent-at",
+            t,
+            "--lang",
+            lang,
+        ]);
+        assert_eq!(out.status.code(), Some(2), "{t}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(words), "{t} {lang}: {err}");
+    }
+    // Inside the response it is drawn there.
+    let j = json(&[&path, "--method", "tangent", "--tangent-at", "6"]);
+    assert!(
+        (f(&j["construction"]["tangent"]["t"]) - 6.0).abs() <= 0.5,
+        "{j}"
+    );
+}
+
+#[test]
+fn the_table_prints_the_dead_time_the_model_uses() {
+    // Issue 22, item 8: a construction meeting y0 before the step printed θ < 0 while the
+    // warning said the model uses θ = 0. A late tangent on the concave part, and the three
+    // points on this clean first-order curve, both put the start before the step.
+    let path = scaled_step("hand", 1.0);
+    for method in [
+        vec!["--method", "tangent", "--tangent-at", "25"],
+        vec!["--method", "three-point"],
+    ] {
+        let j = json(&[&[path.as_str()], &method[..]].concat());
+        assert_eq!(f(&j["theta"]), 0.0, "{j}");
+        let warnings = j["warnings"].as_array().unwrap();
+        assert!(
+            warnings
+                .iter()
+                .any(|w| w.as_str().unwrap().contains("the model uses θ = 0")),
+            "{j}"
+        );
+        let out = hand(&[&[path.as_str()], &method[..]].concat());
+        let text = String::from_utf8(out.stdout).unwrap();
+        // The row's θ column (the fourth) says 0, as the warning does.
+        let row = text.lines().nth(2).unwrap();
+        let cells: Vec<&str> = row
+            .split("  ")
+            .map(str::trim)
+            .filter(|c| !c.is_empty())
+            .collect();
+        assert_eq!(cells[3], "0", "{text}");
+    }
 }

@@ -2,7 +2,7 @@
 //! model written as CSV, fitted back by ARX and RLS, checked against c2d of the same model.
 
 mod run;
-use run::{degrau, json};
+use run::{degrau, json, scaled_step};
 
 const TCLAB: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
@@ -206,4 +206,187 @@ fn a_bare_prbs_is_csv_with_its_clock_and_levels() {
         (j["order"].as_u64(), j["period"].as_u64()),
         (Some(5), Some(62))
     );
+}
+
+fn relative(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
+}
+
+/// No NaN or infinity shown as a result, in either language.
+fn no_non_finite(text: &str) {
+    for word in ["NaN", "inf", "∞", "null"] {
+        assert!(!text.contains(word), "{word} in:\n{text}");
+    }
+}
+
+#[test]
+fn arx_and_rls_give_the_same_answers_at_1e300_and_1e_minus_300() {
+    // Issue 22, item 7: at 1e300 RLS gave NaN a1, b1, J and fit %, at 1e-300 a = [1, 0],
+    // b = [0], and ARX refused both as not exciting enough.
+    let unit_path = scaled_step("lsq", 1.0);
+    for command in ["arx", "rls"] {
+        let args = |path: &str| {
+            json(&[
+                command, path, "--na", "1", "--nb", "1", "--nk", "1", "--json",
+            ])
+        };
+        let unit = args(&unit_path);
+        let unit_j = unit["j"].as_f64().unwrap();
+        for k in [1e300, 1e-300] {
+            let path = scaled_step("lsq", k);
+            let scaled = args(&path);
+            let at = format!("{command} at {k:e}: {scaled}");
+            // a is scale-free; b = Δy/Δu too, u and y being scaled alike.
+            for key in ["a", "b"] {
+                for (x, y) in numbers(&scaled[key]).iter().zip(numbers(&unit[key])) {
+                    assert!(relative(*x, y) < 1e-9, "{key}: {at}");
+                }
+            }
+            for key in ["fit_percent_prediction", "fit_percent_simulation"] {
+                let (x, y) = (scaled[key].as_f64(), unit[key].as_f64());
+                assert!((x.unwrap() - y.unwrap()).abs() < 1e-7, "{key}: {at}");
+            }
+            assert!(relative(scaled["y0"].as_f64().unwrap() / k, 50.0) < 1e-12);
+            // J ≈ 1e±600 is beyond double precision: null, with its order of magnitude.
+            assert!(scaled["j"].is_null(), "{at}");
+            let log10 = scaled["j_log10"].as_f64().unwrap();
+            assert!(
+                (log10 - 2.0 * k.log10() - unit_j.log10()).abs() < 1e-4,
+                "{at}"
+            );
+            for lang in ["en", "pt"] {
+                let out = degrau(&[
+                    command, &path, "--na", "1", "--nb", "1", "--nk", "1", "--lang", lang,
+                ]);
+                assert!(out.status.success());
+                let text = String::from_utf8(out.stdout).unwrap();
+                no_non_finite(&text);
+                let words = if lang == "en" {
+                    "beyond double precision"
+                } else {
+                    "além da precisão dupla"
+                };
+                assert!(text.contains(words), "{text}");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_constant_output_is_refused_in_words() {
+    // Issue 22, item 10: RLS on a constant output printed "Fit %: NaN".
+    let text = "t,u,y\n".to_string()
+        + &(0..40)
+            .map(|k| format!("{k},{},5\n", k % 3))
+            .collect::<String>();
+    let path = format!("{}/constant_output.csv", env!("CARGO_TARGET_TMPDIR"));
+    std::fs::write(&path, text).unwrap();
+    for command in ["rls", "arx"] {
+        for (lang, words) in [("en", "never changes"), ("pt", "nunca muda")] {
+            let out = degrau(&[command, &path, "--lang", lang]);
+            assert_eq!(out.status.code(), Some(2), "{command}");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert!(err.contains(words), "{command} {lang}: {err}");
+            no_non_finite(&String::from_utf8_lossy(&out.stdout));
+        }
+    }
+}
+
+/// `degrau args…`, which must end within `seconds` (killed and failed otherwise).
+fn degrau_within(args: &[&str], seconds: u64) -> std::process::Output {
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_degrau"))
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > std::time::Duration::from_secs(seconds) {
+            child.kill().unwrap();
+            panic!("degrau {args:?} still running after {seconds} s");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+#[test]
+fn select_prefers_the_smallest_exact_order_and_refuses_a_grid_beyond_the_record() {
+    // Issue 22, item 9: on noise-free ARX data AIC was decided by roundoff (it picked
+    // na = 2, nb = 2, nk = 3); the smallest order that fits exactly is the answer.
+    let path = record("prbs_p1d_clean_select", "0");
+    let j = json(&[
+        "arx", &path, "--y-col", "y", "--u-col", "u", "--select", "--json",
+    ]);
+    assert_eq!(
+        (&j["na"], &j["nb"], &j["nk"]),
+        (&1.into(), &1.into(), &4.into()),
+        "{j}"
+    );
+    assert_eq!(j["candidates"][0]["exact"], true);
+    // A delay the record cannot hold is refused at once (it ran for minutes), and so are
+    // orders larger than the record allows.
+    for extra in [
+        vec!["--select", "--max-nk", "100000000"],
+        vec!["--nb", "1", "--nk", "100000000"],
+        vec!["--nb", "1", "--na", "100000000"],
+    ] {
+        for (lang, words) in [("en", "longest lag"), ("pt", "maior atraso")] {
+            let mut args = vec!["arx", &path, "--y-col", "y", "--u-col", "u", "--lang", lang];
+            args.extend(&extra);
+            let out = degrau_within(&args, 5);
+            assert_eq!(out.status.code(), Some(2), "{args:?}");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert!(err.contains(words), "{args:?}: {err}");
+        }
+    }
+}
+
+#[test]
+fn the_readme_prbs_record_can_simulate_better_than_it_predicts() {
+    // Issue 22, item 15: the README said the one-step prediction's fit "is always the
+    // higher"; on its own prbs record ARX(1, 2, 4) predicts 98.91 % and simulates 99.2 %.
+    let path = record("prbs_readme", "0.05");
+    let j = json(&[
+        "arx", &path, "--y-col", "y", "--u-col", "u", "--na", "1", "--nb", "2", "--nk", "4",
+        "--json",
+    ]);
+    let prediction = j["fit_percent_prediction"].as_f64().unwrap();
+    let simulation = j["fit_percent_simulation"].as_f64().unwrap();
+    assert!(prediction < simulation, "{prediction} vs {simulation}");
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .unwrap()
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(!readme.contains("always the higher"));
+    assert!(
+        readme.contains("may score higher or lower"),
+        "the README says what is true"
+    );
+    let help = String::from_utf8(degrau(&["arx", "--help"]).stdout).unwrap();
+    assert!(!help.contains("always"), "{help}");
+}
+
+#[test]
+fn prbs_refuses_a_record_beyond_double_precision() {
+    // Issue 22, item 10: --noise 1e308 wrote nulls (JSON) or infinities (CSV) in y.
+    let model = ["--model", "P1D", "--params", "Kp=1,Tp1=1"];
+    for (lang, words) in [("en", "double precision"), ("pt", "precisão dupla")] {
+        for extra in [
+            vec!["--noise", "1e308", "--json"],
+            vec!["--noise", "1e308"],
+            vec!["--ts", "1e308"],
+        ] {
+            let mut args = vec!["prbs", "--n", "200", "--lang", lang];
+            args.extend(model);
+            args.extend(extra);
+            let out = degrau(&args);
+            assert_eq!(out.status.code(), Some(2), "{args:?}");
+            assert!(out.stdout.is_empty());
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert!(err.contains(words), "{args:?}: {err}");
+        }
+    }
 }

@@ -7,8 +7,11 @@
 use degrau::ident::excitation::{Excitation, Hold};
 use degrau::ident::fit::{FitData, Lcg};
 use degrau::ident::hand::{
-    DeadTimeFrom, HandError, HandMethod, HandWarning, Overrides, Record, estimate, estimate_all,
+    DeadTimeFrom, HandError, HandEstimate, HandMethod, HandWarning, Overrides, Record, estimate,
+    estimate_all,
 };
+use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
 
 /// A normalised unit step response s(t) of the process without dead time, for t ≥ 0.
 type Shape = dyn Fn(f64) -> f64;
@@ -457,5 +460,87 @@ fn the_tclab_copy_gives_every_method() {
             "{method:?} θ {}",
             e.theta
         );
+    }
+}
+
+/// `record` with its output and its input both multiplied by `scale`.
+fn scaled(record: &Record, scale: f64) -> Record {
+    let data = FitData {
+        times: record.data.times.clone(),
+        y: record.data.y.iter().map(|v| v * scale).collect(),
+        input: record.data.input.rescaled(0.0, 1.0, 1.0 / scale),
+    };
+    Record {
+        data,
+        y0: record.y0 * scale,
+    }
+}
+
+/// A method's reading against the unit record's: K, τ, ζ, ωn, τ1, τ2 to 1e-9 of themselves,
+/// θ to 1e-9 of the record's length, the fit % to 1e-7, the same warnings' kinds.
+fn same_reading(got: &HandEstimate, unit: &HandEstimate, length: f64) {
+    let at = format!("{:?}: {got:?} vs {unit:?}", unit.method);
+    let near = |x: f64, y: f64| (x - y).abs() <= 1e-9 * y.abs();
+    assert!(near(got.k, unit.k), "K {at}");
+    assert!((got.theta - unit.theta).abs() <= 1e-9 * length, "θ {at}");
+    assert!(
+        (got.fit_percent - unit.fit_percent).abs() < 1e-7,
+        "fit % {at}"
+    );
+    assert_eq!(got.tau.is_some(), unit.tau.is_some(), "{at}");
+    let tau = got.tau.zip(unit.tau);
+    assert!(tau.is_none_or(|(x, y)| near(x, y)), "τ {at}");
+    if let (Some(g), Some(u)) = (got.second_order, unit.second_order) {
+        assert!(
+            near(g.zeta, u.zeta) && near(g.omega_n, u.omega_n),
+            "ζ, ωn {at}"
+        );
+        for (x, y) in [(g.tau1, u.tau1), (g.tau2, u.tau2)] {
+            assert!(x.zip(y).is_none_or(|(x, y)| near(x, y)), "τ1, τ2 {at}");
+        }
+    }
+    let kinds = |e: &HandEstimate| {
+        e.warnings
+            .iter()
+            .map(std::mem::discriminant)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(kinds(got), kinds(unit), "warnings {at}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 32,
+        rng_seed: RngSeed::Fixed(0x5ca1e),
+        ..ProptestConfig::default()
+    })]
+
+    /// Issue 22, item 7: every hand method reads the same on a record scaled by 10^k (output
+    /// and input alike), k from −300 to 300, exact or noisy and quantised.
+    #[test]
+    fn every_method_reads_the_same_at_any_scale(k in -300i32..=300, noisy in any::<bool>()) {
+        let case = fopdt_case();
+        let shape = first_order(40.0);
+        let record = if noisy {
+            case.noisy(&shape, 0.02, 0.05, 7)
+        } else {
+            case.record(&shape)
+        };
+        let at_scale = scaled(&record, 10f64.powi(k));
+        let pairs = estimate_all(&at_scale, &Overrides::default())
+            .into_iter()
+            .zip(estimate_all(&record, &Overrides::default()));
+        for ((method, got), (_, unit)) in pairs {
+            match (got, unit) {
+                (Ok(g), Ok(u)) => same_reading(&g, &u, case.length),
+                (Err(g), Err(u)) => prop_assert_eq!(
+                    std::mem::discriminant(&g),
+                    std::mem::discriminant(&u),
+                    "{:?}",
+                    method
+                ),
+                (g, u) => prop_assert!(false, "{method:?}: {g:?} vs {u:?}"),
+            }
+        }
     }
 }

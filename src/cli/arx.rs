@@ -10,13 +10,14 @@ use clap::{Args, ValueEnum};
 use serde::Serialize;
 
 use crate::ident::arx::{
-    ArxModel, ArxOrders, Candidate, LsqError, Offset, Regression, arx, default_grid, select_orders,
+    ArxModel, ArxOrders, Candidate, LeastSquares, LsqError, Offset, Regression, Scores, arx,
+    default_grid, select_orders,
 };
 use crate::ident::prbs::PrbsError;
 use crate::ident::validation::{ArxValidation, Split, score_arx, split_index};
 use crate::lti::discrete::DiscreteError;
 use crate::text::cli::StepPhrase;
-use crate::text::lsq::{LsqPhrase, parameter_name};
+use crate::text::lsq::{LsqPhrase, parameter_name, percent};
 use crate::text::{Lang, Localize};
 
 use super::CliError;
@@ -173,7 +174,11 @@ pub struct ArxJson {
     pub constant: Option<f64>,
     /// Standard errors of [a1 … b_nb (c)], null when N = p.
     pub se: Vec<Option<f64>>,
-    pub j: f64,
+    /// J, null beyond double precision (a record near 1e±300), when `j_log10` gives it.
+    pub j: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub j_log10: Option<f64>,
+    /// Fit %s, null when undefined (a constant output) or when the model's output diverges.
     pub fit_percent_prediction: f64,
     pub fit_percent_simulation: f64,
     pub aic: f64,
@@ -194,10 +199,9 @@ pub struct Figures<'a> {
     pub model: &'a ArxModel,
     pub offset: Offset,
     pub regression: &'a Regression,
-    pub se: Vec<Option<f64>>,
-    pub j: f64,
-    pub fit_percent_prediction: f64,
-    pub fit_percent_simulation: f64,
+    /// θ's standard errors and J.
+    pub estimate: &'a LeastSquares,
+    pub scores: &'a Scores,
     pub aic: f64,
 }
 
@@ -211,10 +215,16 @@ impl ArxJson {
             a: m.a.clone(),
             b: m.b.clone(),
             constant: (f.offset == Offset::Constant).then_some(m.constant),
-            se: f.se.clone(),
-            j: f.j,
-            fit_percent_prediction: f.fit_percent_prediction,
-            fit_percent_simulation: f.fit_percent_simulation,
+            se: f.estimate.se.clone(),
+            j: f.estimate.cost.value(),
+            j_log10: f
+                .estimate
+                .cost
+                .value()
+                .is_none()
+                .then(|| f.estimate.cost.log10()),
+            fit_percent_prediction: f.scores.fit_percent_prediction,
+            fit_percent_simulation: f.scores.fit_percent_simulation,
             aic: f.aic,
             n: f.regression.y.len(),
             ts: m.ts,
@@ -270,7 +280,13 @@ pub fn write_figures(out: &mut impl Write, f: &Figures, lang: Lang) -> io::Resul
         p(LsqPhrase::StandardError)
     )?;
     let theta = m.theta();
-    for ((r, value), se) in f.regression.regressors.iter().zip(&theta).zip(&f.se) {
+    for ((r, value), se) in f
+        .regression
+        .regressors
+        .iter()
+        .zip(&theta)
+        .zip(&f.estimate.se)
+    {
         let se = se.map_or_else(|| "—".to_string(), num);
         writeln!(
             out,
@@ -280,18 +296,23 @@ pub fn write_figures(out: &mut impl Write, f: &Figures, lang: Lang) -> io::Resul
             se
         )?;
     }
-    writeln!(out, "{}: {}", p(LsqPhrase::Cost), num(f.j))?;
+    writeln!(
+        out,
+        "{}: {}",
+        p(LsqPhrase::Cost),
+        crate::text::lsq::cost(&f.estimate.cost, lang)
+    )?;
     writeln!(
         out,
         "{}: {}",
         p(LsqPhrase::FitPrediction),
-        lang.num(f.fit_percent_prediction, 4)
+        percent(f.scores.fit_percent_prediction, lang)
     )?;
     writeln!(
         out,
         "{}: {}",
         p(LsqPhrase::FitSimulation),
-        lang.num(f.fit_percent_simulation, 4)
+        percent(f.scores.fit_percent_simulation, lang)
     )?;
     writeln!(out, "{}: {}", p(LsqPhrase::Aic), lang.num(f.aic, 6))
 }
@@ -299,7 +320,7 @@ pub fn write_figures(out: &mut impl Write, f: &Figures, lang: Lang) -> io::Resul
 /// The validation lines of the text report.
 pub fn write_validation(out: &mut impl Write, v: &ValidationJson, lang: Lang) -> io::Result<()> {
     let p = |x: LsqPhrase| x.get(lang);
-    let pct = |x: f64| lang.num(x, 4);
+    let pct = |x: f64| percent(x, lang);
     writeln!(
         out,
         "{} ({} 1..{}): {} {}, {} {}",
@@ -345,13 +366,8 @@ pub fn run_arx(args: &ArxArgs, lang: Lang) -> Result<(), LsqCliError> {
     let end = estimation_end(&time, args.orders.validate)?;
     let (t_est, u_est, y_est) = (&time[..end], &u[..end], &y[..end]);
     let candidates = if args.select {
-        Some(select_orders(
-            t_est,
-            u_est,
-            y_est,
-            &default_grid(args.max_nk),
-            offset,
-        )?)
+        let grid = default_grid(args.max_nk, y_est.len())?;
+        Some(select_orders(t_est, u_est, y_est, &grid, offset)?)
     } else {
         None
     };
@@ -368,10 +384,8 @@ pub fn run_arx(args: &ArxArgs, lang: Lang) -> Result<(), LsqCliError> {
         model: &fit.model,
         offset,
         regression: &fit.regression,
-        se: fit.lsq.se.clone(),
-        j: fit.lsq.j,
-        fit_percent_prediction: fit.scores.fit_percent_prediction,
-        fit_percent_simulation: fit.scores.fit_percent_simulation,
+        estimate: &fit.lsq,
+        scores: &fit.scores,
         aic: fit.aic,
     };
     let mut out = io::stdout().lock();
@@ -403,15 +417,20 @@ fn write_text(
     if let Some(c) = candidates {
         writeln!(out, "{}:", LsqPhrase::Candidates.get(lang))?;
         for c in c.iter().take(5) {
+            let exact = if c.exact {
+                format!(" ({})", LsqPhrase::ExactFit.get(lang))
+            } else {
+                String::new()
+            };
             writeln!(
                 out,
-                "  na = {}, nb = {}, nk = {}: AIC {}, {} {}",
+                "  na = {}, nb = {}, nk = {}: AIC {}, {} {}{exact}",
                 c.orders.na,
                 c.orders.nb,
                 c.orders.nk,
                 lang.num(c.aic, 6),
                 LsqPhrase::FitSimulation.get(lang),
-                lang.num(c.fit_percent_simulation, 4)
+                percent(c.fit_percent_simulation, lang)
             )?;
         }
     }

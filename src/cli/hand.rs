@@ -78,9 +78,13 @@ pub enum HandCliError {
 }
 
 impl HandArgs {
-    fn overrides(&self) -> Overrides {
-        Overrides {
-            tangent_time: self.tangent_at,
+    /// The student's construction, a typed tangent's point refused outside the response.
+    fn overrides(&self, record: &Record) -> Result<Overrides, HandError> {
+        Ok(Overrides {
+            tangent_time: self
+                .tangent_at
+                .map(|t| record.tangent_time(t))
+                .transpose()?,
             y0: None,
             y_final: self.final_level,
             dead_time_from: if self.first_departure {
@@ -88,7 +92,7 @@ impl HandArgs {
             } else {
                 DeadTimeFrom::Tangent
             },
-        }
+        })
     }
 }
 
@@ -165,7 +169,7 @@ pub struct TableJson {
 pub fn run_hand(args: &HandArgs, lang: Lang) -> Result<(), HandCliError> {
     let (_, experiment, data) = args.data.prepare()?;
     let record = Record::from_fit_data(&data, experiment.operating_point(&data))?;
-    let overrides = args.overrides();
+    let overrides = args.overrides(&record)?;
     let mut out = io::stdout().lock();
     let written = match args.method {
         Some(m) => {

@@ -11,7 +11,7 @@ use clap::Args;
 use serde::Serialize;
 
 use crate::ident::models::{Model, Structure, Values};
-use crate::ident::prbs::{Prbs, simulate_record, taps, to_csv};
+use crate::ident::prbs::{Prbs, sample_times, simulate_record, taps, to_csv};
 use crate::text::Lang;
 
 use super::CliError;
@@ -120,7 +120,7 @@ pub fn run_prbs(args: &PrbsArgs, _lang: Lang) -> Result<(), LsqCliError> {
         }
         None => None,
     };
-    let time: Vec<f64> = (0..u.len()).map(|k| k as f64 * args.ts).collect();
+    let time = sample_times(u.len(), args.ts)?;
     let mut out = io::stdout().lock();
     let written = if args.json {
         super::write_json_line(

@@ -9,7 +9,7 @@ use std::io::{self, Write};
 use clap::Args;
 use serde::Serialize;
 
-use crate::ident::arx::{Offset, aic};
+use crate::ident::arx::Offset;
 use crate::ident::rls::{RlsOptions, rls_arx};
 use crate::ident::validation::score_arx;
 use crate::text::Lang;
@@ -68,23 +68,13 @@ pub fn run_rls(args: &RlsArgs, lang: Lang) -> Result<(), LsqCliError> {
     };
     let orders = args.orders.orders();
     let fit = rls_arx(&time[..end], &u[..end], &y[..end], orders, offset, &options)?;
-    let reg = &fit.regression;
-    let theta = nalgebra::DVector::from_column_slice(&fit.run.last);
-    let j = (&reg.y - &reg.phi * theta).norm_squared();
-    let (rows, p) = reg.phi.shape();
-    let p_n = &fit.run.covariance;
-    let se = (0..p)
-        .map(|i| (rows > p).then(|| (j / (rows - p) as f64 * p_n[(i, i)].max(0.0)).sqrt()))
-        .collect();
     let figures = Figures {
         model: &fit.model,
         offset,
-        regression: reg,
-        se,
-        j,
-        fit_percent_prediction: fit.scores.fit_percent_prediction,
-        fit_percent_simulation: fit.scores.fit_percent_simulation,
-        aic: aic(rows, j, p),
+        regression: &fit.regression,
+        estimate: &fit.run.estimate,
+        scores: &fit.scores,
+        aic: fit.aic,
     };
     let validation = args
         .orders

@@ -18,7 +18,9 @@
 //!
 //! [`simulate_record`] gives a chosen model's response to the signal with noise, exactly
 //! (the measured input held between samples, [`Excitation::measured`] + [`Model::simulate`]),
-//! and [`to_csv`] writes the record as `time,u,y`, readable by `degrau fit`.
+//! and [`to_csv`] writes the record as `time,u,y`, readable by `degrau fit`. A time column
+//! or an output beyond double precision (a huge period, gain or noise) is refused, never
+//! written as infinities.
 
 use serde::{Deserialize, Serialize};
 
@@ -78,6 +80,10 @@ pub enum PrbsError {
     BadLength(usize),
     /// The noise level is negative or not finite, or the period is not positive.
     BadSimulation,
+    /// `samples` samples every `ts` seconds end beyond double precision.
+    TimeBeyondRange { samples: usize, ts: f64 },
+    /// The simulated output (with its noise) goes beyond double precision.
+    OutputBeyondRange,
     /// The model cannot be simulated.
     Model(ModelError),
 }
@@ -200,10 +206,10 @@ pub fn simulate_record(
     noise: f64,
     seed: u64,
 ) -> Result<Record, PrbsError> {
-    if !(ts.is_finite() && ts > 0.0 && noise.is_finite() && noise >= 0.0) || u.is_empty() {
+    if !(noise.is_finite() && noise >= 0.0) || u.is_empty() {
         return Err(PrbsError::BadSimulation);
     }
-    let time: Vec<f64> = (0..u.len()).map(|k| k as f64 * ts).collect();
+    let time = sample_times(u.len(), ts)?;
     let mut y = match Excitation::measured(&time, u, None, Hold::Zoh) {
         Some(input) => model.simulate(&input, &time).map_err(PrbsError::Model)?,
         None => vec![model.get(super::models::Param::Y0); u.len()],
@@ -214,11 +220,26 @@ pub fn simulate_record(
             *v += noise * gaussian(&mut rng);
         }
     }
+    if y.iter().any(|v| !v.is_finite()) {
+        return Err(PrbsError::OutputBeyondRange);
+    }
     Ok(Record {
         time,
         u: u.to_vec(),
         y,
     })
+}
+
+/// The instants k·`ts` of `samples` samples (s), refused when the period is not a positive
+/// number or the last instant is beyond double precision.
+pub fn sample_times(samples: usize, ts: f64) -> Result<Vec<f64>, PrbsError> {
+    if !(ts.is_finite() && ts > 0.0) {
+        return Err(PrbsError::BadSimulation);
+    }
+    if !(samples.saturating_sub(1) as f64 * ts).is_finite() {
+        return Err(PrbsError::TimeBeyondRange { samples, ts });
+    }
+    Ok((0..samples).map(|k| k as f64 * ts).collect())
 }
 
 /// A standard normal draw (Box–Muller).

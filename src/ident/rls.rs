@@ -13,12 +13,18 @@
 //!
 //! [`Rls`] steps one sample at a time (the app animates it); [`run`] goes through the rows of a
 //! [`Regression`] and keeps the trajectory; [`rls_arx`] does it for an ARX model of a record.
+//!
+//! [`run`] steps in the solving units of [`crate::ident::arx`] (each column of Φ and Y
+//! divided by its largest magnitude) and maps θ_k, e_k and the last estimate's figures back,
+//! so a record at 1e300 or 1e-300 gives what it gives at 1: α of P₀ = α·I is in those units
+//! (the same trust at any scale), and θ₀ is given in the record's units.
 
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
 use super::arx::{
-    ArxModel, ArxOrders, LsqError, Offset, Regression, Scores, arx_regression, sampling_period,
+    ArxModel, ArxOrders, Equilibrated, LeastSquares, LsqError, Offset, Regression, Scores,
+    arx_regression, sampling_period,
 };
 
 /// The settings of a recursive estimate.
@@ -119,28 +125,36 @@ pub struct RlsRun {
     pub errors: Vec<f64>,
     /// θ_N.
     pub last: Vec<f64>,
-    /// P_N (at λ = 1 and a large α, (ΦᵀΦ)⁻¹: σ̂²·P_N is the covariance of θ̂).
-    pub covariance: DMatrix<f64>,
+    /// θ_N's residuals, J and standard errors σ̂·√(P_N)ᵢᵢ, σ̂² = J/(N − p) (at λ = 1 and a
+    /// large α, P_N is (ΦᵀΦ)⁻¹ and σ̂²·P_N the covariance of θ̂).
+    pub estimate: LeastSquares,
 }
 
-/// Runs RLS through the rows of `reg` in order.
+/// Runs RLS through the rows of `reg` in order, in the solving units (module docs).
 pub fn run(reg: &Regression, options: &RlsOptions) -> Result<RlsRun, LsqError> {
-    let mut rls = Rls::new(reg.phi.ncols(), options)?;
-    let mut trajectory = Vec::with_capacity(reg.phi.nrows());
-    let mut errors = Vec::with_capacity(reg.phi.nrows());
-    let mut phi = vec![0.0; reg.phi.ncols()];
-    for r in 0..reg.phi.nrows() {
+    let solving = Equilibrated::of(reg);
+    let in_solving_units = RlsOptions {
+        theta0: options.theta0.as_deref().map(|t| solving.theta_in(t)),
+        ..options.clone()
+    };
+    let mut rls = Rls::new(reg.phi.ncols(), &in_solving_units)?;
+    let (rows, p) = solving.phi.shape();
+    let mut trajectory = Vec::with_capacity(rows);
+    let mut errors = Vec::with_capacity(rows);
+    let mut phi = vec![0.0; p];
+    for r in 0..rows {
         for (c, v) in phi.iter_mut().enumerate() {
-            *v = reg.phi[(r, c)];
+            *v = solving.phi[(r, c)];
         }
-        errors.push(rls.update(&phi, reg.y[r]));
-        trajectory.push(rls.theta().to_vec());
+        errors.push(solving.error_out(rls.update(&phi, solving.y[r])));
+        trajectory.push(solving.theta_out(rls.theta())?);
     }
+    let variances = (rows > p).then(|| rls.p.diagonal().iter().copied().collect());
     Ok(RlsRun {
+        last: solving.theta_out(rls.theta())?,
+        estimate: solving.estimate(&rls.theta, variances)?,
         trajectory,
         errors,
-        last: rls.theta().to_vec(),
-        covariance: rls.p,
     })
 }
 
@@ -152,6 +166,8 @@ pub struct RlsFit {
     pub regression: Regression,
     /// The last model's prediction and simulation, scored on the rows of Φ.
     pub scores: Scores,
+    /// The last model's AIC on the rows of Φ.
+    pub aic: f64,
 }
 
 /// RLS for an ARX model of `orders` on the record (`time` in s, `u`, `y`), the operating
@@ -165,16 +181,11 @@ pub fn rls_arx(
     options: &RlsOptions,
 ) -> Result<RlsFit, LsqError> {
     let (reg, (u0, y0)) = arx_regression(time, u, y, orders, offset)?;
-    if reg.phi.nrows() == 0 {
-        return Err(LsqError::TooFewSamples {
-            rows: 0,
-            parameters: reg.regressors.len(),
-        });
-    }
     let run = run(&reg, options)?;
     let model = ArxModel::from_theta(orders, &run.last, (u0, y0), sampling_period(time));
     Ok(RlsFit {
         scores: model.score(u, y, reg.first, reg.first),
+        aic: run.estimate.cost.aic(reg.phi.nrows(), reg.phi.ncols()),
         run,
         model,
         regression: reg,

@@ -175,6 +175,17 @@ impl Localize for HandError {
                 format!("{} is not a level or a time", lang.num(*v, 4)),
                 format!("{} não é um nível nem um tempo", lang.num(*v, 4)),
             ),
+            HandError::TangentOutside { t, start, end } => {
+                let (t, start, end) = (lang.num(*t, 6), lang.num(*start, 6), lang.num(*end, 6));
+                lang.pick(
+                    format!(
+                        "the tangent's point t = {t} s is outside the response, which runs from the step at {start} s to the record's end at {end} s"
+                    ),
+                    format!(
+                        "o ponto da tangente t = {t} s está fora da resposta, que vai do degrau em {start} s ao fim do registro em {end} s"
+                    ),
+                )
+            }
             HandError::Model(e) => e.text(lang),
         }
     }
@@ -226,7 +237,7 @@ pub fn estimate_row(e: &HandEstimate, lang: Lang) -> [String; 7] {
         n(e.theta),
         e.tau.map(n).unwrap_or_default(),
         second,
-        lang.num(e.fit_percent, 4),
+        super::lsq::percent(e.fit_percent, lang),
     ]
 }
 
@@ -255,7 +266,7 @@ pub fn least_squares_row(r: &FitReport, lang: Lang) -> [String; 7] {
         } else {
             String::new()
         },
-        lang.num(r.fit_percent, 4),
+        super::lsq::percent(r.fit_percent, lang),
     ]
 }
 
@@ -412,6 +423,11 @@ pub fn messages() -> Vec<Message> {
         HandError::LevelNotReached { percent: 75.0 },
         HandError::NoSteepestRise,
         HandError::NoTimeConstant { tau: -1.0 },
+        HandError::TangentOutside {
+            t: 1e9,
+            start: 2.0,
+            end: 30.5,
+        },
         HandError::ThreePointShape { x: 0.3 },
         HandError::BadOverride(f64::NAN),
         HandError::Model(ModelError::Overflow),

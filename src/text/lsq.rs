@@ -4,7 +4,7 @@
 //! função custo, estimador recursivo, fator de esquecimento, sinal PRBS, validação, …).
 
 use crate::cli::arx::LsqCliError;
-use crate::ident::arx::{LsqError, Regressor};
+use crate::ident::arx::{Cost, LsqError, Regressor};
 use crate::ident::prbs::{MAX_ORDER, MIN_ORDER, PrbsError};
 use crate::ident::validation::{MIN_PART, ValidationError};
 use crate::lti::discrete::DiscreteError;
@@ -51,6 +51,54 @@ crate::phrases! {
         DeadTime => ("Dead time θ (s)", "Tempo morto θ (s)"),
         Delay => ("Delay nk (samples)", "Atraso nk (amostras)"),
         StaticGain => ("Static gain", "Ganho estático"),
+        ExactFit => ("exact fit", "ajuste exato"),
+        FitUndefined => (
+            "undefined: the output is constant over these samples",
+            "indefinido: a saída é constante nessas amostras"
+        ),
+        FitDiverges => (
+            "none: the model's output diverges beyond double precision",
+            "nenhum: a saída do modelo diverge além da precisão dupla"
+        ),
+        BeyondDouble => (
+            "beyond double precision in the record's units",
+            "além da precisão dupla nas unidades do registro"
+        ),
+    }
+}
+
+/// A fit % as text: the number, or in words why there is none (a constant output, a model
+/// whose output diverges).
+pub fn percent(x: f64, lang: Lang) -> String {
+    if x.is_finite() {
+        lang.num(x, 4)
+    } else if x.is_nan() {
+        LsqPhrase::FitUndefined.get(lang).into()
+    } else {
+        LsqPhrase::FitDiverges.get(lang).into()
+    }
+}
+
+/// 10^`log10` written as `m·e±E` with `digits` significant digits, for a number a double
+/// cannot hold.
+fn power_of_ten(log10: f64, digits: i32, lang: Lang) -> String {
+    let mut exponent = log10.floor();
+    let mut m = crate::lti::number::sig(10f64.powf(log10 - exponent), digits);
+    if m == "10" {
+        (m, exponent) = ("1".into(), exponent + 1.0);
+    }
+    lang.localize_number(&format!("{m}e{exponent}"))
+}
+
+/// J as text: the number, or its order of magnitude when it lies beyond double precision.
+pub fn cost(c: &Cost, lang: Lang) -> String {
+    match c.value() {
+        Some(j) => lang.num(j, 6),
+        None => format!(
+            "{} ({})",
+            power_of_ten(c.log10(), 6, lang),
+            LsqPhrase::BeyondDouble.get(lang)
+        ),
     }
 }
 
@@ -115,6 +163,32 @@ impl Localize for LsqError {
                     ),
                     format!(
                         "Φ'Φ é singular: o regressor {i} repete os anteriores (a entrada não excita o suficiente, ou as ordens são altas demais)"
+                    ),
+                )
+            }
+            LsqError::ConstantOutput => lang
+                .pick(
+                    "the output never changes: there is nothing to identify, and no fit % to give",
+                    "a saída nunca muda: não há o que identificar, nem ajuste % a dar",
+                )
+                .into(),
+            LsqError::LagBeyondRecord { lag, samples } => lang.pick(
+                format!(
+                    "the longest lag, max(na, nk + nb − 1) = {lag} samples, leaves no row of Φ in a record of {samples} samples: use a smaller delay or lower orders"
+                ),
+                format!(
+                    "o maior atraso, max(na, nk + nb − 1) = {lag} amostras, não deixa nenhuma linha de Φ num registro de {samples} amostras: use um atraso menor ou ordens menores"
+                ),
+            ),
+            LsqError::Unrepresentable { regressor, log10 } => {
+                let r = regressor_symbol(*regressor);
+                let e = lang.localize_number(&format!("{log10:.1}"));
+                lang.pick(
+                    format!(
+                        "the parameter of {r} (or its standard error) is about 1e{e} in the record's units, beyond double precision: express u or y in other units"
+                    ),
+                    format!(
+                        "o parâmetro de {r} (ou seu desvio padrão) é cerca de 1e{e} nas unidades do registro, além da precisão dupla: expresse u ou y em outras unidades"
                     ),
                 )
             }
@@ -300,6 +374,23 @@ impl Localize for PrbsError {
                     "o período de amostragem deve ser positivo e o nível de ruído não negativo",
                 )
                 .into(),
+            PrbsError::TimeBeyondRange { samples, ts } => {
+                let ts = lang.num(*ts, 6);
+                lang.pick(
+                    format!(
+                        "{samples} samples every {ts} s end beyond double precision (about 1.8e308 s): use a smaller sampling period"
+                    ),
+                    format!(
+                        "{samples} amostras a cada {ts} s terminam além da precisão dupla (cerca de 1,8e308 s): use um período de amostragem menor"
+                    ),
+                )
+            }
+            PrbsError::OutputBeyondRange => lang
+                .pick(
+                    "the simulated output goes beyond double precision (about 1.8e308): use a smaller gain, levels or --noise",
+                    "a saída simulada vai além da precisão dupla (cerca de 1,8e308): use ganho, níveis ou --noise menores",
+                )
+                .into(),
             PrbsError::Model(e) => e.text(lang),
         }
     }
@@ -347,6 +438,15 @@ pub fn messages() -> Vec<Message> {
             parameters: 4,
         },
         LsqError::Singular { index: 1 },
+        LsqError::ConstantOutput,
+        LsqError::LagBeyondRecord {
+            lag: 100_000_002,
+            samples: 762,
+        },
+        LsqError::Unrepresentable {
+            regressor: Regressor::Input(1),
+            log10: 600.3,
+        },
         LsqError::BadForgetting(1.5),
         LsqError::BadCovariance(-1.0),
         LsqError::BadInitialTheta {
@@ -387,6 +487,11 @@ pub fn messages() -> Vec<Message> {
         },
         PrbsError::BadLength(0),
         PrbsError::BadSimulation,
+        PrbsError::TimeBeyondRange {
+            samples: 10,
+            ts: 1e308,
+        },
+        PrbsError::OutputBeyondRange,
     ];
     all.extend(
         lsq.iter()

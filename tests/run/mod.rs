@@ -50,3 +50,21 @@ pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
         ..proptest::test_runner::Config::default()
     }
 }
+
+/// [`STEP`] (the notes' first-order step test) with u and y multiplied by `k`, written as
+/// `{name}_{k}.csv` in the tests' temporary directory; its path.
+pub fn scaled_step(name: &str, k: f64) -> String {
+    let mut out = String::new();
+    for line in std::fs::read_to_string(STEP).unwrap().lines() {
+        let cells: Vec<&str> = line.split(',').collect();
+        if let (&[t, u, y], false) = (&cells[..], line.starts_with('#')) {
+            match (u.parse::<f64>(), y.parse::<f64>()) {
+                (Ok(u), Ok(y)) => out.push_str(&format!("{t},{:e},{:e}\n", u * k, y * k)),
+                _ => out.push_str(&format!("{line}\n")),
+            }
+        }
+    }
+    let path = format!("{}/{name}_{k:e}.csv", env!("CARGO_TARGET_TMPDIR"));
+    std::fs::write(&path, out).unwrap();
+    path
+}

@@ -28,7 +28,12 @@
 //! steepest slope from local least-squares lines over a window chosen from the noise). The
 //! student may move the tangent's point and the two levels ([`Overrides`]) and recompute.
 //! Each method's model is simulated on the record's own excitation and scored with the fit %
-//! of [`crate::ident::fit`] (100·(1 − ‖y − ŷ‖/‖y − ȳ‖)) over every sample of the record.
+//! of [`crate::ident::fit`] (100·(1 − ‖y − ŷ‖/‖y − ȳ‖), summed without overflow at any scale)
+//! over every sample of the record.
+//!
+//! A construction may put θ below 0 (the tangent meeting y0 before the step): the model then
+//! uses θ = 0, and the estimate reports that θ, with a warning giving the construction's. A θ
+//! within [`ROUNDING`] of the record's length of 0 is rounding, read as 0 without a warning.
 
 mod curve;
 mod methods;
@@ -42,6 +47,9 @@ use curve::Curve;
 
 /// The fewest samples after the step a construction reads.
 pub const MIN_SAMPLES_AFTER: usize = 8;
+
+/// A dead time this share of the record's length after the step from 0 is rounding.
+pub const ROUNDING: f64 = 1e-9;
 
 /// The damping range the notes give the three-point method ("boas estimativas").
 pub const THREE_POINT_ZETA: (f64, f64) = (0.707, 3.0);
@@ -121,6 +129,9 @@ pub enum HandError {
     ThreePointShape { x: f64 },
     /// A level or time the student gave is not a finite number.
     BadOverride(f64),
+    /// The tangent's point `t` (s) is outside the response, from the step at `start` to the
+    /// record's end at `end` (s).
+    TangentOutside { t: f64, start: f64, end: f64 },
     /// The method's model could not be simulated.
     Model(#[from] ModelError),
 }
@@ -148,7 +159,8 @@ pub enum DeadTimeFrom {
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct Overrides {
     /// The tangent's point (s, absolute): the tangent is the local line there instead of at
-    /// the steepest rise.
+    /// the steepest rise (outside the response, the nearest one, as a drag past the end
+    /// gives; [`Record::tangent_time`] refuses a typed time outside it).
     pub tangent_time: Option<f64>,
     /// The initial level (output units) instead of the operating point.
     pub y0: Option<f64>,
@@ -216,7 +228,8 @@ pub struct HandEstimate {
     pub method: HandMethod,
     /// Static gain K = Δy/Δu (output units per input unit).
     pub k: f64,
-    /// Dead time θ (s), as read.
+    /// Dead time θ (s) the model uses: as read, or 0 when the construction puts it before
+    /// the step (a warning then gives the construction's).
     pub theta: f64,
     /// The first-order time constant τ (s).
     pub tau: Option<f64>,
@@ -288,6 +301,24 @@ impl Record {
 
     pub fn du(&self) -> f64 {
         self.data.input.du()
+    }
+
+    /// The record's last instant (s).
+    pub fn end(&self) -> f64 {
+        self.data.times.last().copied().unwrap_or_else(|| self.t0())
+    }
+
+    /// A typed tangent's point `t` (s), refused outside the response (from the step to the
+    /// record's end).
+    pub fn tangent_time(&self, t: f64) -> Result<f64, HandError> {
+        let (start, end) = (self.t0(), self.end());
+        if !t.is_finite() {
+            return Err(HandError::BadOverride(t));
+        }
+        if !(start..=end).contains(&t) {
+            return Err(HandError::TangentOutside { t, start, end });
+        }
+        Ok(t)
     }
 
     /// The final level: the mean of the samples in the last tenth of the record's time.
@@ -422,11 +453,17 @@ fn finish(
     method: HandMethod,
     mut read: Read,
 ) -> Result<HandEstimate, HandError> {
-    if read.theta < 0.0 {
+    let rounding = ROUNDING * (record.end() - record.t0());
+    if read.theta < -rounding {
         read.warnings
             .push(HandWarning::NegativeDeadTime { theta: read.theta });
     }
-    let model = model_of(reading.k, read.theta.max(0.0), read.shape, reading.y0);
+    let theta = if read.theta.abs() <= rounding {
+        0.0
+    } else {
+        read.theta.max(0.0)
+    };
+    let model = model_of(reading.k, theta, read.shape, reading.y0);
     let fit_percent = fit_percent(&model, &record.data)?;
     let (tau, second_order) = match read.shape {
         Shape::First { tau } => (Some(tau), None),
@@ -435,7 +472,7 @@ fn finish(
     Ok(HandEstimate {
         method,
         k: reading.k,
-        theta: read.theta,
+        theta,
         tau,
         second_order,
         model,
@@ -498,18 +535,9 @@ pub fn least_squares(
 }
 
 /// The fit % of `model` on every sample of `data`: 100·(1 − ‖y − ŷ‖/‖y − ȳ‖), as
-/// [`crate::ident::fit`] reports it (NaN for a constant record).
+/// [`crate::ident::fit`] reports it, summed as [`super::arx::fit_percent`] sums at any scale
+/// (NaN for a constant record).
 pub fn fit_percent(model: &Model, data: &FitData) -> Result<f64, ModelError> {
     let simulated = model.simulate(&data.input, &data.times)?;
-    let mean = super::guess::mean(&data.y);
-    let (mut error, mut spread) = (0.0, 0.0);
-    for (y, s) in data.y.iter().zip(&simulated) {
-        error += (y - s) * (y - s);
-        spread += (y - mean) * (y - mean);
-    }
-    Ok(if spread > 0.0 {
-        100.0 * (1.0 - (error / spread).sqrt())
-    } else {
-        f64::NAN
-    })
+    Ok(super::arx::fit_percent(&data.y, &simulated))
 }

@@ -14,8 +14,16 @@
 //!   measured past outputs; the free simulation feeds its own past outputs back. Both start
 //!   from the measured samples before the first full row and are scored on the rows of Φ,
 //!   with the project's fit % = 100·(1 − ‖y − ŷ‖/‖y − ȳ‖).
+//! - **Any scale**: Φ and Y are solved in their own units (each column and Y divided by its
+//!   largest magnitude, [`units`]) and θ̂, its standard errors and J mapped back, so a record
+//!   at 1e300 or 1e-300 gives the same a's, the b's scaled exactly, and the same fit %; J,
+//!   which may then lie beyond double precision, is a [`Cost`].
 //! - **AIC** (MATLAB's raw `aic` and [`crate::ident::fit`]'s): N·ln(J/N) + 2p + N·(ln 2π + 1),
-//!   p the number of estimated parameters; [`select_orders`] compares a grid on the same rows.
+//!   p the number of estimated parameters; [`select_orders`] compares a grid on the same rows,
+//!   best AIC first, except that orders fitting exactly (J at rounding level, below
+//!   [`ROUNDING_LEVEL`] of Σ(y − ȳ)², where AIC is decided by roundoff) come first, fewest
+//!   parameters first. A grid or an order whose longest lag the record cannot hold is refused
+//!   before anything is fitted.
 //! - **The operating point** ([`Offset`]): a record far from zero is worked in deviations,
 //!   either u − u0, y − y0 with u0, y0 the means of the samples before the input's first
 //!   significant change ([`crate::ident::excitation`]'s rule; the first sample when it
@@ -26,11 +34,15 @@
 //!
 //! The sampling period h is the record's median interval; ARX assumes it is uniform.
 
+mod units;
+
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
 use super::excitation::{Excitation, Hold};
 use crate::lti::discrete::{DiscreteError, DiscreteTf};
+pub(crate) use units::Equilibrated;
+pub use units::{Cost, ROUNDING_LEVEL, fit_percent, mean};
 
 /// One column of Φ.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -77,8 +89,10 @@ pub struct LeastSquares {
     pub se: Vec<Option<f64>>,
     /// E = Y − Φθ̂, one per row.
     pub residuals: Vec<f64>,
-    /// J = EᵀE.
+    /// J = EᵀE as a double: 0 or ∞ where J lies beyond double precision (see `cost`).
     pub j: f64,
+    /// J, kept at any scale.
+    pub cost: Cost,
 }
 
 /// What stops a least-squares estimate (`crate::text::lsq` says it).
@@ -95,6 +109,13 @@ pub enum LsqError {
     TooFewSamples { rows: usize, parameters: usize },
     /// Regressor `index` (0-based) is collinear with the ones before it.
     Singular { index: usize },
+    /// The output never changes: nothing to identify, and no fit % to give.
+    ConstantOutput,
+    /// The longest lag, `lag` samples, leaves no row of Φ in a record of `samples`.
+    LagBeyondRecord { lag: usize, samples: usize },
+    /// The parameter of `regressor` (or its standard error) is about 10^`log10` in the
+    /// record's units, beyond double precision.
+    Unrepresentable { regressor: Regressor, log10: f64 },
     /// The forgetting factor λ is outside (0, 1].
     BadForgetting(f64),
     /// The initial covariance α is not a positive finite number.
@@ -165,7 +186,8 @@ pub fn regression(
     })
 }
 
-/// θ̂ = argmin ‖Y − Φθ‖² by QR, with J and the standard errors (see the module docs).
+/// θ̂ = argmin ‖Y − Φθ‖² by QR in the solving units, with J and the standard errors in
+/// the record's (see the module docs).
 pub fn least_squares(reg: &Regression) -> Result<LeastSquares, LsqError> {
     let (rows, p) = reg.phi.shape();
     if rows < p || p == 0 {
@@ -174,68 +196,28 @@ pub fn least_squares(reg: &Regression) -> Result<LeastSquares, LsqError> {
             parameters: p,
         });
     }
-    let qr = reg.phi.clone().qr();
+    let solving = Equilibrated::of(reg);
+    let qr = solving.phi.clone().qr();
     let r = qr.r();
     for i in 0..p {
-        let norm = reg.phi.column(i).norm();
+        let norm = solving.phi.column(i).norm();
         if norm == 0.0 || r[(i, i)].abs() <= COLLINEAR * norm {
             return Err(LsqError::Singular { index: i });
         }
     }
-    let qty = qr.q().transpose() * &reg.y;
+    let qty = qr.q().transpose() * &solving.y;
     let theta = r
         .solve_upper_triangular(&qty)
         .ok_or(LsqError::Singular { index: 0 })?;
-    let e = &reg.y - &reg.phi * &theta;
-    let j = e.norm_squared();
-    let se = if rows > p {
-        let sigma = (j / (rows - p) as f64).sqrt();
+    let variances = if rows > p {
         let r_inv = r
             .solve_upper_triangular(&DMatrix::identity(p, p))
             .ok_or(LsqError::Singular { index: 0 })?;
-        (0..p).map(|i| Some(sigma * r_inv.row(i).norm())).collect()
+        Some((0..p).map(|i| r_inv.row(i).norm_squared()).collect())
     } else {
-        vec![None; p]
+        None
     };
-    Ok(LeastSquares {
-        theta: theta.iter().copied().collect(),
-        se,
-        residuals: e.iter().copied().collect(),
-        j,
-    })
-}
-
-/// The project's fit %: 100·(1 − ‖y − ŷ‖/‖y − ȳ‖); NaN for a constant y.
-pub fn fit_percent(y: &[f64], yhat: &[f64]) -> f64 {
-    let n = y.len().min(yhat.len());
-    if n == 0 {
-        return f64::NAN;
-    }
-    let mean = y[..n].iter().sum::<f64>() / n as f64;
-    let spread = y[..n]
-        .iter()
-        .map(|v| (v - mean).powi(2))
-        .sum::<f64>()
-        .sqrt();
-    let miss = y[..n]
-        .iter()
-        .zip(&yhat[..n])
-        .map(|(a, b)| (a - b).powi(2))
-        .sum::<f64>()
-        .sqrt();
-    if spread > 0.0 {
-        100.0 * (1.0 - miss / spread)
-    } else {
-        f64::NAN
-    }
-}
-
-/// AIC = N·ln(J/N) + 2p + N·(ln 2π + 1) (J floored at the smallest normal number times N,
-/// so an exact fit stays finite).
-pub fn aic(rows: usize, j: f64, parameters: usize) -> f64 {
-    let n = rows as f64;
-    let mse = (j / n).max(f64::MIN_POSITIVE);
-    n * mse.ln() + 2.0 * parameters as f64 + n * ((2.0 * std::f64::consts::PI).ln() + 1.0)
+    solving.estimate(&theta, variances)
 }
 
 /// The orders of an ARX model.
@@ -264,7 +246,32 @@ impl ArxOrders {
 
     /// The longest lag: max(na, nk + nb − 1).
     pub fn max_lag(&self) -> usize {
-        self.na.max((self.nk + self.nb).saturating_sub(1))
+        self.na
+            .max(self.nk.saturating_add(self.nb).saturating_sub(1))
+    }
+
+    /// The parameters to estimate: na + nb, and the constant with [`Offset::Constant`].
+    pub fn parameters(&self, offset: Offset) -> usize {
+        self.na
+            .saturating_add(self.nb)
+            .saturating_add(usize::from(offset == Offset::Constant))
+    }
+
+    /// Refuses, before anything is built, orders a record of `samples` cannot hold: no
+    /// regressor, a longest lag leaving no row of Φ, or fewer rows than parameters.
+    pub fn check(&self, samples: usize, offset: Offset) -> Result<(), LsqError> {
+        if self.na.saturating_add(self.nb) == 0 {
+            return Err(LsqError::BadRegressors);
+        }
+        let lag = self.max_lag();
+        if lag >= samples {
+            return Err(LsqError::LagBeyondRecord { lag, samples });
+        }
+        let (rows, parameters) = (samples - lag, self.parameters(offset));
+        if rows < parameters {
+            return Err(LsqError::TooFewSamples { rows, parameters });
+        }
+        Ok(())
     }
 }
 
@@ -419,8 +426,7 @@ pub fn operating_point(time: &[f64], u: &[f64], y: &[f64], offset: Offset) -> (f
         .and_then(|e| e.changes.first().and_then(|c| c.index))
         .unwrap_or(1)
         .clamp(1, n.max(1));
-    let mean = |v: &[f64]| v[..before].iter().sum::<f64>() / before as f64;
-    (mean(u), mean(y))
+    (mean(&u[..before]), mean(&y[..before]))
 }
 
 /// The median sampling period of `time` (s), 1 when it has fewer than two samples.
@@ -437,14 +443,15 @@ pub fn arx_regression(
     orders: ArxOrders,
     offset: Offset,
 ) -> Result<(Regression, (f64, f64)), LsqError> {
-    if orders.na + orders.nb == 0 {
-        return Err(LsqError::BadRegressors);
-    }
     if u.len() != y.len() {
         return Err(LsqError::LengthMismatch {
             u: u.len(),
             y: y.len(),
         });
+    }
+    orders.check(y.len(), offset)?;
+    if y.iter().all(|&v| v == y[0]) {
+        return Err(LsqError::ConstantOutput);
     }
     let (u0, y0) = operating_point(time, u, y, offset);
     let du: Vec<f64> = u.iter().map(|v| v - u0).collect();
@@ -493,7 +500,9 @@ pub fn arx_from(
     let model = ArxModel::from_theta(orders, &lsq.theta, (u0, y0), sampling_period(time));
     Ok(ArxFit {
         scores: model.score(u, y, first, first),
-        aic: aic(regression.y.len(), lsq.j, regression.regressors.len()),
+        aic: lsq
+            .cost
+            .aic(regression.y.len(), regression.regressors.len()),
         model,
         offset,
         regression,
@@ -506,26 +515,70 @@ pub fn arx_from(
 pub struct Candidate {
     pub orders: ArxOrders,
     pub aic: f64,
-    pub j: f64,
+    /// J, `None` beyond double precision (then `j_log10` gives its order of magnitude).
+    pub j: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub j_log10: Option<f64>,
+    /// J at rounding level ([`ROUNDING_LEVEL`]): the order reproduces the rows exactly.
+    pub exact: bool,
     pub fit_percent_prediction: f64,
     pub fit_percent_simulation: f64,
 }
 
-/// The small default grid: na in 1..=3, nb in 1..=3, nk in 0..=`max_nk`.
-pub fn default_grid(max_nk: usize) -> Vec<ArxOrders> {
+impl Candidate {
+    fn of(orders: ArxOrders, fit: &ArxFit) -> Self {
+        let cost = fit.lsq.cost;
+        Self {
+            orders,
+            aic: fit.aic,
+            j: cost.value(),
+            j_log10: cost.value().is_none().then(|| cost.log10()),
+            exact: cost.exact(),
+            fit_percent_prediction: fit.scores.fit_percent_prediction,
+            fit_percent_simulation: fit.scores.fit_percent_simulation,
+        }
+    }
+
+    /// The search's order: exact fits first, fewest parameters first (their AIC is decided
+    /// by roundoff), then best AIC.
+    fn ranking(&self, other: &Self) -> std::cmp::Ordering {
+        let size = |c: &Self| c.orders.na + c.orders.nb;
+        other
+            .exact
+            .cmp(&self.exact)
+            .then_with(|| match self.exact {
+                true => size(self).cmp(&size(other)),
+                false => std::cmp::Ordering::Equal,
+            })
+            .then_with(|| self.aic.total_cmp(&other.aic))
+    }
+}
+
+/// The na and nb of the default grid.
+const GRID_ORDERS: std::ops::RangeInclusive<usize> = 1..=3;
+
+/// The small default grid: na in 1..=3, nb in 1..=3, nk in 0..=`max_nk`, refused at once
+/// when its longest lag leaves no row of Φ in a record of `samples`.
+pub fn default_grid(max_nk: usize, samples: usize) -> Result<Vec<ArxOrders>, LsqError> {
+    let widest = ArxOrders::new(*GRID_ORDERS.end(), *GRID_ORDERS.end(), max_nk);
+    let lag = widest.max_lag();
+    if lag >= samples {
+        return Err(LsqError::LagBeyondRecord { lag, samples });
+    }
     let mut grid = Vec::new();
-    for na in 1..=3 {
-        for nb in 1..=3 {
+    for na in GRID_ORDERS {
+        for nb in GRID_ORDERS {
             for nk in 0..=max_nk {
                 grid.push(ArxOrders::new(na, nb, nk));
             }
         }
     }
-    grid
+    Ok(grid)
 }
 
-/// Fits every order of `grid` on the same rows (from the grid's longest lag on) and returns
-/// them best AIC first; orders whose Φ is singular or too short are left out.
+/// Fits every order of `grid` on the same rows (from the grid's longest lag on) and ranks
+/// them ([`Candidate`]'s order: exact fits by size, then AIC); orders whose Φ is singular or
+/// too short are left out, and a grid whose longest lag leaves no row is refused at once.
 pub fn select_orders(
     time: &[f64],
     u: &[f64],
@@ -534,24 +587,24 @@ pub fn select_orders(
     offset: Offset,
 ) -> Result<Vec<Candidate>, LsqError> {
     let first = grid.iter().map(ArxOrders::max_lag).max().unwrap_or(0);
+    if first >= y.len() {
+        return Err(LsqError::LagBeyondRecord {
+            lag: first,
+            samples: y.len(),
+        });
+    }
     let mut out = Vec::new();
     let mut last_error = LsqError::BadRegressors;
     for &orders in grid {
         match arx_from(time, u, y, orders, offset, first) {
-            Ok(f) => out.push(Candidate {
-                orders,
-                aic: f.aic,
-                j: f.lsq.j,
-                fit_percent_prediction: f.scores.fit_percent_prediction,
-                fit_percent_simulation: f.scores.fit_percent_simulation,
-            }),
+            Ok(f) => out.push(Candidate::of(orders, &f)),
             Err(e) => last_error = e,
         }
     }
     if out.is_empty() {
         return Err(last_error);
     }
-    out.sort_by(|a, b| a.aic.total_cmp(&b.aic));
+    out.sort_by(Candidate::ranking);
     Ok(out)
 }
 
