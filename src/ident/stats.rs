@@ -85,8 +85,17 @@ pub fn median(v: &[f64]) -> f64 {
     if v.is_empty() {
         return f64::NAN;
     }
-    let mut w = v.to_vec();
-    let mid = w.len() / 2;
+    let mid = v.len() / 2;
+    // A short slice (a running median's window) is copied to the stack: no allocation.
+    let mut small = [0.0; 16];
+    let mut large = Vec::new();
+    let w: &mut [f64] = if v.len() <= small.len() {
+        small[..v.len()].copy_from_slice(v);
+        &mut small[..v.len()]
+    } else {
+        large.extend_from_slice(v);
+        &mut large
+    };
     *w.select_nth_unstable_by(mid, f64::total_cmp).1
 }
 

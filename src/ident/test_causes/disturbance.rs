@@ -21,7 +21,7 @@
 use super::{DisturbanceShape, Handling, TestCause, TestCauseKind, TestEvidence};
 use crate::ident::diagnose::{BIC_THRESHOLD, extension_reaches};
 use crate::ident::drift_evidence::{Z_DRIFT, settled_slope_before};
-use crate::ident::fit::{FitData, FitOptions, FitReport, fit};
+use crate::ident::fit::{FitData, FitOptions, FitReport, search_fit};
 use crate::ident::models::{Model, Param};
 use crate::ident::stats::lag_one;
 use crate::lti::StepInfoOptions;
@@ -65,7 +65,9 @@ pub fn detect(
     let best = crate::ident::parallel::map(&cuts, |&cut| {
         let keep: Vec<bool> = (0..data.y.len()).map(|i| i < cut).collect();
         let before = data.keeping(&keep);
-        let refit = fit(
+        // On the record's reduction when it is long: the refit only sets what the test
+        // looks at, the residuals over the whole record, computed below.
+        let refit = search_fit(
             &before,
             current.model.structure,
             current.model.values,
@@ -407,6 +409,7 @@ impl Sums {
 mod tests {
     use super::*;
     use crate::ident::excitation::Excitation;
+    use crate::ident::fit::fit;
     use crate::ident::models::{Structure, Values};
 
     /// The P1 (Kp 2, Tp1 3 s, from 50), its values, and 100 s of it stepped at `t0` with
