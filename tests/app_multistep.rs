@@ -307,3 +307,45 @@ fn a_step_held_under_three_time_constants_is_said_and_not_compared() {
     }
     assert!(h.query_all_by_label_contains("not linear").next().is_none());
 }
+
+/// The input logged to its own file (issue 22, item 17): typed into "Input's own file"
+/// under "How to read", the next load joins it on time; the model is driven by it (Kp
+/// near the synthetic process's 0.9), and a missing input file is named, keeping the test.
+#[test]
+fn an_input_in_its_own_file_is_joined_on_time() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
+    let mut h = Harness::builder()
+        .with_size([1000.0, 650.0])
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), DegrauApp::default());
+    h.run_steps(2);
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    h.get_by_label("How to read the file").click();
+    h.run_steps(2);
+    let field = || egui::accesskit::Role::TextInput;
+    h.get_by_role_and_label(field(), "Input's own file").focus();
+    h.run_steps(1);
+    h.get_by_role_and_label(field(), "Input's own file")
+        .type_text(&format!("{dir}two_files_input.txt"));
+    h.run_steps(1);
+    load(&mut h, &format!("{dir}two_files_output.txt"));
+    let loaded = h.state().ident.loaded.as_ref().expect("loaded");
+    let input = loaded.test.input.as_ref().expect("the joined input");
+    assert_eq!((input[0], input[input.len() - 1]), (165.0, 175.0));
+    let _ = h.state_mut().ident.apply(Command::Fit);
+    wait_for(&mut h, |h| h.state().ident.report.is_some());
+    let kp = h
+        .state()
+        .ident
+        .report
+        .as_ref()
+        .expect("a fit")
+        .model
+        .get(Param::Kp);
+    assert!((kp - 0.9).abs() < 0.03, "Kp {kp}");
+    // A missing input file is named, and the test loaded before stays.
+    h.state_mut().ident.settings.u_path = format!("{dir}no_such_input.txt");
+    load(&mut h, &format!("{dir}two_files_output.txt"));
+    h.get_by_label_contains("no_such_input.txt");
+    assert!(h.state().ident.loaded.is_some());
+}

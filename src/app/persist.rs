@@ -282,6 +282,7 @@ fn restore_ident(mut f: Fields<'_>, d: IdentSettings) -> IdentSettings {
         u_col: f.take("u_col", d.u_col),
         sampling_period: f.take("sampling_period", d.sampling_period),
         initial_input: f.take("initial_input", d.initial_input),
+        u_path: f.take("u_path", d.u_path),
         code: f.checked("code", d.code, |c| {
             if CODES.contains(&c.as_str()) {
                 Ok(())

@@ -26,6 +26,11 @@ crate::phrases! {
         InputColumn => ("Input column", "Coluna de entrada"),
         SamplingPeriod => ("Sampling period (s)", "Período de amostragem (s)"),
         InitialInput => ("Input before the record", "Entrada antes do registro"),
+        InputFile => ("Input's own file", "Arquivo próprio da entrada"),
+        InputFileHint => (
+            "optional: a file of time and input, joined on time",
+            "opcional: um arquivo de tempo e entrada, unido pelo tempo"
+        ),
         ColumnHint => ("automatic; or a name or a number", "automática; ou um nome ou um número"),
         DetectedColumn => ("read: {}", "lida: {}"),
         GiveSamplingPeriod => (

@@ -19,15 +19,18 @@ pub enum Choice {
     SamplingPeriod,
     /// The input before the record started.
     InitialInput,
+    /// A second file that holds the input (its own time and input columns), joined on time.
+    InputFile,
 }
 
 impl Choice {
-    pub const ALL: [Choice; 5] = [
+    pub const ALL: [Choice; 6] = [
         Choice::TimeColumn,
         Choice::OutputColumn,
         Choice::InputColumn,
         Choice::SamplingPeriod,
         Choice::InitialInput,
+        Choice::InputFile,
     ];
 }
 

@@ -132,6 +132,7 @@ fn reading_choices(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Co
             ui.end_row();
         }
     });
+    input_file(ui, &s.u_path, look, out);
     optional_choice(
         ui,
         Choice::SamplingPeriod,
@@ -155,6 +156,36 @@ fn reading_choices(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Co
         out,
     );
     ui.weak(Phrase::DropOrPaste.get(lang));
+}
+
+/// The input's own file, for the next load: a path field and a file dialog.
+fn input_file(ui: &mut Ui, path: &str, look: &Look, out: &mut Vec<Command>) {
+    let lang = look.lang;
+    ui.horizontal_wrapped(|ui| {
+        let label = ui.label(words::choice_name(Choice::InputFile, lang));
+        let mut edited = path.to_string();
+        if ui
+            .add(
+                egui::TextEdit::singleline(&mut edited)
+                    .hint_text(Phrase::InputFileHint.get(lang))
+                    .desired_width(190.0),
+            )
+            .labelled_by(label.id)
+            .changed()
+        {
+            out.push(Command::SetChoice(Choice::InputFile, edited));
+        }
+        if ui.button(Phrase::Open.get(lang)).clicked()
+            && let Some(p) = rfd::FileDialog::new()
+                .add_filter("input", &["csv", "tsv", "txt", "dat"])
+                .pick_file()
+        {
+            out.push(Command::SetChoice(
+                Choice::InputFile,
+                p.display().to_string(),
+            ));
+        }
+    });
 }
 
 /// A reading choice that is either not given or a number: a checkbox and a number field.

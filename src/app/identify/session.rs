@@ -60,6 +60,9 @@ pub struct IdentSettings {
     /// The input before the record started, for a test whose step came at the first sample
     /// (empty: none).
     pub initial_input: String,
+    /// A second file that holds the input, joined on time (empty: the input is a column of
+    /// the test's own file).
+    pub u_path: String,
     pub code: String,
     pub drift: bool,
     pub method: Method,
@@ -78,6 +81,7 @@ impl Default for IdentSettings {
             u_col: String::new(),
             sampling_period: String::new(),
             initial_input: String::new(),
+            u_path: String::new(),
             code: "P2DU".into(),
             drift: false,
             method: Method::LevenbergMarquardt,
@@ -386,13 +390,31 @@ impl Session {
         let loaded = self
             .load_options()
             .and_then(|o| data::load_file(std::path::Path::new(path), &o).map_err(LoadError::Data));
-        match loaded {
-            Ok(test) => {
+        match loaded.map(|test| self.with_input_file(test)) {
+            Ok(Ok(test)) => {
                 self.settings.example = false;
                 self.accept(test, source, cleared);
             }
+            Ok(Err((input_source, error))) => self.refuse(input_source, error),
             Err(error) => self.refuse(source, error),
         }
+    }
+
+    /// `test` with its input from the input's own file when one is chosen (joined on time,
+    /// [`crate::ident::join`]); the failure names that file.
+    fn with_input_file(&self, test: StepTest) -> Result<StepTest, (Source, LoadError)> {
+        let u_path = self.settings.u_path.trim();
+        if u_path.is_empty() {
+            return Ok(test);
+        }
+        let source = Source::File(u_path.to_string());
+        let sampling_period =
+            optional_number(&self.settings.sampling_period, Choice::SamplingPeriod)
+                .map_err(|e| (source.clone(), e))?;
+        let values = LoadOptions::from_text("", &self.settings.u_col, "none", sampling_period, 0);
+        data::load_file(std::path::Path::new(u_path), &values)
+            .and_then(|input| crate::ident::join::join_on_time(test, &input))
+            .map_err(|e| (source, LoadError::Data(e)))
     }
 
     /// Loads the example that ships with the app: the LECI step test of the course notes
@@ -459,10 +481,16 @@ impl Session {
         let s = &self.settings;
         let sampling_period = optional_number(&s.sampling_period, Choice::SamplingPeriod)?;
         optional_number(&s.initial_input, Choice::InitialInput)?;
+        // With the input in its own file, the test's file is read for its output alone.
+        let input = if s.u_path.trim().is_empty() {
+            s.u_col.as_str()
+        } else {
+            "none"
+        };
         Ok(LoadOptions::from_text(
             &s.time_col,
             &s.y_col,
-            &s.u_col,
+            input,
             sampling_period,
             0,
         ))
@@ -837,6 +865,7 @@ impl Session {
             Choice::InputColumn => &mut s.u_col,
             Choice::SamplingPeriod => &mut s.sampling_period,
             Choice::InitialInput => &mut s.initial_input,
+            Choice::InputFile => &mut s.u_path,
         };
         *field = text;
         // Typed for the next load, whatever file it reads.

@@ -34,6 +34,7 @@ pub fn choice_name(choice: Choice, lang: Lang) -> &'static str {
         Choice::InputColumn => Phrase::InputColumn,
         Choice::SamplingPeriod => Phrase::SamplingPeriod,
         Choice::InitialInput => Phrase::InitialInput,
+        Choice::InputFile => Phrase::InputFile,
     }
     .get(lang)
 }
