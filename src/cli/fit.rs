@@ -170,6 +170,11 @@ impl OpenArgs {
             time_col: self.time_col.clone().unwrap_or_default(),
             y_col: self.y_col.clone().unwrap_or_default(),
             u_col: self.u_col.clone().unwrap_or_default(),
+            u_path: self
+                .u_file
+                .as_ref()
+                .map(|p| p.display().to_string())
+                .unwrap_or_default(),
             sampling_period: self.ts.map(|t| t.to_string()).unwrap_or_default(),
             code: self.model.to_ascii_uppercase(),
             ..Default::default()
