@@ -1756,7 +1756,7 @@ fn alias_in(model: &Model, data: &FitData, ts: f64, span: Option<usize>) -> Opti
         .max(f64::MIN_POSITIVE);
     let n = data.times.len();
     let spans = match span {
-        Some(len) => alias_spans(data, model.input_shift(), len),
+        Some(len) => alias_spans(data, model.input_shift(), settled_within(model, ts, len)),
         None => vec![(0, n.saturating_sub(1))],
     };
     let between = spans
@@ -1769,6 +1769,21 @@ fn alias_in(model: &Model, data: &FitData, ts: f64, span: Option<usize>) -> Opti
         nyquist,
         between_samples: between,
     })
+}
+
+/// The samples after a change the swing is looked for in: at most `len`, and no further
+/// than the model's 2 % settling time (sampled every `ts`), after which each change's part
+/// of the response stays within 2 % of its effect, so that it swings between samples by at
+/// most 4 % of it, under the check's 10 %.
+fn settled_within(model: &Model, ts: f64, len: usize) -> usize {
+    let settled = model
+        .settling_time(0.02)
+        .filter(|t| t.is_finite() && *t > 0.0)
+        .map(|t| (t / ts).ceil() + 2.0);
+    match settled {
+        Some(samples) if samples < len as f64 => samples as usize,
+        _ => len,
+    }
 }
 
 /// The spans of sample indices (first, last) from the sample before each change reaches
@@ -1915,6 +1930,21 @@ mod tests {
             structure,
             v,
         )
+    }
+
+    #[test]
+    fn the_swing_is_looked_for_until_the_model_settles() {
+        // A lag of 2 s settles to 2 % in 2·ln 50 = 7.824 s: 783 samples of 0.01 s, and 2
+        // more; an integrator never settles, so the whole span is looked at.
+        let mut v = Values::default();
+        v.set(Param::Kp, 3.0);
+        v.set(Param::Tp1, 2.0);
+        let lag = Model::new(Structure::parse("P1").unwrap(), v);
+        let expected = (2.0 * 50f64.ln() / 0.01).ceil() as usize + 2;
+        assert_eq!(settled_within(&lag, 0.01, 4096), expected);
+        assert_eq!(settled_within(&lag, 0.01, 100), 100);
+        let integrator = Model::new(Structure::parse("P1I").unwrap(), v);
+        assert_eq!(settled_within(&integrator, 0.01, 4096), 4096);
     }
 
     #[test]
