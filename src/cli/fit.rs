@@ -312,14 +312,23 @@ fn parse_window(text: &str) -> Result<(f64, f64), CliError> {
 
 /// `Kp=1.2,Td=2` into parameter values, each parameter once.
 pub fn parse_guess(text: &str) -> Result<Vec<(Param, f64)>, CliError> {
+    parse_values(text, "--guess")
+}
+
+/// Parameter values like `Kp=1.2,Td=2` typed in `flag` (`--guess`, `prbs --params`).
+pub fn parse_values(text: &str, flag: &'static str) -> Result<Vec<(Param, f64)>, CliError> {
     let mut guesses: Vec<(Param, f64)> = Vec::new();
     for item in text.split(',').filter(|s| !s.trim().is_empty()) {
-        let bad = || CliError::BadGuessItem(item.to_string());
+        let bad = || CliError::BadGuessItem {
+            flag,
+            item: item.to_string(),
+        };
         let (name, value) = item.split_once('=').ok_or_else(bad)?;
         let p = Param::parse(name).ok_or_else(bad)?;
         let v = finite_f64(value).map_err(|_| bad())?;
         if let Some(&(_, first)) = guesses.iter().find(|g| g.0 == p) {
             return Err(CliError::GuessTwice {
+                flag,
                 param: p.name(),
                 first,
                 second: v,
@@ -328,7 +337,7 @@ pub fn parse_guess(text: &str) -> Result<Vec<(Param, f64)>, CliError> {
         guesses.push((p, v));
     }
     if guesses.is_empty() {
-        return Err(CliError::GuessEmpty);
+        return Err(CliError::GuessEmpty(flag));
     }
     Ok(guesses)
 }

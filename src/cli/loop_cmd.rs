@@ -239,6 +239,7 @@ pub fn analyse_loop(args: &LoopArgs) -> Result<LoopAnalysis, LoopError> {
     let options = StepInfoOptions::default();
     let response = StepResponse::new(&cl, 1.0).map_err(CliError::from)?;
     let info = analyse(&response, &options).info;
+    super::finite_metrics(&info)?;
     let closed = Analysis {
         tf: cl,
         response,

@@ -201,6 +201,9 @@ pub enum CliError {
     GainWithCoefficients,
     GainAndDcGain,
     Samples(usize),
+    /// A sample of y(t) asked for, or a step metric, lies beyond double precision's range
+    /// (it would print as NaN or inf).
+    ResponseBeyondRange,
     /// serde_json's own words.
     JsonSyntax(String),
     NotAnObject,
@@ -222,14 +225,20 @@ pub enum CliError {
     BadY0(String),
     /// `--window` is not two increasing times.
     BadWindow(String),
-    /// A `--guess` item is not like `Kp=1.2` with a known name and a finite value.
-    BadGuessItem(String),
+    /// A `--guess` (or `prbs --params`, the flag) item is not like `Kp=1.2` with a known
+    /// name and a finite value.
+    BadGuessItem {
+        flag: &'static str,
+        item: String,
+    },
     GuessTwice {
+        flag: &'static str,
         param: &'static str,
         first: f64,
         second: f64,
     },
-    GuessEmpty,
+    /// `--guess` (or `--params`, the flag) names no parameter.
+    GuessEmpty(&'static str),
     /// `--guess Y0=value` while `--y0 flag` holds Y0 at `held`.
     GuessY0Fixed {
         value: f64,
@@ -323,10 +332,13 @@ impl SystemSpec {
         let tf = self.transfer_function()?;
         let response = StepResponse::new(&tf, self.amplitude.unwrap_or(1.0))?;
         let StepAnalysis { info, horizon } = analyse(&response, options);
-        let samples = sample_count.map(|n| {
-            let (t, y) = response.sample_uniform(0.0, horizon, n);
-            Samples { t, y }
-        });
+        finite_metrics(&info)?;
+        let samples = sample_count
+            .map(|n| {
+                let (t, y) = response.sample_uniform(0.0, horizon, n);
+                Samples::checked(t, y)
+            })
+            .transpose()?;
         Ok(Analysis {
             tf,
             response,
@@ -334,6 +346,19 @@ impl SystemSpec {
             options: *options,
             samples,
         })
+    }
+}
+
+/// The step metrics, refused when one is not a finite number (a response whose terms
+/// overflow near 1.8e308 gave "Undershoot inf %", "Peak inf").
+pub(crate) fn finite_metrics(info: &StepInfo) -> Result<(), CliError> {
+    let finite = Metric::ALL
+        .iter()
+        .all(|m| m.value(info).is_none_or(f64::is_finite));
+    if finite {
+        Ok(())
+    } else {
+        Err(CliError::ResponseBeyondRange)
     }
 }
 
@@ -350,6 +375,18 @@ fn check_samples(n: usize) -> Result<usize, CliError> {
 pub struct Samples {
     pub t: Vec<f64>,
     pub y: Vec<f64>,
+}
+
+impl Samples {
+    /// The samples, refused when one is not a finite number (a response beyond double
+    /// precision's range, which would print as NaN, inf or null).
+    pub(crate) fn checked(t: Vec<f64>, y: Vec<f64>) -> Result<Self, CliError> {
+        if t.iter().chain(&y).all(|x| x.is_finite()) {
+            Ok(Self { t, y })
+        } else {
+            Err(CliError::ResponseBeyondRange)
+        }
+    }
 }
 
 /// The JSON report of one system: `--json` prints it, `--batch` prints one per line.
@@ -669,6 +706,7 @@ fn run_input_response(
         .filter(|h| h.is_finite() && *h > 0.0)
         .unwrap_or(10.0);
     let (t, y) = input.sample_uniform(0.0, horizon, n);
+    let samples = Samples::checked(t, y)?;
     let report = InputReport {
         response: args.response,
         expression: input.expression(OscillationForm::CosSin),
@@ -679,7 +717,7 @@ fn run_input_response(
         zeros: as_pairs(step.tf.zeros()),
         delay: step.tf.delay(),
         amplitude,
-        samples: Samples { t, y },
+        samples,
     };
     let mut out = io::stdout().lock();
     let written = if args.json {

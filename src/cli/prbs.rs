@@ -106,7 +106,7 @@ pub fn run_prbs(args: &PrbsArgs, _lang: Lang) -> Result<(), LsqCliError> {
             let structure = Structure::parse(code).map_err(|e| CliError::Experiment(e.into()))?;
             let mut values = Values::default();
             if let Some(text) = &args.params {
-                for (p, v) in super::fit::parse_guess(text)? {
+                for (p, v) in super::fit::parse_values(text, "--params")? {
                     values.set(p, v);
                 }
             }

@@ -430,12 +430,17 @@ impl Model {
                 gain *= tz;
             }
         }
-        if gain == 0.0 {
+        if kp == 0.0 {
             return Err(ModelError::BadValue {
                 name: "Kp",
                 value: kp,
                 requirement: Requirement::NotZero,
             });
+        }
+        if !gain.is_normal() {
+            // Kp over the time constants' product left the range of a double (Kp = 2 over
+            // time constants of 1e300 s, or Tp1 = 5e-324 s).
+            return Err(crate::lti::LtiError::GainOutOfRange.into());
         }
         let tf = TransferFunction::from_zpk(&zeros, &poles, gain)?;
         if s.delay {

@@ -107,7 +107,9 @@ impl Prbs {
         if clock == 0 {
             return Err(PrbsError::BadClock);
         }
-        if !(low.is_finite() && high.is_finite()) || low == high {
+        // A subnormal level carries too few digits: a model's response to it came out 0.
+        let usable = |x: f64| x.is_finite() && !x.is_subnormal();
+        if !(usable(low) && usable(high)) || low == high {
             return Err(PrbsError::BadLevels { low, high });
         }
         Ok(Self {

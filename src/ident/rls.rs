@@ -147,6 +147,13 @@ pub fn run(reg: &Regression, options: &RlsOptions) -> Result<RlsRun, LsqError> {
             *v = solving.phi[(r, c)];
         }
         errors.push(solving.error_out(rls.update(&phi, solving.y[r])));
+        if !rls.p.iter().chain(&rls.theta).all(|v| v.is_finite()) {
+            return Err(LsqError::CovarianceOverflow {
+                alpha: options.alpha,
+                lambda: options.lambda,
+                row: r + 1,
+            });
+        }
         trajectory.push(solving.theta_out(rls.theta())?);
     }
     let variances = (rows > p).then(|| rls.p.diagonal().iter().copied().collect());

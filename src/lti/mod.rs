@@ -56,6 +56,10 @@ pub enum LtiError {
     NoPoles,
     /// The gain (or the static gain asked for) is zero or not finite.
     BadGain(f64),
+    /// The gain k computed from normal numbers (num/den's leading coefficients, a model's
+    /// Kp over its time constants, a static gain asked for) falls outside double precision's
+    /// normal range.
+    GainOutOfRange,
     /// The transport delay (s) is negative or not finite.
     BadDelay(f64),
     /// The step amplitude is zero or not finite.

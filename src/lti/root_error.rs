@@ -91,12 +91,13 @@ pub fn backward_error(coeffs: &[f64], r: C64) -> f64 {
         return 0.0;
     }
     if r.norm() == 0.0 {
-        let last = coeffs[coeffs.len() - 1].abs();
-        let largest = coeffs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-        return if last == 0.0 {
+        // p(0) = c_n and Σ|cᵢ||0|ⁱ = |c_n|: 0 is a root only when c_n is 0 (judged against the
+        // largest coefficient instead, a root put at 0 for a tiny c_n passed: the loop around
+        // a dead time of 1e35 s called three poles of order 1e-35 integrators).
+        return if coeffs[coeffs.len() - 1] == 0.0 {
             0.0
         } else {
-            last / largest.max(last)
+            1.0
         };
     }
     let s = Scaled::at(coeffs, r);

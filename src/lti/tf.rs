@@ -58,7 +58,11 @@ impl TransferFunction {
                 den_degree: poles.len(),
             });
         }
-        if !gain.is_finite() || gain == 0.0 {
+        if gain.is_nan() || gain.is_infinite() {
+            // Typed gains are finite: this one was computed and overflowed.
+            return Err(LtiError::GainOutOfRange);
+        }
+        if gain == 0.0 {
             return Err(LtiError::BadGain(gain));
         }
         if gain.is_subnormal() {
@@ -92,9 +96,13 @@ impl TransferFunction {
         if den.len() - 1 > MAX_ORDER {
             return Err(LtiError::OrderTooHigh(den.len() - 1));
         }
+        let gain = num[0] / den[0];
+        if !gain.is_normal() {
+            return Err(LtiError::GainOutOfRange);
+        }
         let zeros = poly::roots(&num)?;
         let poles = poly::roots(&den)?;
-        Self::from_zpk(&zeros, &poles, num[0] / den[0])
+        Self::from_zpk(&zeros, &poles, gain)
     }
 
     /// The same system with a transport delay θ ≥ 0 seconds.
@@ -116,6 +124,9 @@ impl TransferFunction {
             return Err(LtiError::DcGainNotScalable(current));
         }
         self.gain *= dc_gain / current;
+        if !self.gain.is_normal() {
+            return Err(LtiError::GainOutOfRange);
+        }
         Ok(self)
     }
 
@@ -172,7 +183,18 @@ impl TransferFunction {
     /// with a zero at the origin. Roots at the origin cancel exactly first, so s/s gives 1.
     pub fn dc_gain(&self) -> f64 {
         let net = self.system_type();
-        let value = self.gain * product_neg_nonzero(&self.zeros) / product_neg_nonzero(&self.poles);
+        let (zeros, poles) = (
+            product_neg_nonzero(&self.zeros),
+            product_neg_nonzero(&self.poles),
+        );
+        // k·Πz first, unless it leaves the normal range (k = 2.2e-308 times a zero of 2e-10
+        // lost 8 digits as a subnormal before the division brought it back).
+        let first = self.gain * zeros;
+        let value = if first.is_normal() {
+            first / poles
+        } else {
+            self.gain * (zeros / poles)
+        };
         match net {
             0 => value,
             n if n > 0 => value.signum() * f64::INFINITY,
@@ -250,7 +272,18 @@ impl TransferFunction {
         if self.delay != 0.0 {
             return Err(LtiError::DelayInLoop);
         }
-        let num: Vec<f64> = self.num().iter().map(|c| c * kp).collect();
+        // Kp·k first: k·Π(s − zᵢ) alone may underflow where Kp·k·Π(s − zᵢ) does not (k =
+        // 1e-295 around a Padé numerator whose constant term is 1.2e-37 lost it, and the
+        // closed loop gained a zero and a pole at 0).
+        let k = self.gain * kp;
+        let num: Vec<f64> = if k.is_finite() && k != 0.0 {
+            poly::poly_from_roots(&self.zeros)
+                .into_iter()
+                .map(|c| c * k)
+                .collect()
+        } else {
+            self.num().iter().map(|c| c * kp).collect()
+        };
         let mut den = self.den();
         let offset = den.len() - num.len();
         for (i, c) in num.iter().enumerate() {

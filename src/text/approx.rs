@@ -27,6 +27,7 @@ crate::phrases! {
         Approximate => ("approximation", "aproximação"),
         MaxError => ("max |Δy| / step's effect", "máx |Δy| / efeito do degrau"),
         Ise => ("ISE: ∫ (Δy)² dt", "ISE: ∫ (Δy)² dt (erro quadrático)"),
+        BeyondDouble => ("beyond double precision", "além da precisão dupla"),
         Metric => ("Metric", "Métrica"),
         Difference => ("Difference", "Diferença"),
         Within => ("Within 5 % (relative)", "Dentro de 5 % (relativo)"),
@@ -151,6 +152,23 @@ impl Localize for ApproxError {
                 Lang::En => format!("a Padé order ({m}, {n}) needs 1 ≤ n ≤ 30 and m ≤ n"),
                 Lang::Pt => format!("a ordem de Padé ({m}, {n}) exige 1 ≤ n ≤ 30 e m ≤ n"),
             },
+            ApproxError::PadeRange { delay, m, n } => {
+                let theta = num(*delay);
+                match lang {
+                    Lang::En => format!(
+                        "Padé ({m}, {n}) of a dead time of {theta} s has coefficients (multiples \
+                         of θ^k up to θ^{n}) outside double precision's range (2.2e-308 to \
+                         1.8e308): express the dead time in other units of time, or take a \
+                         lower order"
+                    ),
+                    Lang::Pt => format!(
+                        "o Padé ({m}, {n}) de um tempo morto de {theta} s tem coeficientes \
+                         (múltiplos de θ^k até θ^{n}) fora da faixa da precisão dupla (2,2e-308 \
+                         a 1,8e308): expresse o tempo morto em outras unidades de tempo, ou use \
+                         uma ordem menor"
+                    ),
+                }
+            }
             ApproxError::OriginRoots { m, n } => match lang {
                 Lang::En => {
                     format!("order ({m}, {n}) leaves no room for the system's roots at the origin")
@@ -167,6 +185,16 @@ impl Localize for ApproxError {
                     "as equações de momentos de G_{{{m},{n}}} não têm solução única: tente outra ordem"
                 ),
             },
+            ApproxError::Incomparable => lang
+                .pick(
+                    "the two step responses cannot be compared in double precision: one is not a \
+                     finite number somewhere in the window (a pole far in the right half plane \
+                     grows beyond 1.8e308)",
+                    "as duas respostas ao degrau não podem ser comparadas em precisão dupla: uma \
+                     não é um número finito em algum ponto da janela (um polo longe no semiplano \
+                     direito cresce além de 1,8e308)",
+                )
+                .into(),
             ApproxError::NoDelay => lang
                 .pick(
                     "the system has no dead time to approximate",
@@ -351,8 +379,21 @@ pub fn measures(c: &Comparison, lang: Lang) -> [String; 2] {
             lang.num(100.0 * c.max_error, 3),
             lang.num(c.max_error_time, 3)
         ),
-        format!("{} = {}", ApproxPhrase::Ise.get(lang), lang.num(c.ise, 3)),
+        format!("{} = {}", ApproxPhrase::Ise.get(lang), ise(c, lang)),
     ]
+}
+
+/// The ISE as text: the number, or its order of magnitude when it lies beyond double
+/// precision.
+pub fn ise(c: &Comparison, lang: Lang) -> String {
+    match c.ise_value() {
+        Some(ise) => lang.num(ise, 3),
+        None => format!(
+            "{} ({})",
+            crate::text::lsq::power_of_ten(c.ise_log10(), 3, lang),
+            ApproxPhrase::BeyondDouble.get(lang)
+        ),
+    }
 }
 
 /// The metrics within 5 %, named and joined (or "none").
@@ -392,7 +433,7 @@ pub fn comparison_table(rows: &[Row], lang: Lang) -> String {
                 formula(&a.model, lang),
                 a.model.order().to_string(),
                 format!("{} %", lang.num(100.0 * a.comparison.max_error, 3)),
-                lang.num(a.comparison.ise, 3),
+                ise(&a.comparison, lang),
                 kept_metrics(&a.comparison, lang),
             ],
             Err(e) => [
@@ -419,9 +460,15 @@ pub fn messages() -> Vec<Message> {
         ApproxError::NotLower { asked: 3, order: 3 },
         ApproxError::NothingToApproximate,
         ApproxError::PadeOrder { m: 2, n: 1 },
+        ApproxError::PadeRange {
+            delay: 1e-300,
+            m: 2,
+            n: 2,
+        },
         ApproxError::OriginRoots { m: 0, n: 1 },
         ApproxError::Singular { m: 1, n: 1 },
         ApproxError::NoDelay,
+        ApproxError::Incomparable,
         ApproxError::BadDelay(-1.0),
     ];
     all.extend(

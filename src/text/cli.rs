@@ -219,6 +219,15 @@ impl Localize for CliError {
                     crate::cli::MAX_SAMPLES
                 ),
             ),
+            CliError::ResponseBeyondRange => lang
+                .pick(
+                    "the response reaches beyond double precision's range (about 1.8e308) in its \
+                     samples or metrics: rescale the gain, the amplitude or the units of time",
+                    "a resposta passa da faixa da precisão dupla (cerca de 1,8e308) nas suas \
+                     amostras ou métricas: mude a escala do ganho, da amplitude ou das unidades \
+                     de tempo",
+                )
+                .into(),
             CliError::JsonSyntax(why) => lang.pick(
                 format!("the line is not valid JSON: {why}"),
                 format!("a linha não é JSON válido: {why}"),
@@ -261,35 +270,32 @@ impl Localize for CliError {
                 format!("--window must be two times like 3.5,29.5, not \"{text}\""),
                 format!("--window deve ser dois tempos como 3.5,29.5, não \"{text}\""),
             ),
-            CliError::BadGuessItem(item) => lang.pick(
+            CliError::BadGuessItem { flag, item } => lang.pick(
                 format!(
-                    "--guess item \"{item}\" must look like Kp=1.2 (names: Kp, Tp1, Tp2, Tp3, \
+                    "{flag} item \"{item}\" must look like Kp=1.2 (names: Kp, Tp1, Tp2, Tp3, \
                      Tw, Zeta, Td, Tz, Y0, Drift; finite values)"
                 ),
                 format!(
-                    "o item \"{item}\" de --guess deve ser como Kp=1.2 (nomes: Kp, Tp1, Tp2, \
+                    "o item \"{item}\" de {flag} deve ser como Kp=1.2 (nomes: Kp, Tp1, Tp2, \
                      Tp3, Tw, Zeta, Td, Tz, Y0, Drift; valores finitos)"
                 ),
             ),
             CliError::GuessTwice {
+                flag,
                 param,
                 first,
                 second,
             } => {
                 let (a, b) = (n(*first), n(*second));
                 lang.pick(
-                    format!("--guess gives {param} twice ({a} and {b}): give each parameter once"),
-                    format!(
-                        "--guess dá {param} duas vezes ({a} e {b}): dê cada parâmetro uma vez"
-                    ),
+                    format!("{flag} gives {param} twice ({a} and {b}): give each parameter once"),
+                    format!("{flag} dá {param} duas vezes ({a} e {b}): dê cada parâmetro uma vez"),
                 )
             }
-            CliError::GuessEmpty => lang
-                .pick(
-                    "--guess is empty: give guesses like Kp=1.2,Td=2, or leave the flag out",
-                    "--guess está vazio: dê estimativas como Kp=1.2,Td=2, ou não use a opção",
-                )
-                .into(),
+            CliError::GuessEmpty(flag) => lang.pick(
+                format!("{flag} is empty: give values like Kp=1.2,Td=2, or leave the flag out"),
+                format!("{flag} está vazio: dê valores como Kp=1.2,Td=2, ou não use a opção"),
+            ),
             CliError::GuessY0Fixed { value, flag, held } => {
                 let (v, h) = (typed(*value), n(*held));
                 lang.pick(
@@ -373,6 +379,7 @@ fn cli_errors() -> Vec<CliError> {
         CliError::GainWithCoefficients,
         CliError::GainAndDcGain,
         CliError::Samples(1),
+        CliError::ResponseBeyondRange,
         CliError::JsonSyntax("expected value at line 1 column 1".into()),
         CliError::NotAnObject,
         CliError::JsonFields("unknown field `pole`".into()),
@@ -387,13 +394,17 @@ fn cli_errors() -> Vec<CliError> {
         CliError::Diagnose(FitError::NonFiniteData),
         CliError::BadY0("x".into()),
         CliError::BadWindow("5,1".into()),
-        CliError::BadGuessItem("Foo=1".into()),
+        CliError::BadGuessItem {
+            flag: "--guess",
+            item: "Foo=1".into(),
+        },
         CliError::GuessTwice {
+            flag: "--params",
             param: "Kp",
             first: 1.0,
             second: 2.5,
         },
-        CliError::GuessEmpty,
+        CliError::GuessEmpty("--guess"),
         CliError::GuessY0Fixed {
             value: 40.0,
             flag: "50".into(),
@@ -428,6 +439,7 @@ fn cli_error_id(e: &CliError) -> &'static str {
         CliError::GainWithCoefficients => "GainWithCoefficients",
         CliError::GainAndDcGain => "GainAndDcGain",
         CliError::Samples(_) => "Samples",
+        CliError::ResponseBeyondRange => "ResponseBeyondRange",
         CliError::JsonSyntax(_) => "JsonSyntax",
         CliError::NotAnObject => "NotAnObject",
         CliError::JsonFields(_) => "JsonFields",
@@ -439,9 +451,9 @@ fn cli_error_id(e: &CliError) -> &'static str {
         CliError::Diagnose(_) => "Diagnose",
         CliError::BadY0(_) => "BadY0",
         CliError::BadWindow(_) => "BadWindow",
-        CliError::BadGuessItem(_) => "BadGuessItem",
+        CliError::BadGuessItem { .. } => "BadGuessItem",
         CliError::GuessTwice { .. } => "GuessTwice",
-        CliError::GuessEmpty => "GuessEmpty",
+        CliError::GuessEmpty(_) => "GuessEmpty",
         CliError::GuessY0Fixed { .. } => "GuessY0Fixed",
         CliError::GuessY0Auto { .. } => "GuessY0Auto",
         CliError::GuessDrift(_) => "GuessDrift",
@@ -449,7 +461,7 @@ fn cli_error_id(e: &CliError) -> &'static str {
     }
 }
 #[cfg(test)]
-const CLI_ERROR_VARIANTS: usize = 31;
+const CLI_ERROR_VARIANTS: usize = 32;
 
 /// Every message of the command line, for the test of both languages. `Options`, `Parse`
 /// and `Lti` carry `crate::lti`'s words (its own catalogue lists them), so their examples

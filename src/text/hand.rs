@@ -157,9 +157,17 @@ impl Localize for HandError {
                 "no stretch of the curve rises towards the final level: no tangent to draw".into(),
                 "nenhum trecho da curva sobe em direção ao nível final: não há tangente a traçar".into(),
             ),
+            HandError::NoTimeConstant { tau } if !tau.is_finite() => lang.pick(
+                "the construction gives a τ beyond double precision's range (about 1.8e308 s), not a time constant: rescale the units of time".into(),
+                "a construção dá um τ além da faixa da precisão dupla (cerca de 1,8e308 s), que não é uma constante de tempo: mude a escala das unidades de tempo".into(),
+            ),
             HandError::NoTimeConstant { tau } => lang.pick(
                 format!("the construction gives τ = {} s, not a time constant", lang.num(*tau, 4)),
                 format!("a construção dá τ = {} s, que não é uma constante de tempo", lang.num(*tau, 4)),
+            ),
+            HandError::ThreePointShape { x } if !x.is_finite() => lang.pick(
+                "the three points (15 %, 45 %, 75 %) are read at one instant: the curve jumps there, and has no shape for the three-point method to read".into(),
+                "os três pontos (15 %, 45 %, 75 %) são lidos num mesmo instante: a curva salta ali, e não tem forma para o método dos três pontos ler".into(),
             ),
             HandError::ThreePointShape { x } => lang.pick(
                 format!(
@@ -423,12 +431,14 @@ pub fn messages() -> Vec<Message> {
         HandError::LevelNotReached { percent: 75.0 },
         HandError::NoSteepestRise,
         HandError::NoTimeConstant { tau: -1.0 },
+        HandError::NoTimeConstant { tau: f64::INFINITY },
         HandError::TangentOutside {
             t: 1e9,
             start: 2.0,
             end: 30.5,
         },
         HandError::ThreePointShape { x: 0.3 },
+        HandError::ThreePointShape { x: f64::NAN },
         HandError::BadOverride(f64::NAN),
         HandError::Model(ModelError::Overflow),
     ];

@@ -856,6 +856,22 @@ impl Localize for ModelError {
                 name,
                 value,
                 requirement,
+            } if !value.is_finite() => {
+                // Computed, not typed (a typed value is finite): Kp = Δy/Δu with Δu = 5e-324.
+                let why = requirement.text(lang);
+                lang.pick(
+                    format!(
+                        "{name} falls outside double precision's range (about 1.8e308) and is not allowed: {why}; rescale the units of u, y or time"
+                    ),
+                    format!(
+                        "{name} sai da faixa da precisão dupla (cerca de 1,8e308) e não é permitido: {why}; mude a escala das unidades de u, y ou do tempo"
+                    ),
+                )
+            }
+            ModelError::BadValue {
+                name,
+                value,
+                requirement,
             } => {
                 let (v, why) = (full(lang, *value), requirement.text(lang));
                 lang.pick(
@@ -2013,6 +2029,11 @@ fn model_errors() -> Vec<ModelError> {
             name: "Tp1",
             value: -1.0,
             requirement: Requirement::Positive,
+        },
+        ModelError::BadValue {
+            name: "Kp",
+            value: f64::INFINITY,
+            requirement: Requirement::Finite,
         },
         ModelError::Overflow,
         ModelError::NotInModel("Tz"),

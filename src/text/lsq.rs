@@ -81,7 +81,7 @@ pub fn percent(x: f64, lang: Lang) -> String {
 
 /// 10^`log10` written as `m·e±E` with `digits` significant digits, for a number a double
 /// cannot hold.
-fn power_of_ten(log10: f64, digits: i32, lang: Lang) -> String {
+pub(crate) fn power_of_ten(log10: f64, digits: i32, lang: Lang) -> String {
     let mut exponent = log10.floor();
     let mut m = crate::lti::number::sig(10f64.powf(log10 - exponent), digits);
     if m == "10" {
@@ -206,6 +206,17 @@ impl Localize for LsqError {
                     format!("a covariância inicial α = {a} deve ser um número positivo"),
                 )
             }
+            LsqError::CovarianceOverflow { alpha, lambda, row } => {
+                let (a, l) = (lang.num(*alpha, 6), lang.num(*lambda, 6));
+                lang.pick(
+                    format!(
+                        "the covariance P left double precision's range at row {row} of Φ (P₀ = α·I with α = {a}, divided by λ = {l} at every row): take λ closer to 1 or a smaller α"
+                    ),
+                    format!(
+                        "a covariância P saiu da faixa da precisão dupla na linha {row} de Φ (P₀ = α·I com α = {a}, dividida por λ = {l} a cada linha): use λ mais perto de 1 ou um α menor"
+                    ),
+                )
+            }
             LsqError::BadInitialTheta { expected, got } => lang.pick(
                 format!("the initial θ has {got} values; the model has {expected} parameters"),
                 format!("o θ inicial tem {got} valores; o modelo tem {expected} parâmetros"),
@@ -283,7 +294,12 @@ impl Localize for DiscreteError {
                 ),
             ),
             DiscreteError::DelayTooLong { samples } => {
-                let samples = lang.num(*samples, 6);
+                // θ/h beyond 1.8e308 (θ = 1.8e308 s at h = 0.1 s) is said as that bound.
+                let samples = if samples.is_finite() {
+                    lang.num(*samples, 6)
+                } else {
+                    lang.pick("more than 1.8e308", "mais de 1,8e308").to_string()
+                };
                 let most = lang.num(crate::lti::discrete::MAX_DELAY_SAMPLES as f64, 6);
                 lang.pick(
                     format!(
@@ -356,8 +372,12 @@ impl Localize for PrbsError {
             PrbsError::BadLevels { low, high } => {
                 let (lo, hi) = (lang.num(*low, 6), lang.num(*high, 6));
                 lang.pick(
-                    format!("the levels {lo} and {hi} must be two different finite numbers"),
-                    format!("os níveis {lo} e {hi} devem ser dois números finitos diferentes"),
+                    format!(
+                        "the levels {lo} and {hi} must be two different finite numbers, each 0 or at least 2.2e-308 in size (the smallest normal double)"
+                    ),
+                    format!(
+                        "os níveis {lo} e {hi} devem ser dois números finitos diferentes, cada um 0 ou de tamanho ao menos 2,2e-308 (o menor double normal)"
+                    ),
                 )
             }
             PrbsError::BadLength(n) => lang.pick(
@@ -449,6 +469,11 @@ pub fn messages() -> Vec<Message> {
         },
         LsqError::BadForgetting(1.5),
         LsqError::BadCovariance(-1.0),
+        LsqError::CovarianceOverflow {
+            alpha: 1e6,
+            lambda: 1e-300,
+            row: 2,
+        },
         LsqError::BadInitialTheta {
             expected: 3,
             got: 2,

@@ -165,6 +165,16 @@ impl Localize for LtiError {
                     format!("o ganho é {k}: deve ser um número finito diferente de zero")
                 }
             }
+            GainOutOfRange => lang
+                .pick(
+                    "the gain k of k·Π(s − zᵢ)/Π(s − pⱼ) falls outside double precision's range \
+                     (2.2e-308 to 1.8e308): rescale the coefficients, the gain or the units of \
+                     time",
+                    "o ganho k de k·Π(s − zᵢ)/Π(s − pⱼ) sai da faixa da precisão dupla \
+                     (2,2e-308 a 1,8e308): mude a escala dos coeficientes, do ganho ou das \
+                     unidades de tempo",
+                )
+                .into(),
             BadDelay(theta) => {
                 let theta = num(lang, *theta);
                 if en {
@@ -262,6 +272,21 @@ impl Localize for LtiError {
                     )
                 }
             }
+            Underflow { what, value } if !value.is_finite() => {
+                // A product of normal numbers that overflowed (A·k with k = 1.8e308).
+                let what = what.text(lang);
+                if en {
+                    format!(
+                        "{what} is beyond double precision's range (above 1.8e308), so the \
+                         response cannot be computed; rescale the gain or the units"
+                    )
+                } else {
+                    format!(
+                        "{what} passa da faixa da precisão dupla (acima de 1,8e308), então a \
+                         resposta não pode ser calculada; mude a escala do ganho ou das unidades"
+                    )
+                }
+            }
             Underflow { what, value } => {
                 let (what, value) = (what.text(lang), sci(lang, *value));
                 if en {
@@ -280,9 +305,17 @@ impl Localize for LtiError {
             }
             RootsDidNotConverge { degree } => {
                 if en {
-                    format!("finding the roots of a degree-{degree} polynomial did not converge")
+                    format!(
+                        "the roots of a degree-{degree} polynomial could not be found to double \
+                         precision (the search did not converge, or what it found are not roots \
+                         to rounding): use a lower order"
+                    )
                 } else {
-                    format!("o cálculo das raízes de um polinômio de grau {degree} não convergiu")
+                    format!(
+                        "as raízes de um polinômio de grau {degree} não puderam ser achadas em \
+                         precisão dupla (a busca não convergiu, ou o que achou não são raízes a \
+                         menos de arredondamento): use uma ordem menor"
+                    )
                 }
             }
             OrderTooHigh(order) => {
@@ -428,6 +461,7 @@ pub fn messages() -> Vec<Message> {
         },
         LtiError::NoPoles => LtiError::NoPoles,
         LtiError::BadGain(_) => LtiError::BadGain(0.0),
+        LtiError::GainOutOfRange => LtiError::GainOutOfRange,
         LtiError::BadDelay(_) => LtiError::BadDelay(-0.5),
         LtiError::BadAmplitude(_) => LtiError::BadAmplitude(f64::NAN),
         LtiError::DcGainNotScalable(_) => LtiError::DcGainNotScalable(0.0),

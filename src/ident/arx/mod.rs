@@ -120,6 +120,9 @@ pub enum LsqError {
     BadForgetting(f64),
     /// The initial covariance α is not a positive finite number.
     BadCovariance(f64),
+    /// RLS's covariance P (P₀ = α·I, divided by λ at every row) left double precision's
+    /// range at row `row` (from 1) of Φ.
+    CovarianceOverflow { alpha: f64, lambda: f64, row: usize },
     /// The initial θ has the wrong length.
     BadInitialTheta { expected: usize, got: usize },
     /// The validation split leaves too few samples on one side.

@@ -126,12 +126,13 @@ impl Cost {
 
 /// `x·num/den`, in whichever order keeps it finite and nonzero when it can be.
 fn rescaled(x: f64, num: f64, den: f64) -> f64 {
-    let first = x * num / den;
-    if first.is_finite() && (first != 0.0 || x == 0.0) {
-        first
-    } else {
-        x / den * num
-    }
+    // The first order that neither overflows nor underflows: num/den last, for subnormal
+    // units (a record near 5e-324, where x·num underflows and x/den overflows).
+    let tries = [x * num / den, x / den * num, x * (num / den)];
+    tries
+        .into_iter()
+        .find(|v| v.is_finite() && (*v != 0.0 || x == 0.0))
+        .unwrap_or(tries[1])
 }
 
 /// Φ and Y in the solving units (see the module docs).

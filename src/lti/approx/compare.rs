@@ -6,7 +6,8 @@
 //! the larger of the two automatic windows ([`analyse`]). The window is cut at t = 0 and at
 //! each dead time (where a response may start or jump), each piece into small intervals;
 //! the ISE is their 3-point Gauss–Legendre sum, the largest gap the best sample refined by
-//! a golden-section search.
+//! a golden-section search. The ISE is summed in units of the step's effect squared, so that
+//! a response near 1e±160 (whose ISE a double cannot hold) still has its order of magnitude.
 //!
 //! A metric is within 5 % when its difference is at most 5 % of the original's value: the
 //! overshoot and undershoot too (2.12 % against 4.32 % is a change of 104 %, not "within"),
@@ -52,8 +53,12 @@ pub struct Comparison {
     pub max_error: f64,
     /// When that largest gap happens (s).
     pub max_error_time: f64,
-    /// ∫₀ᵀ (y − ŷ)² dt, in the output's units squared times seconds.
+    /// ∫₀ᵀ (y − ŷ)² dt, in the output's units squared times seconds: 0 or ∞ where a double
+    /// cannot hold it (responses near 1e±160), see [`Comparison::ise_value`].
     pub ise: f64,
+    /// ∫₀ᵀ ((y − ŷ)/effect)² dt (s): the ISE in units of the step's effect squared, which a
+    /// double holds at any scale of the output.
+    pub ise_relative: f64,
     /// The window's end T (s).
     pub horizon: f64,
     /// The step's effect the gaps are measured against: |A·G(0)| for a response that
@@ -72,6 +77,17 @@ impl Comparison {
             .map(|d| d.metric)
             .collect()
     }
+
+    /// The ISE when a double holds it; `None` beyond double precision (then
+    /// [`Comparison::ise_log10`] gives its order of magnitude).
+    pub fn ise_value(&self) -> Option<f64> {
+        (self.ise_relative == 0.0 || self.ise.is_normal()).then_some(self.ise)
+    }
+
+    /// log₁₀ of the ISE, at any scale (−∞ for an exact 0).
+    pub fn ise_log10(&self) -> f64 {
+        self.ise_relative.log10() + 2.0 * self.effect.log10()
+    }
 }
 
 /// Compares the exact step response `approx` with `original` (same step).
@@ -85,17 +101,19 @@ pub fn compare(
     let horizon = a.horizon.max(b.horizon);
     let gap = |t: f64| original.value(t) - approx.value(t);
     let pieces = pieces(horizon, &[original.delay(), approx.delay()]);
-    let mut ise = 0.0;
+    let effect = step_effect(original, horizon);
+    let mut ise_relative = 0.0;
     let mut best = (0.0f64, 0.0f64);
     let mut best_piece = (0.0, 0.0, 0.0);
     for &(start, end, count) in &pieces {
         let h = (end - start) / count as f64;
         for i in 0..count {
             let (lo, hi) = (start + i as f64 * h, start + (i + 1) as f64 * h);
-            ise += gauss3(&|t| gap(t).powi(2), lo, hi);
+            ise_relative += gauss3(&|t| (gap(t) / effect).powi(2), lo, hi);
             for t in [lo, hi] {
                 let e = gap(t).abs();
-                if e > best.1 {
+                // A gap that is not a number is kept too: the comparison then has none.
+                if e.is_nan() || e > best.1 {
                     best = (t, e);
                     best_piece = (start, end, h);
                 }
@@ -108,14 +126,14 @@ pub fn compare(
     if refined.1 > best.1 {
         best = refined;
     }
-    let effect = step_effect(original, horizon);
     Comparison {
         metrics: differences(&a.info, &b.info),
         original: a.info,
         approx: b.info,
         max_error: best.1 / effect,
         max_error_time: best.0,
-        ise,
+        ise: ise_relative * effect * effect,
+        ise_relative,
         horizon,
         effect,
     }

@@ -43,12 +43,18 @@ pub enum ApproxError {
     NothingToApproximate,
     /// A Padé order (m, n) without 1 ≤ n, m ≤ n.
     PadeOrder { m: usize, n: usize },
+    /// A coefficient of Padé (m, n) of a dead time of `delay` s (a multiple of θ^k) falls
+    /// outside double precision's normal range.
+    PadeRange { delay: f64, m: usize, n: usize },
     /// More roots at the origin than the order (m, n) leaves room for.
     OriginRoots { m: usize, n: usize },
     /// The moment equations of G_{m,n} have no unique solution.
     Singular { m: usize, n: usize },
     /// A dead-time approximant asked of a system without dead time.
     NoDelay,
+    /// The two step responses are not finite numbers somewhere in the window (a model with
+    /// a pole far in the right half plane grows beyond double precision): no error to give.
+    Incomparable,
     /// The dead time θ (s) is not a positive finite number.
     BadDelay(f64),
 }
@@ -134,6 +140,9 @@ pub fn approximate(
     let model = approximation.apply(g)?;
     let response = StepResponse::new(&model, original.amplitude())?;
     let comparison = compare(original, &response, options);
+    if !(comparison.max_error.is_finite() && comparison.ise_relative.is_finite()) {
+        return Err(ApproxError::Incomparable);
+    }
     Ok(Approximated {
         model,
         response,

@@ -60,7 +60,9 @@ fn falling(m: usize, n: usize, k: usize) -> f64 {
 }
 
 /// The notes' Padé (m, n) polynomials of e^{−θs}, descending powers of s, with constant term
-/// (m + n)!/m! in both (e.g. (1, 2): −2θs + 6 over θ²s² + 4θs + 6).
+/// (m + n)!/m! in both (e.g. (1, 2): −2θs + 6 over θ²s² + 4θs + 6). Refused when a
+/// coefficient falls outside double precision's normal range (θ = 1e-300 with n ≥ 2: the
+/// θ²s² term would underflow to 0 and the degree drop).
 pub fn pade_coefficients(
     delay: f64,
     m: usize,
@@ -70,14 +72,21 @@ pub fn pade_coefficients(
     if n == 0 || m > n || n > MAX_ORDER {
         return Err(ApproxError::PadeOrder { m, n });
     }
-    let num = (0..=m)
-        .rev()
-        .map(|k| binomial(m, k) * falling(m, n, k) * (-delay).powi(k as i32))
-        .collect();
-    let den = (0..=n)
-        .rev()
-        .map(|k| binomial(n, k) * falling(m, n, k) * delay.powi(k as i32))
-        .collect();
+    // factor·θ^k as the notes write it; where θ^k alone leaves the normal range, the factor
+    // times θ one power at a time, which stays in range whenever the coefficient does.
+    let term = |k: usize, degree: usize, theta: f64| {
+        let (factor, power) = (binomial(degree, k) * falling(m, n, k), theta.powi(k as i32));
+        if power.is_normal() {
+            factor * power
+        } else {
+            (0..k).fold(factor, |c, _| c * theta)
+        }
+    };
+    let num: Vec<f64> = (0..=m).rev().map(|k| term(k, m, -delay)).collect();
+    let den: Vec<f64> = (0..=n).rev().map(|k| term(k, n, delay)).collect();
+    if num.iter().chain(&den).any(|c| !c.is_normal()) {
+        return Err(ApproxError::PadeRange { delay, m, n });
+    }
     Ok((num, den))
 }
 
@@ -152,10 +161,12 @@ pub fn replace_delay(
     let product = TransferFunction::from_zpk(&zeros, &poles, g.gain() * f.gain)?;
     let k = low_frequency_gain(g);
     let now = low_frequency_gain(&product);
+    // k/now first: it is near 1, where gain·k may overflow (a gain of 1e153 over a den of
+    // 1e-2 gave k ≈ 1e155 and an infinite product).
     Ok(TransferFunction::from_zpk(
         product.zeros(),
         product.poles(),
-        product.gain() * k / now,
+        product.gain() * (k / now),
     )?)
 }
 

@@ -149,7 +149,22 @@ use crate::lti::tf::product_neg_nonzero as nonzero_product;
 /// The low-frequency gain lim_{s→0} s^k·G(s)/s^j (k poles and j zeros at the origin): the
 /// static gain G(0) of a system without roots at the origin.
 pub fn low_frequency_gain(g: &TransferFunction) -> f64 {
-    g.gain() * nonzero_product(g.zeros()) / nonzero_product(g.poles())
+    times_over(
+        g.gain(),
+        nonzero_product(g.zeros()),
+        nonzero_product(g.poles()),
+    )
+}
+
+/// a·b/c, with a·b first unless it leaves the normal range (a gain of 2.2e-308 times a
+/// product of 2e-10 lost 8 digits as a subnormal before the division brought it back).
+fn times_over(a: f64, b: f64, c: f64) -> f64 {
+    let first = a * b;
+    if first.is_normal() {
+        first / c
+    } else {
+        a * (b / c)
+    }
 }
 
 /// The model with these zeros, poles and dead time whose low-frequency gain is `k_low`.
@@ -159,7 +174,7 @@ fn assemble(
     k_low: f64,
     delay: f64,
 ) -> Result<TransferFunction, ApproxError> {
-    let gain = k_low * nonzero_product(poles) / nonzero_product(zeros);
+    let gain = times_over(k_low, nonzero_product(poles), nonzero_product(zeros));
     Ok(TransferFunction::from_zpk(zeros, poles, gain)?.with_delay(delay)?)
 }
 
