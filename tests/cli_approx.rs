@@ -9,6 +9,17 @@ use serde_json::Value;
 /// K(−0.1s + 1)/((5s + 1)(3s + 1)(0.5s + 1)), K = 2, as coefficients.
 const THIRD: [&str; 4] = ["--num", "-0.2,2", "--den", "7.5,19,8.5,1"];
 
+/// The notes' fifth-order system reduced to its dominant pair.
+const FIFTH_DOMINANT: [&str; 7] = [
+    "approx",
+    "--num",
+    "1",
+    "--den",
+    "2,60,704,4144,12840,18000",
+    "--method",
+    "dominant",
+];
+
 fn json(args: &[&str]) -> Value {
     let out = degrau(args);
     assert!(out.status.success(), "{}", stderr(&out));
@@ -83,16 +94,9 @@ fn pade_moments_give_the_notes_g11() {
 
 #[test]
 fn the_fifth_order_gives_its_dominant_pair() {
-    let j = json(&[
-        "approx",
-        "--num",
-        "1",
-        "--den",
-        "2,60,704,4144,12840,18000",
-        "--method",
-        "dominant",
-        "--json",
-    ]);
+    let mut args = FIFTH_DOMINANT.to_vec();
+    args.push("--json");
+    let j = json(&args);
     let den: Vec<f64> = j["den"].as_array().unwrap().iter().map(f).collect();
     assert!(
         (den[1] - 6.0).abs() < 1e-12 && (den[2] - 18.0).abs() < 1e-12,
@@ -210,16 +214,7 @@ fn the_table_compares_every_method_in_markdown() {
 /// what was judged.
 #[test]
 fn within_is_judged_on_the_relative_change() {
-    let args = [
-        "approx",
-        "--num",
-        "1",
-        "--den",
-        "2,60,704,4144,12840,18000",
-        "--method",
-        "dominant",
-    ];
-    let mut with_json = args.to_vec();
+    let mut with_json = FIFTH_DOMINANT.to_vec();
     with_json.push("--json");
     let j = json(&with_json);
     let overshoot = &j["metrics_error"]["overshoot"];
@@ -235,6 +230,6 @@ fn within_is_judged_on_the_relative_change() {
             assert_eq!(m["within"], rel.abs() <= 0.05 || negligible, "{name}: {m}");
         }
     }
-    let text = stdout(&degrau(&args));
+    let text = stdout(&degrau(&FIFTH_DOMINANT));
     assert!(text.contains("Within 5 % (relative)"), "{text}");
 }

@@ -221,6 +221,24 @@ fn also_text(lang: Lang, args: &[String], text: bool) -> Outcome {
     Ok(())
 }
 
+/// A case of one command: its arguments (with `--json`) and the check of its answer
+/// against the defining equation.
+trait Case {
+    fn args(&self) -> Vec<String>;
+    fn check(&self, run: &Run) -> Outcome;
+}
+
+/// Runs `case` in `lang`, checks an answer it gives, and (when `text`) runs it again for
+/// the text output, which the universal checks read.
+fn fuzz(case: &impl Case, lang: Lang, text: bool) -> Outcome {
+    let args = case.args();
+    let run = degrau(lang, &args)?;
+    if run.ok() {
+        case.check(&run)?;
+    }
+    also_text(lang, &args, text)
+}
+
 // ---------------------------------------------------------------------------------------
 // Reading JSON results: numbers where numbers are results.
 // ---------------------------------------------------------------------------------------
@@ -583,22 +601,6 @@ fn loop_case() -> impl Strategy<Value = LoopCase> {
 }
 
 impl LoopCase {
-    fn args(&self) -> Vec<String> {
-        let mut out = vec![
-            "loop".to_string(),
-            "--json".into(),
-            format!("--kp={}", arg(self.kp)),
-        ];
-        out.extend(self.plant.args(self.typed));
-        if let Some(d) = self.delay {
-            out.push(format!("--delay={}", arg(d)));
-        }
-        if let Some((m, n)) = self.pade {
-            out.push(format!("--pade={m},{n}"));
-        }
-        out
-    }
-
     /// den·D + Kp·num·N, with the approximant the report names, over den's largest
     /// coefficient (the same roots): Kp·num and den each formed in range first (den near
     /// 2e-308 times a Padé coefficient, or Kp = 1.8e308 times num = 2e-308, would leave it).
@@ -627,6 +629,24 @@ impl LoopCase {
         let theta = number(&approximant["delay"], "the approximant's delay")?;
         let (pn, pd) = pade_polys(theta, m as usize, n as usize);
         Ok(add_scaled(&mul(&den, &pd), 1.0, &mul(&num, &pn)))
+    }
+}
+
+impl Case for LoopCase {
+    fn args(&self) -> Vec<String> {
+        let mut out = vec![
+            "loop".to_string(),
+            "--json".into(),
+            format!("--kp={}", arg(self.kp)),
+        ];
+        out.extend(self.plant.args(self.typed));
+        if let Some(d) = self.delay {
+            out.push(format!("--delay={}", arg(d)));
+        }
+        if let Some((m, n)) = self.pade {
+            out.push(format!("--pade={m},{n}"));
+        }
+        out
     }
 
     fn check(&self, run: &Run) -> Outcome {
@@ -666,12 +686,7 @@ proptest! {
         lang in lang(),
         text in any::<bool>(),
     ) {
-        let args = case.args();
-        let run = degrau(lang, &args)?;
-        if run.ok() {
-            case.check(&run)?;
-        }
-        also_text(lang, &args, text)?;
+        fuzz(&case, lang, text)?;
     }
 }
 
@@ -726,7 +741,9 @@ impl ApproxCase {
             .fold(f64::INFINITY, f64::min);
         self.delay.unwrap_or(0.0) <= 1e9 / slowest
     }
+}
 
+impl Case for ApproxCase {
     fn args(&self) -> Vec<String> {
         let mut out = vec![
             "approx".to_string(),
@@ -793,12 +810,7 @@ proptest! {
         lang in lang(),
         text in any::<bool>(),
     ) {
-        let args = case.args();
-        let run = degrau(lang, &args)?;
-        if run.ok() {
-            case.check(&run)?;
-        }
-        also_text(lang, &args, text)?;
+        fuzz(&case, lang, text)?;
     }
 }
 
@@ -942,6 +954,28 @@ fn response_case() -> impl Strategy<Value = ResponseCase> {
 }
 
 impl ResponseCase {
+    /// y(t) by the closed form; None where two time constants are too close for it.
+    fn exact(&self, t: f64) -> Option<f64> {
+        let gain = self.k * self.amplitude.unwrap_or(1.0);
+        let tau = t - self.delay;
+        if tau < 0.0 {
+            return Some(0.0);
+        }
+        match self.taus {
+            (t1, None) => Some(gain * first_order(self.input, t1, tau)),
+            (t1, Some(t2)) if (t1 - t2).abs() > 0.1 * t1.max(t2) => {
+                let (y1, y2) = (
+                    first_order(self.input, t1, tau),
+                    first_order(self.input, t2, tau),
+                );
+                Some(gain / (t1 - t2) * (t1 * y1 - t2 * y2))
+            }
+            _ => None,
+        }
+    }
+}
+
+impl Case for ResponseCase {
     fn args(&self) -> Vec<String> {
         let den = match self.taus {
             (t1, None) => vec![t1, 1.0],
@@ -961,26 +995,6 @@ impl ResponseCase {
             out.push(format!("--amplitude={}", arg(a)));
         }
         out
-    }
-
-    /// y(t) by the closed form; None where two time constants are too close for it.
-    fn exact(&self, t: f64) -> Option<f64> {
-        let gain = self.k * self.amplitude.unwrap_or(1.0);
-        let tau = t - self.delay;
-        if tau < 0.0 {
-            return Some(0.0);
-        }
-        match self.taus {
-            (t1, None) => Some(gain * first_order(self.input, t1, tau)),
-            (t1, Some(t2)) if (t1 - t2).abs() > 0.1 * t1.max(t2) => {
-                let (y1, y2) = (
-                    first_order(self.input, t1, tau),
-                    first_order(self.input, t2, tau),
-                );
-                Some(gain / (t1 - t2) * (t1 * y1 - t2 * y2))
-            }
-            _ => None,
-        }
     }
 
     fn check(&self, run: &Run) -> Outcome {
@@ -1032,12 +1046,7 @@ proptest! {
         lang in lang(),
         text in any::<bool>(),
     ) {
-        let args = case.args();
-        let run = degrau(lang, &args)?;
-        if run.ok() {
-            case.check(&run)?;
-        }
-        also_text(lang, &args, text)?;
+        fuzz(&case, lang, text)?;
     }
 }
 
@@ -1386,7 +1395,7 @@ fn prbs_case() -> impl Strategy<Value = PrbsCase> {
         })
 }
 
-impl PrbsCase {
+impl Case for PrbsCase {
     fn args(&self) -> Vec<String> {
         let mut out = strings(&["prbs", "--json"]);
         out.extend([
@@ -1490,14 +1499,8 @@ proptest! {
         lang in lang(),
         text in any::<bool>(),
     ) {
-        let args = case.args();
-        let run = degrau(lang, &args)?;
-        if run.ok() {
-            case.check(&run)?;
-        }
-        if case.n < 600 {
-            also_text(lang, &args, text)?;
-        }
+        // A long record's text is not read again.
+        fuzz(&case, lang, text && case.n < 600)?;
     }
 }
 

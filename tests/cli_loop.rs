@@ -13,6 +13,11 @@ fn json(args: &[&str]) -> Value {
     serde_json::from_str(&stdout(&out)).expect("one JSON object")
 }
 
+/// A JSON array of numbers.
+fn numbers(v: &Value) -> Vec<f64> {
+    v.as_array().expect("an array").iter().map(num).collect()
+}
+
 fn num(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("{v} is not a number"))
 }
@@ -31,12 +36,7 @@ fn the_notes_loop_with_unit_gain() {
     ]);
     assert_eq!(num(&v["kp"]), 1.0);
     assert_eq!(v["kp_range"], Value::Null);
-    let den: Vec<f64> = v["closed_loop"]["den"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(num)
-        .collect();
+    let den = numbers(&v["closed_loop"]["den"]);
     for (a, b) in den.iter().zip([1.0, 7.0, 15.0, 25.5]) {
         assert!((a - b).abs() < 1e-12, "{den:?}");
     }
@@ -226,12 +226,7 @@ fn the_pade_1_1_loop_has_its_closed_form_poles() {
         assert!((s.0 + 0.4).abs() < 1e-12, "{s:?}");
         assert!((s.1 - sign * 0.24f64.sqrt()).abs() < 1e-12, "{s:?}");
     }
-    let den: Vec<f64> = v["closed_loop"]["den"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(num)
-        .collect();
+    let den = numbers(&v["closed_loop"]["den"]);
     let scale = den[0] / 10.0;
     for (a, b) in den.iter().zip([10.0, 8.0, 4.0]) {
         assert!((a / scale - b).abs() < 1e-12, "{den:?}");
@@ -409,12 +404,7 @@ fn a_huge_gain_gives_the_unstable_poles_of_den_plus_k_num() {
         assert!((r.0 - 1.5).abs() < 1e-6, "{p:?}");
         assert!((r.1.abs() / 5e21f64.sqrt() - 1.0).abs() < 1e-12, "{p:?}");
     }
-    let den: Vec<f64> = v["closed_loop"]["den"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(num)
-        .collect();
+    let den = numbers(&v["closed_loop"]["den"]);
     assert_eq!(den, vec![1.0, 7.0, 5e21, 5e22], "den + K·num as computed");
 }
 
