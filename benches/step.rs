@@ -7,12 +7,19 @@
 //! - `metrics+curve`: `StepResponse::new` + `analyse` (the metrics and their window, the
 //!   metrics computed once) plus 2000 samples of y over that window (target: ≤ 200 µs).
 //!
+//! - `random`: `StepResponse::new` + `analyse` of each of the 2,000 random systems of
+//!   orders 1–8 of `benches/systems` (issue 22, item 18), all of them per iteration: the
+//!   time per system is the time shown ÷ 2000 (target: the whole `degrau step --batch`
+//!   on them ≤ 50 ms, `benches/batch.rs`).
+//!
 //! Run: `cargo bench --bench step -- --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use degrau::lti::{C64, StepInfo, StepInfoOptions, StepResponse, TransferFunction, analyse};
+
+mod systems;
 
 /// Lightly damped pairs first, then well damped ones.
 const PAIRS: [(f64, f64); 4] = [(-0.5, 3.0), (-1.0, 6.0), (-0.3, 9.0), (-2.0, 1.5)];
@@ -72,5 +79,22 @@ fn bench_step(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_step);
+fn bench_random(c: &mut Criterion) {
+    let options = StepInfoOptions::default();
+    let systems = systems::systems();
+    let mut group = c.benchmark_group("random");
+    group.sample_size(20);
+    group.throughput(Throughput::Elements(systems.len() as u64));
+    group.bench_function("2000", |b| {
+        b.iter(|| {
+            systems
+                .iter()
+                .map(|s| analyse(&response(black_box(&s.tf)), &options).horizon)
+                .sum::<f64>()
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_step, bench_random);
 criterion_main!(benches);

@@ -29,15 +29,22 @@ const MAX_SQUARINGS: u32 = 60;
 const ZERO: C64 = C64::new(0.0, 0.0);
 
 /// f[x₁…x_k] for k = 1…m, f(s) = scale·Π(s − zᵢ)/Π(s − pⱼ): the first column of f(J).
-/// No pole may equal a node. The zeros are applied first, then the poles (for a single
-/// node: the residue k·Π(x − z)·Π 1/(x − p), in that order).
-pub fn rational(nodes: &[C64], scale: f64, zeros: &[C64], poles: &[C64]) -> Vec<C64> {
+/// No pole may equal a node. The zeros are applied first, then the poles in their order
+/// (for a single node: the residue k·Π(x − z)·Π 1/(x − p), in that order).
+pub fn rational<'a>(
+    nodes: &[C64],
+    scale: f64,
+    zeros: &[C64],
+    poles: impl IntoIterator<Item = &'a C64>,
+) -> Vec<C64> {
     let mut v = vec![ZERO; nodes.len()];
     if let Some(first) = v.first_mut() {
         *first = C64::new(scale, 0.0);
     }
     zeros.iter().for_each(|&z| times_linear(&mut v, nodes, z));
-    poles.iter().for_each(|&p| over_linear(&mut v, nodes, p));
+    poles
+        .into_iter()
+        .for_each(|&p| over_linear(&mut v, nodes, p));
     v
 }
 

@@ -13,11 +13,21 @@
 //! Which poles form a cluster: those within [`MERGE_RELATIVE`] of each other (single
 //! linkage, relative to their modulus), then, while the partial fractions of some cluster
 //! would still amplify rounding by more than [`AMPLIFICATION_LIMIT`] (many poles a few
-//! percent apart), the closest clusters are merged too, up to [`MAX_MERGE_GAP`].
+//! percent apart), the closest clusters are merged too, up to [`MAX_MERGE_GAP`]. The poles'
+//! moduli and distances are computed once for all the tolerances tried.
 //!
 //! No ODE is integrated: every sample is the closed form at that instant. Uniform grids use
 //! the recurrence e^{c(t+h)} = e^{ct}·e^{ch} (and exp((τ+h)N) = exp(τN)·exp(hN) for a
 //! cluster), re-anchored every [`REANCHOR`] steps.
+//!
+//! What is exact costs only where it is needed: a cluster of distinct poles (the Opitz
+//! matrix, its exponential scaled and squared) is evaluated as such, every other pole by
+//! its residue; a real pole in real arithmetic (the same products: its imaginary parts are
+//! all zero); and the distance of the closed-form text's repeated-pole form from the exact
+//! y ([`StepResponse::repeated_form_error`]) is walked on its grid by the same recurrences,
+//! once per response.
+
+use std::sync::OnceLock;
 
 use serde::{Deserialize, Serialize};
 
@@ -40,6 +50,8 @@ pub const AMPLIFICATION_LIMIT: f64 = 1e4;
 pub const REPEATED_AXIS_RELATIVE: f64 = 1e-6;
 /// Steps of the exponential recurrence between exact re-evaluations.
 const REANCHOR: usize = 64;
+/// Intervals of the grid on which [`StepResponse::repeated_form_error`] compares the forms.
+const FORM_GRID: usize = 4000;
 
 /// What a step response does as t → ∞ (its words: `crate::text::step`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -162,7 +174,7 @@ impl Cluster {
     }
 
     fn basis(&self, tau: f64) -> Basis {
-        let exp_ct = (self.center * tau).exp();
+        let exp_ct = exp(self.center * tau);
         let row = match &self.spread {
             Some(s) if exp_ct != C64::new(0.0, 0.0) => {
                 divided::exp_last_row(&s.offsets, s.radius, tau)
@@ -175,6 +187,10 @@ impl Cluster {
     /// weight·Re(contribution) at τ from its basis there.
     fn contribution(&self, which: Derivative, basis: &Basis, tau: f64) -> f64 {
         let value = match &self.spread {
+            // A real pole: the imaginary parts would only multiply e^{cτ}'s zero one.
+            None if self.center.im == 0.0 => {
+                return self.weight * (basis.exp_ct.re * horner_re(self.poly(which), tau));
+            }
             None => horner(self.poly(which), tau),
             Some(_) if basis.row.is_empty() => return 0.0,
             Some(s) => dot(&s.differences[which.index()], &basis.row),
@@ -204,6 +220,11 @@ fn horner(coeffs: &[C64], tau: f64) -> C64 {
         .fold(C64::new(0.0, 0.0), |acc, &q| acc * tau + q)
 }
 
+/// Re [`horner`]: the real parts alone (τ is real, so they never meet the imaginary ones).
+fn horner_re(coeffs: &[C64], tau: f64) -> f64 {
+    coeffs.iter().rev().fold(0.0, |acc, q| acc * tau + q.re)
+}
+
 /// The closed-form step response of a transfer function to a step of amplitude A at t = 0.
 #[derive(Debug, Clone)]
 pub struct StepResponse {
@@ -220,6 +241,8 @@ pub struct StepResponse {
     /// 1/it is the shortest time scale on which y can turn right after the step (fast zeros
     /// make early wiggles even when every pole is slow).
     initial_rate: f64,
+    /// [`StepResponse::repeated_form_error`], once measured.
+    form_error: OnceLock<f64>,
 }
 
 impl StepResponse {
@@ -257,6 +280,7 @@ impl StepResponse {
             final_value,
             initial_slope_sign,
             initial_rate,
+            form_error: OnceLock::new(),
         })
     }
 
@@ -323,19 +347,19 @@ impl StepResponse {
             .sum()
     }
 
-    /// The rational part's derivative `which` and the next one at τ ≥ 0, sharing the
-    /// exponentials (what a Newton step needs).
-    pub(crate) fn eval_rational_pair(&self, which: Derivative, tau: f64) -> (f64, f64) {
-        let next = match which {
-            Derivative::Value => Derivative::First,
-            _ => Derivative::Second,
-        };
-        self.clusters.iter().fold((0.0, 0.0), |(f, df), c| {
+    /// Several derivatives of the rational part at τ ≥ 0, sharing the exponentials (what a
+    /// Newton step needs, and the value where it lands).
+    pub(crate) fn eval_rational_set<const K: usize>(
+        &self,
+        which: [Derivative; K],
+        tau: f64,
+    ) -> [f64; K] {
+        self.clusters.iter().fold([0.0; K], |mut sums, c| {
             let basis = c.basis(tau);
-            (
-                f + c.contribution(which, &basis, tau),
-                df + c.contribution(next, &basis, tau),
-            )
+            for (sum, &w) in sums.iter_mut().zip(&which) {
+                *sum += c.contribution(w, &basis, tau);
+            }
+            sums
         })
     }
 
@@ -409,6 +433,8 @@ impl StepResponse {
         out.iter_mut().for_each(|v| *v = 0.0);
         for c in &self.clusters {
             match &c.spread {
+                // The step's constant has no derivative: nothing to add.
+                None if c.poly(which).iter().all(|q| *q == C64::new(0.0, 0.0)) => {}
                 None => uniform_repeated(c, c.poly(which), tau0, h, out),
                 Some(s) => uniform_spread(c, s, &s.differences[which.index()], tau0, h, out),
             }
@@ -466,26 +492,38 @@ impl StepResponse {
     /// [`Cluster::coeffs`] write, the closed-form text) is from the exact y: the largest
     /// difference on a 4000-point grid over each such cluster's transient, 0 when every
     /// cluster is an exactly repeated pole, infinite when such a cluster does not decay.
+    ///
+    /// Measured once (both closed-form texts ask) and kept; each cluster's grid is walked by
+    /// the uniform recurrences of [`StepResponse::eval_uniform_rational`], one exp(hN) for
+    /// the whole grid, not a scaled and squared exp(τN) at each of its 4001 instants.
     pub fn repeated_form_error(&self) -> f64 {
-        let scale = self.magnitude_scale().max(f64::MIN_POSITIVE);
-        self.clusters
+        *self.form_error.get_or_init(|| {
+            let scale = self.magnitude_scale().max(f64::MIN_POSITIVE);
+            self.clusters
+                .iter()
+                .filter_map(|c| c.spread.as_ref().map(|s| (c, s)))
+                .map(|(c, s)| self.cluster_form_error(c, s, scale))
+                .sum()
+        })
+    }
+
+    /// The largest |exact − repeated form| of one spread cluster on [`FORM_GRID`] + 1
+    /// instants over its transient (until its envelope is below 1e-12·`scale`).
+    fn cluster_form_error(&self, c: &Cluster, s: &Spread, scale: f64) -> f64 {
+        if c.decay_rate() >= 0.0 {
+            return f64::INFINITY;
+        }
+        let end = self.envelope_time(1e-12 * scale, |k| std::ptr::eq(k, c));
+        let h = end / FORM_GRID as f64;
+        let mut exact = vec![0.0; FORM_GRID + 1];
+        let mut form = vec![0.0; FORM_GRID + 1];
+        uniform_spread(c, s, &s.differences[0], 0.0, h, &mut exact);
+        uniform_repeated(c, &c.coeffs, 0.0, h, &mut form);
+        exact
             .iter()
-            .filter(|c| !c.is_repeated())
-            .map(|c| {
-                if c.decay_rate() >= 0.0 {
-                    return f64::INFINITY;
-                }
-                let end = self.envelope_time(1e-12 * scale, |k| std::ptr::eq(k, c));
-                (0..=4000)
-                    .map(|i| {
-                        let tau = end * i as f64 / 4000.0;
-                        let exact = c.contribution(Derivative::Value, &c.basis(tau), tau);
-                        let form = c.weight * ((c.center * tau).exp() * horner(&c.coeffs, tau)).re;
-                        (exact - form).abs()
-                    })
-                    .fold(0.0, f64::max)
-            })
-            .sum()
+            .zip(&form)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max)
     }
 
     /// The plotting window counted from the end of the dead time (seconds): the transient of
@@ -834,18 +872,36 @@ impl<P: PoleNumber> Advance<P> {
     }
 }
 
-/// Adds a repeated cluster's weight·Re(e^{cτ}·P(τ)) on the grid τ₀ + i·h.
+/// Adds a repeated cluster's weight·Re(e^{cτ}·P(τ)) on the grid τ₀ + i·h (a real pole in
+/// real arithmetic: the same products, since every imaginary part would be zero).
 fn uniform_repeated(c: &Cluster, poly: &[C64], tau0: f64, h: f64, out: &mut [f64]) {
-    let step = (c.center * h).exp();
-    let mut e = C64::new(0.0, 0.0);
+    let grid = (tau0, h);
+    if c.center.im == 0.0 {
+        walk_uniform(c.center.re, c.weight, |t| horner_re(poly, t), grid, out);
+    } else {
+        walk_uniform(c.center, c.weight, |t| horner(poly, t), grid, out);
+    }
+}
+
+/// weight·Re(e^{cτ}·p(τ)) added on the grid τ₀ + i·h (`grid` = (τ₀, h)), e^{cτ} by the
+/// recurrence e^{c(τ+h)} = e^{cτ}·e^{ch}, re-anchored every [`REANCHOR`] steps.
+fn walk_uniform<P: PoleNumber>(
+    center: P,
+    weight: f64,
+    p: impl Fn(f64) -> P,
+    (tau0, h): (f64, f64),
+    out: &mut [f64],
+) {
+    let step = center.exp_times(h);
+    let mut e = P::ZERO;
     for (i, v) in out.iter_mut().enumerate() {
         let tau = tau0 + h * i as f64;
         e = if i % REANCHOR == 0 {
-            (c.center * tau).exp()
+            center.exp_times(tau)
         } else {
             e * step
         };
-        *v += c.weight * (e * horner(poly, tau)).re;
+        *v += weight * e.re_product(p(tau));
     }
 }
 
@@ -894,9 +950,9 @@ fn term_decay_time(magnitude: f64, j: usize, sigma: f64, eps: f64) -> f64 {
     let rate = -sigma;
     let j = j as f64;
     // h(τ) = ln|q| + j ln τ − rate τ − ln eps is concave; start where it decreases.
-    let h = |tau: f64| {
-        magnitude.ln() + if j > 0.0 { j * tau.ln() } else { 0.0 } - rate * tau - eps.ln()
-    };
+    let (log_magnitude, log_eps) = (magnitude.ln(), eps.ln());
+    let h =
+        |tau: f64| log_magnitude + if j > 0.0 { j * tau.ln() } else { 0.0 } - rate * tau - log_eps;
     let mut tau = if j > 0.0 { 2.0 * j / rate } else { 0.0 };
     for _ in 0..60 {
         let value = h(tau);
@@ -952,73 +1008,119 @@ fn check_representable(
     Ok(())
 }
 
-/// How far apart two poles are, relative to the larger modulus (0 when equal).
-fn relative_gap(a: C64, b: C64) -> f64 {
-    let d = (a - b).norm();
-    if d == 0.0 {
-        0.0
-    } else {
-        d / a.norm().max(b.norm())
+/// The poles' moduli and their distances, each |·| (a hypot) computed once for the whole
+/// grouping rather than again for every pair at every tolerance tried.
+struct Geometry<'a> {
+    poles: &'a [C64],
+    norms: Vec<f64>,
+    /// |pᵢ − pⱼ|, row-major.
+    distances: Vec<f64>,
+}
+
+impl<'a> Geometry<'a> {
+    fn new(poles: &'a [C64]) -> Self {
+        let n = poles.len();
+        let mut distances = vec![0.0; n * n];
+        for i in 0..n {
+            for j in i + 1..n {
+                let d = (poles[i] - poles[j]).norm();
+                distances[i * n + j] = d;
+                distances[j * n + i] = d;
+            }
+        }
+        Self {
+            poles,
+            norms: poles.iter().map(|p| p.norm()).collect(),
+            distances,
+        }
+    }
+
+    fn distance(&self, i: usize, j: usize) -> f64 {
+        self.distances[i * self.poles.len() + j]
+    }
+
+    /// How far apart two poles are, relative to the larger modulus (0 when equal).
+    fn gap(&self, i: usize, j: usize) -> f64 {
+        let d = self.distance(i, j);
+        if d == 0.0 {
+            0.0
+        } else {
+            d / self.norms[i].max(self.norms[j])
+        }
+    }
+
+    /// Single-linkage labels: poles within `tolerance` (relative) of each other, directly or
+    /// through a chain, share a label.
+    fn single_linkage(&self, tolerance: f64) -> Vec<usize> {
+        let n = self.poles.len();
+        let mut label: Vec<usize> = (0..n).collect();
+        for i in 0..n {
+            for j in (i + 1)..n {
+                if self.gap(i, j) <= tolerance && label[i] != label[j] {
+                    let (keep, drop) = (label[i], label[j]);
+                    label
+                        .iter_mut()
+                        .filter(|l| **l == drop)
+                        .for_each(|l| *l = keep);
+                }
+            }
+        }
+        label
+    }
+
+    /// Whether some group's partial fractions amplify rounding by more than
+    /// [`AMPLIFICATION_LIMIT`]: Π_{p outside}|p|/|c − p| (c the group's centre, p ≠ 0), how
+    /// much larger than the final value the group's terms are.
+    fn amplifies(&self, partition: &Partition) -> bool {
+        partition.groups().enumerate().any(|(g, group)| {
+            // A lone pole is its own centre: its distances are already known.
+            let center = mean(group.iter().map(|&i| self.poles[i]));
+            let from_center = |j: usize| match group[..] {
+                [i] => self.distance(i, j),
+                _ => (center - self.poles[j]).norm(),
+            };
+            let log: f64 = partition
+                .groups()
+                .enumerate()
+                .filter(|&(h, _)| h != g)
+                .flat_map(|(_, members)| members.iter().copied())
+                .filter(|&j| self.norms[j] > 0.0)
+                .map(|j| (self.norms[j] / from_center(j)).ln())
+                .sum();
+            log.exp() > AMPLIFICATION_LIMIT
+        })
     }
 }
 
-/// Single-linkage labels: poles within `tolerance` (relative) of each other, directly or
-/// through a chain, share a label.
-fn single_linkage(poles: &[C64], tolerance: f64) -> Vec<usize> {
+/// The poles grouped by label: the indices of each group in a row, the groups in order of
+/// their first member, each group's members in their own order.
+struct Partition {
+    index: Vec<usize>,
+    /// Where each group starts in `index`, and its end.
+    bounds: Vec<usize>,
+}
+
+impl Partition {
+    fn new(label: &[usize]) -> Self {
+        let mut index = Vec::with_capacity(label.len());
+        let mut bounds = vec![0];
+        for (i, &l) in label.iter().enumerate() {
+            if index.iter().all(|&k| label[k] != l) {
+                index.extend((i..label.len()).filter(|&k| label[k] == l));
+                bounds.push(index.len());
+            }
+        }
+        Self { index, bounds }
+    }
+
+    fn groups(&self) -> impl Iterator<Item = &[usize]> {
+        self.bounds.windows(2).map(|w| &self.index[w[0]..w[1]])
+    }
+}
+
+fn mean(poles: impl ExactSizeIterator<Item = C64>) -> C64 {
     let n = poles.len();
-    let mut label: Vec<usize> = (0..n).collect();
-    for i in 0..n {
-        for j in (i + 1)..n {
-            if relative_gap(poles[i], poles[j]) <= tolerance && label[i] != label[j] {
-                let (keep, drop) = (label[i], label[j]);
-                label
-                    .iter_mut()
-                    .filter(|l| **l == drop)
-                    .for_each(|l| *l = keep);
-            }
-        }
-    }
-    label
-}
-
-/// The members of each label, in order of first appearance.
-fn members(poles: &[C64], label: &[usize]) -> Vec<Vec<C64>> {
-    let mut seen: Vec<usize> = Vec::new();
-    let mut groups: Vec<Vec<C64>> = Vec::new();
-    for (&p, &l) in poles.iter().zip(label) {
-        match seen.iter().position(|&s| s == l) {
-            Some(i) => groups[i].push(p),
-            None => {
-                seen.push(l);
-                groups.push(vec![p]);
-            }
-        }
-    }
-    groups
-}
-
-fn mean(poles: &[C64]) -> C64 {
-    poles.iter().sum::<C64>() / poles.len() as f64
-}
-
-/// The largest Π_{p outside}|p|/|c − p| over the groups (c a group's centre, p ≠ 0): how
-/// much larger than the final value a group's partial-fraction terms are.
-fn amplification(groups: &[Vec<C64>]) -> f64 {
-    let log = |g: usize| -> f64 {
-        let c = mean(&groups[g]);
-        groups
-            .iter()
-            .enumerate()
-            .filter(|&(h, _)| h != g)
-            .flat_map(|(_, members)| members.iter())
-            .filter(|p| p.norm() > 0.0)
-            .map(|&p| (p.norm() / (c - p).norm()).ln())
-            .sum()
-    };
-    (0..groups.len())
-        .map(log)
-        .fold(f64::NEG_INFINITY, f64::max)
-        .exp()
+    poles.sum::<C64>() / n as f64
 }
 
 /// Groups the poles of Y(s) into clusters: single linkage at [`MERGE_RELATIVE`], then at the
@@ -1029,18 +1131,19 @@ fn amplification(groups: &[Vec<C64>]) -> f64 {
 /// pole merged the step's pole at the origin with a slow pole (s² + 1e7·s + 1: 0 and −1e−7
 /// next to −1e7); the origin is never within a relative gap below 1 of another pole, so it
 /// stays alone (or with the integrators exactly at 0).
-fn group_poles(poles: &[C64]) -> Vec<Vec<C64>> {
+fn group_poles(poles: &[C64]) -> Partition {
+    let geometry = Geometry::new(poles);
     let mut tolerance = MERGE_RELATIVE;
     loop {
-        let label = single_linkage(poles, tolerance);
-        let groups = members(poles, &label);
-        if amplification(&groups) <= AMPLIFICATION_LIMIT {
+        let label = geometry.single_linkage(tolerance);
+        let groups = Partition::new(&label);
+        if !geometry.amplifies(&groups) {
             return groups;
         }
         let next = (0..poles.len())
             .flat_map(|i| (i + 1..poles.len()).map(move |j| (i, j)))
             .filter(|&(i, j)| label[i] != label[j])
-            .map(|(i, j)| relative_gap(poles[i], poles[j]))
+            .map(|(i, j)| geometry.gap(i, j))
             .fold(f64::INFINITY, f64::min);
         if next > MAX_MERGE_GAP {
             return groups;
@@ -1051,11 +1154,20 @@ fn group_poles(poles: &[C64]) -> Vec<Vec<C64>> {
 
 /// One group as a cluster of Y(s) = scale·Π(s − z)/Π(s − p): `None` for the mirror image of
 /// a complex group (its partner above the axis stands for both).
-fn make_cluster(group: &[C64], others: &[C64], zeros: &[C64], scale: f64) -> Option<Cluster> {
+fn make_cluster<'a>(
+    group: &[C64],
+    others: impl Iterator<Item = &'a C64> + Clone,
+    zeros: &[C64],
+    scale: f64,
+) -> Option<Cluster> {
     let m = group.len();
     let repeated = group.iter().all(|&p| p == group[0]);
     let self_conjugate = group.iter().any(|p| p.im <= 0.0) && group.iter().any(|p| p.im >= 0.0);
-    let center = if repeated { group[0] } else { mean(group) };
+    let center = if repeated {
+        group[0]
+    } else {
+        mean(group.iter().copied())
+    };
     let (center, weight) = if self_conjugate {
         (C64::new(center.re, 0.0), 1.0)
     } else if center.im > 0.0 {
@@ -1063,23 +1175,37 @@ fn make_cluster(group: &[C64], others: &[C64], zeros: &[C64], scale: f64) -> Opt
     } else {
         return None;
     };
-    let nodes: Vec<C64> = if repeated {
-        vec![center; m]
+    let norms = |q: &[C64]| q.iter().map(|q| q.norm()).collect();
+    let (coeffs, bound, spread) = if repeated {
+        let coeffs = taylor_to_powers(divided::rational(&vec![center; m], scale, zeros, others));
+        let bound = norms(&coeffs);
+        (coeffs, bound, None)
     } else {
-        group.to_vec()
+        let value = divided::rational(group, scale, zeros, others.clone());
+        let at_center = divided::rational(&vec![center; m], scale, zeros, others);
+        let bound = norms(&taylor_to_powers(value.clone()));
+        let spread = Spread::new(group.to_vec(), center, value);
+        (taylor_to_powers(at_center), bound, Some(spread))
     };
-    let value = divided::rational(&nodes, scale, zeros, others);
-    let at_center = if repeated {
-        value.clone()
-    } else {
-        divided::rational(&vec![center; m], scale, zeros, others)
-    };
-    let coeffs = taylor_to_powers(&at_center);
-    let bound = taylor_to_powers(&value).iter().map(|q| q.norm()).collect();
     let d1 = differentiate(center, &coeffs);
     let d2 = differentiate(center, &d1);
-    let frequency = group.iter().map(|p| p.im.abs()).fold(0.0, f64::max);
-    let spread = (!repeated).then(|| {
+    Some(Cluster {
+        center,
+        multiplicity: m,
+        weight,
+        coeffs,
+        bound,
+        d1,
+        d2,
+        frequency: group.iter().map(|p| p.im.abs()).fold(0.0, f64::max),
+        spread,
+    })
+}
+
+impl Spread {
+    /// The divided-difference form of distinct `nodes` around `center`, from the
+    /// differences `value` = R[x₁…x_k] of the rest of Y(s).
+    fn new(nodes: Vec<C64>, center: C64, value: Vec<C64>) -> Self {
         let offsets: Vec<C64> = nodes.iter().map(|&x| x - center).collect();
         let mut first = value.clone();
         divided::times_linear(&mut first, &nodes, C64::new(0.0, 0.0));
@@ -1095,47 +1221,32 @@ fn make_cluster(group: &[C64], others: &[C64], zeros: &[C64], scale: f64) -> Opt
             nodes,
             differences: [value, first, second],
         }
-    });
-    Some(Cluster {
-        center,
-        multiplicity: m,
-        weight,
-        coeffs,
-        bound,
-        d1,
-        d2,
-        frequency,
-        spread,
-    })
+    }
 }
 
 /// q_j = v_{m−1−j}/j! from divided differences v_k = f[x₁…x_{k+1}] (Taylor coefficients
 /// when the nodes are equal): the coefficients of τ^j.
-fn taylor_to_powers(v: &[C64]) -> Vec<C64> {
-    let m = v.len();
+fn taylor_to_powers(mut v: Vec<C64>) -> Vec<C64> {
+    v.reverse();
     let mut factorial = 1.0;
-    (0..m)
-        .map(|j| {
-            if j > 0 {
-                factorial *= j as f64;
-            }
-            v[m - 1 - j] / factorial
-        })
-        .collect()
+    for (j, q) in v.iter_mut().enumerate().skip(1) {
+        factorial *= j as f64;
+        *q /= factorial;
+    }
+    v
 }
 
 /// The clusters of Y(s) = scale·Π(s − z)/Π(s − p) (the step's pole included in `poles`).
 fn partial_fractions(poles: &[C64], zeros: &[C64], scale: f64) -> Vec<Cluster> {
-    let groups = group_poles(poles);
-    (0..groups.len())
-        .filter_map(|g| {
-            let others: Vec<C64> = groups
-                .iter()
-                .enumerate()
-                .filter(|&(h, _)| h != g)
-                .flat_map(|(_, members)| members.iter().copied())
-                .collect();
-            make_cluster(&groups[g], &others, zeros, scale)
+    let partition = group_poles(poles);
+    // The poles group after group: each group a slice, the others what is around it.
+    let ordered: Vec<C64> = partition.index.iter().map(|&i| poles[i]).collect();
+    partition
+        .bounds
+        .windows(2)
+        .filter_map(|w| {
+            let others = ordered[..w[0]].iter().chain(&ordered[w[1]..]);
+            make_cluster(&ordered[w[0]..w[1]], others, zeros, scale)
         })
         .collect()
 }
