@@ -176,6 +176,43 @@ fn batch_answers_every_line_in_order() {
     assert!((number(&replies[2], "steady_state") - 0.04).abs() < 1e-15);
 }
 
+/// A program that writes one line and waits for its reply gets it while stdin stays open.
+#[test]
+fn batch_answers_a_line_before_the_next_is_written() {
+    use std::io::{BufRead, BufReader};
+    use std::sync::mpsc;
+    use std::time::Duration;
+
+    let mut child = Command::new(env!("CARGO_BIN_EXE_degrau"))
+        .args(["step", "--batch"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("the degrau binary runs");
+    let mut stdin = child.stdin.take().expect("stdin is piped");
+    let stdout = BufReader::new(child.stdout.take().expect("stdout is piped"));
+    let (lines, replies) = mpsc::channel();
+    std::thread::spawn(move || {
+        for line in stdout.lines().map_while(Result::ok) {
+            if lines.send(line).is_err() {
+                break;
+            }
+        }
+    });
+    for (id, pole) in [(1, 5.0), (2, 0.5)] {
+        writeln!(stdin, r#"{{"id": {id}, "poles": [[-{pole}, 0]]}}"#).expect("a line is sent");
+        stdin.flush().expect("the line leaves");
+        let reply = replies
+            .recv_timeout(Duration::from_secs(20))
+            .expect("the reply comes while stdin is still open");
+        let reply: Value = serde_json::from_str(&reply).expect("the reply is JSON");
+        assert_eq!(reply["id"], id);
+        assert!((number(&reply, "rise_time") - 9f64.ln() / pole).abs() < 1e-12);
+    }
+    drop(stdin);
+    assert!(child.wait().expect("degrau ends").success());
+}
+
 #[test]
 fn json_and_batch_give_the_same_report() {
     let single = step_json(&["--poles", NOTES_POLES, "--zeros", "-10", "--gain", "0.5"]);

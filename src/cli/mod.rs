@@ -9,11 +9,12 @@
 //! Every system, from flags or from a JSON line, goes through [`SystemSpec::analyse`] and
 //! [`Report::new`]; the text report reads the same [`Analysis`].
 
-use std::io::{self, BufRead, BufWriter, Write};
+use std::io::{self, BufReader, Write};
 use std::process::ExitCode;
 
 pub mod approx;
 pub mod arx;
+pub mod batch;
 pub mod diagnose;
 pub mod discrete;
 pub mod fit;
@@ -22,9 +23,10 @@ pub mod loop_cmd;
 pub mod prbs;
 pub mod rls;
 
+pub use batch::run_batch;
+
 use clap::{Args, Parser, Subcommand};
 use serde::{Deserialize, Serialize};
-use serde_json::Value;
 
 use crate::ident::data::DataError;
 use crate::ident::experiment::ExperimentError;
@@ -466,23 +468,6 @@ fn stability_key(s: Stability) -> &'static str {
     }
 }
 
-/// One line of `--batch` output: the request's `id` (null when absent) and its 1-based line
-/// number, then either the report's keys or `error`.
-#[derive(Debug, Serialize)]
-pub struct BatchReply {
-    pub id: Value,
-    pub line: usize,
-    #[serde(flatten)]
-    pub outcome: Outcome,
-}
-
-#[derive(Debug, Serialize)]
-#[serde(untagged)]
-pub enum Outcome {
-    Report(Box<Report>),
-    Error { error: String },
-}
-
 impl StepArgs {
     /// The metric thresholds, defaults where not given, validated.
     pub fn options(&self) -> Result<StepInfoOptions, CliError> {
@@ -653,7 +638,8 @@ fn open_app_with(
 pub fn run_step(args: &StepArgs, lang: Lang) -> Result<(), CliError> {
     let options = args.options()?;
     if args.batch {
-        return run_batch(io::stdin().lock(), io::stdout().lock(), &options);
+        let input = BufReader::with_capacity(batch::READ_BYTES, io::stdin().lock());
+        return run_batch(input, io::stdout(), &options);
     }
     if args.response != Input::Step {
         return run_input_response(args, &options, lang);
@@ -753,66 +739,6 @@ fn input_report_text(step: &Analysis, report: &InputReport, lang: Lang) -> Strin
 fn write_json_line(out: &mut impl Write, value: &impl Serialize) -> io::Result<()> {
     serde_json::to_writer(&mut *out, value)?;
     out.write_all(b"\n")
-}
-
-/// Reads JSON systems line by line from `input` and writes one JSON reply per line to
-/// `output`, in order. Blank lines are skipped (replies carry their `line` number); a bad
-/// line gets an `error` reply and the batch goes on. Fails only when reading or writing does.
-pub fn run_batch(
-    mut input: impl BufRead,
-    output: impl Write,
-    options: &StepInfoOptions,
-) -> Result<(), CliError> {
-    let mut out = BufWriter::new(output);
-    let mut buffer = Vec::new();
-    let mut line = 0;
-    loop {
-        buffer.clear();
-        if input
-            .read_until(b'\n', &mut buffer)
-            .map_err(CliError::ReadInput)?
-            == 0
-        {
-            break;
-        }
-        line += 1;
-        if let Some(reply) = batch_reply(&buffer, line, options) {
-            write_json_line(&mut out, &reply).map_err(CliError::WriteOutput)?;
-        }
-    }
-    out.flush().map_err(CliError::WriteOutput)
-}
-
-/// The reply to one line of a batch; `None` for a blank line.
-fn batch_reply(bytes: &[u8], line: usize, options: &StepInfoOptions) -> Option<BatchReply> {
-    let (id, outcome) = match std::str::from_utf8(bytes) {
-        Err(_) => (Value::Null, Err(CliError::NotUtf8)),
-        Ok(text) if text.trim().is_empty() => return None,
-        Ok(text) => {
-            let (id, spec) = read_request(text.trim());
-            (id, spec.and_then(|s| s.analyse(options)))
-        }
-    };
-    let outcome = match outcome {
-        Ok(analysis) => Outcome::Report(Box::new(Report::new(&analysis))),
-        Err(e) => Outcome::Error {
-            error: e.text(Lang::En),
-        },
-    };
-    Some(BatchReply { id, line, outcome })
-}
-
-/// The `id` of a JSON request (null when absent or unreadable) and its system.
-fn read_request(text: &str) -> (Value, Result<SystemSpec, CliError>) {
-    let mut object = match serde_json::from_str::<Value>(text) {
-        Ok(Value::Object(object)) => object,
-        Ok(_) => return (Value::Null, Err(CliError::NotAnObject)),
-        Err(e) => return (Value::Null, Err(CliError::JsonSyntax(e.to_string()))),
-    };
-    let id = object.remove("id").unwrap_or(Value::Null);
-    let spec = serde_json::from_value(Value::Object(object))
-        .map_err(|e| CliError::JsonFields(e.to_string()));
-    (id, spec)
 }
 
 /// The text report: the system, its poles and zeros, the metrics and y(t). Numbers in the
@@ -1023,40 +949,6 @@ mod tests {
             options(&["--rise-limits", "0.1,x"]),
             Err(CliError::Parse { .. })
         ));
-    }
-
-    #[test]
-    fn batch_echoes_ids_in_order_and_skips_blank_lines() {
-        let input = "{\"id\": \"a\", \"num\": [5], \"den\": [1, 5]}\n\n\
-                     {\"id\": [1], \"num\": [1, 0, 0], \"den\": [1, 1]}\n\
-                     not json\n\
-                     {\"id\": 3, \"pole\": [[-1, 0]]}\n";
-        let mut out = Vec::new();
-        run_batch(input.as_bytes(), &mut out, &StepInfoOptions::default()).unwrap();
-        let replies: Vec<Value> = String::from_utf8(out)
-            .unwrap()
-            .lines()
-            .map(|l| serde_json::from_str(l).unwrap())
-            .collect();
-        assert_eq!(replies.len(), 4);
-        assert_eq!(replies[0]["id"], "a");
-        assert!((replies[0]["rise_time"].as_f64().unwrap() - 9f64.ln() / 5.0).abs() < 1e-12);
-        assert_eq!(replies[1]["id"], serde_json::json!([1]));
-        assert_eq!(replies[1]["line"], 3);
-        assert!(replies[1]["error"].as_str().unwrap().contains("improper"));
-        assert_eq!(replies[2]["id"], Value::Null);
-        assert!(
-            replies[2]["error"]
-                .as_str()
-                .unwrap()
-                .contains("not valid JSON")
-        );
-        assert!(
-            replies[3]["error"]
-                .as_str()
-                .unwrap()
-                .contains("unknown field `pole`")
-        );
     }
 
     #[test]
