@@ -154,6 +154,10 @@ pub struct RowAdvance {
     oldest: usize,
     term: Vec<C64>,
     next: Vec<C64>,
+    /// [`advance_terms`] for |δ| up to 2^e, by e: a jittered clock asks for every instant,
+    /// and its offsets fall in a few binades (the bound grows with |δ|, so a binade's top
+    /// counts enough terms for all of it).
+    counts: Vec<(i32, usize)>,
 }
 
 impl RowAdvance {
@@ -166,12 +170,12 @@ impl RowAdvance {
             oldest: 0,
             term: vec![ZERO; d.len()],
             next: vec![ZERO; d.len()],
+            counts: Vec::new(),
         }
     }
 
     /// row ← row·exp(h·N).
     pub fn advance(&mut self, row: &mut [C64], h: f64) {
-        let m = row.len();
         let nearest = self
             .kept
             .iter()
@@ -179,7 +183,7 @@ impl RowAdvance {
             .map(|(k, (kept, _))| (k, h - kept))
             .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
             .filter(|(_, delta)| row_advance_fits(*delta, self.radius))
-            .map(|(k, delta)| (k, delta, advance_terms(m, self.radius, delta)));
+            .map(|(k, delta)| (k, delta, self.terms_for(row.len(), delta)));
         // A new spacing gets its own matrix while there is room, or when none kept reaches.
         let room = self.kept.len() < KEPT_SPACINGS;
         let (k, delta, count) = match nearest {
@@ -189,6 +193,20 @@ impl RowAdvance {
         self.kept[k].1.row_times(row, &mut self.next);
         row.copy_from_slice(&self.next);
         carry(row, &mut self.term, &self.d, delta, count);
+    }
+
+    /// [`advance_terms`] for an offset δ, counted at the top of its binade and kept.
+    fn terms_for(&mut self, m: usize, delta: f64) -> usize {
+        if delta == 0.0 {
+            return 0;
+        }
+        let binade = delta.abs().log2().floor() as i32 + 1;
+        if let Some(&(_, count)) = self.counts.iter().find(|(e, _)| *e == binade) {
+            return count;
+        }
+        let count = advance_terms(m, self.radius, 2f64.powi(binade));
+        self.counts.push((binade, count));
+        count
     }
 
     /// Keeps exp(hN) in place of the oldest kept spacing: its index.
