@@ -276,6 +276,28 @@ pub fn auto_guess(data: &FitData, structure: Structure, y0: Option<f64>) -> Valu
         .unwrap_or_else(|| guess_as_given(data, structure, y0))
 }
 
+/// `guess` with its real lags in ascending order when the structure has an initial
+/// transient (before [`linear_part`] solves the transient's coefficients for them). The transient's basis is Newton's (see [`super::transient`]): its k-th function
+/// is dominated, once the faster modes have died, by the k-th pole's mode only when the
+/// faster poles come first; with the slow pole first every function decays like it, the
+/// coefficients are nearly collinear on a window that starts on a previous response's late
+/// tail, and a fit crawls along them for hundreds of iterations (the RC ladder's per-step P2
+/// windows hit the 200-iteration limit; in this order they converge in about twenty). The step
+/// response does not depend on the order.
+fn fastest_pole_first(mut guess: Values, s: Structure) -> Values {
+    if !s.transient || s.underdamped || s.poles < 2 {
+        return guess;
+    }
+    let lags = [Param::Tp1, Param::Tp2, Param::Tp3];
+    let lags = &lags[..s.poles as usize];
+    let mut values: Vec<f64> = lags.iter().map(|&p| guess.get(p)).collect();
+    values.sort_by(f64::total_cmp);
+    for (&p, v) in lags.iter().zip(values) {
+        guess.set(p, v);
+    }
+    guess
+}
+
 /// [`auto_guess`] in the record's units as they are: read off the curve for one step
 /// from rest, by least squares on the whole record otherwise ([`regression_guess`]).
 ///
@@ -483,6 +505,7 @@ fn linear_part(
     y0: Option<f64>,
     v: Values,
 ) -> Option<(Values, f64)> {
+    let v = fastest_pole_first(v, structure);
     let mut linear = vec![Param::Kp];
     linear.extend(structure.transient_params());
     if structure.drift {

@@ -150,7 +150,10 @@ pub fn per_step_lines(fits: &[StepFit], joint: &FitReport, lang: Lang) -> Vec<St
         ];
         match &f.fit {
             Ok(r) => {
-                row.extend(params.iter().map(|&p| cell(r, p, lang)));
+                row.extend(params.iter().map(|&p| {
+                    let q = crate::ident::per_step::same_lag(&joint.model, &r.model, p);
+                    cell(r, q, lang)
+                }));
                 let mut figure = lang.num(r.fit_percent, 4);
                 if f.not_at_rest {
                     figure = format!("{figure} ({})", StepsPhrase::NotAtRest.get(lang));
