@@ -16,7 +16,7 @@ use degrau::app::persist::FILE_NAME;
 use degrau::app::{DegrauApp, Saved};
 use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 
 /// Most shapes one frame may draw: the s-plane grid is capped at 200 lines a direction, and
 /// the default app draws far fewer than this; an unbounded grid drew millions.
@@ -265,5 +265,162 @@ fn an_edit_followed_by_no_frame_is_on_disk_within_a_second() {
         .collect();
     assert!(others.is_empty(), "no temporary or backup file: {others:?}");
     drop((h, restored));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The record and flags of `degrau open FILE --time-col … --initial-input …` parsed as the
+/// command line parses them.
+fn open_flags(args: &[&str]) -> degrau::app::identify::IdentSettings {
+    use clap::Parser;
+    let mut line = vec!["degrau", "open"];
+    line.extend_from_slice(args);
+    match degrau::cli::Cli::try_parse_from(line)
+        .expect("the flags parse")
+        .command
+    {
+        Some(degrau::cli::Command::Open(open)) => open.settings(),
+        other => panic!("not open: {other:?}"),
+    }
+}
+
+/// `degrau open` after a session on another record (issue 23, item 1): the flags given on
+/// the command line win over the saved session. The last session loaded its own record and
+/// then cleared the new one's column choices as left over from it ("several columns could
+/// be the output"), kept the old record plotted under the new path and its structure's
+/// guess under the new structure's name. `--initial-input` reaches the app too.
+#[test]
+fn flags_on_the_command_line_win_over_the_saved_session() {
+    let dir = temp_dir("open-flags");
+    let path = dir.join(FILE_NAME);
+    let records = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/records/");
+    let mut saved = Saved::default();
+    saved.mode = degrau::app::Mode::Identify;
+    saved.ident.path = format!("{records}multistep_heater_synthetic.csv");
+    saved.ident.code = "P2DZ".into();
+    saved.ident.initial_input = "3".into();
+    std::fs::write(&path, serde_json::to_string(&saved).expect("json")).expect("write");
+
+    let sbhs = format!("{records}sbhs_step_not_at_rest_synthetic.txt");
+    let flags = ["--time-col", "1", "--y-col", "4", "--u-col", "2"];
+    let mut args = vec![sbhs.as_str()];
+    args.extend(flags);
+    let h = harness(DegrauApp::opening(path.clone(), open_flags(&args)));
+    let ident = &h.state().ident;
+    let loaded = ident.loaded.as_ref().expect("the new record is loaded");
+    let rows = std::fs::read_to_string(&sbhs)
+        .expect("sbhs")
+        .lines()
+        .count();
+    assert_eq!(loaded.test.time.len(), rows);
+    assert_eq!(loaded.structure.code(), "P2DU");
+    assert_eq!(ident.settings.y_col, "4");
+    assert_eq!(
+        loaded.experiment.initial_input, None,
+        "no setting of the last record"
+    );
+    assert!(h.query_by_label_contains("could be the output").is_none());
+    drop(h);
+
+    let daisy = format!("{records}daisy_heating_system.dat");
+    let h = harness(DegrauApp::opening(
+        path,
+        open_flags(&[
+            &daisy,
+            "--time-col",
+            "1",
+            "--y-col",
+            "3",
+            "--u-col",
+            "2",
+            "--initial-input",
+            "6",
+        ]),
+    ));
+    let loaded = h.state().ident.loaded.as_ref().expect("DaISy is loaded");
+    assert_eq!(loaded.experiment.initial_input, Some(6.0));
+    drop(h);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Every structure the diagnosis can end on: 1 to 3 poles, with any of D, U (two poles or
+/// more), Z and I.
+fn every_structure() -> Vec<String> {
+    let mut codes = Vec::new();
+    for poles in 1..=3 {
+        for letters in 0..16u8 {
+            let mut code = format!("P{poles}");
+            for (bit, letter) in ['D', 'U', 'Z', 'I'].into_iter().enumerate() {
+                if letters & (1 << bit) != 0 {
+                    code.push(letter);
+                }
+            }
+            if degrau::ident::models::Structure::parse(&code).is_ok() {
+                codes.push(code);
+            }
+        }
+    }
+    codes
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(96))]
+    /// Whatever the app can reach, it saves and restores with no notice (issue 23, item 2: a
+    /// diagnosis ending on P3Z was refused on the next start): every structure, with or
+    /// without drift, in every mode, language, presentation size and theme.
+    #[test]
+    fn every_reachable_state_round_trips(
+        structure in proptest::sample::select(every_structure()),
+        drift: bool,
+        mode in proptest::sample::select(vec![
+            degrau::app::Mode::Design,
+            degrau::app::Mode::Identify,
+            degrau::app::Mode::LeastSquares,
+        ]),
+        pt: bool,
+        dark: bool,
+        scale in proptest::sample::select(vec![1.0f32, 1.2, 1.3, 1.4, 1.6, 1.8, 2.0]),
+    ) {
+        let mut saved = Saved::default();
+        saved.ident.code = structure.clone();
+        saved.ident.drift = drift;
+        saved.mode = mode;
+        saved.lang = if pt { degrau::text::Lang::Pt } else { degrau::text::Lang::En };
+        saved.dark = dark;
+        saved.scale = scale;
+        let text = serde_json::to_string(&saved).expect("json");
+        let (restored, problems) = degrau::app::persist::restore_text(&text);
+        proptest::prop_assert!(problems.is_empty(), "{problems:?}");
+        proptest::prop_assert_eq!(serde_json::to_string(&restored).expect("json"), text);
+    }
+}
+
+/// A session saved on a structure the menu does not list starts again on it, with no
+/// notice, and the structure box shows it.
+#[test]
+fn a_diagnosis_ending_on_p3z_starts_again_on_it() {
+    let dir = temp_dir("p3z");
+    let path = dir.join(FILE_NAME);
+    let mut saved = Saved::default();
+    saved.mode = degrau::app::Mode::Identify;
+    saved.ident.example = true;
+    saved.ident.code = "P3Z".into();
+    std::fs::write(&path, serde_json::to_string(&saved).expect("json")).expect("write");
+    let h = harness(DegrauApp::with_state_file(path));
+    assert!(h.query_by_label_contains("could not be restored").is_none());
+    assert_eq!(h.state().ident.settings.code, "P3Z");
+    let loaded = h
+        .state()
+        .ident
+        .loaded
+        .as_ref()
+        .expect("the example is loaded");
+    assert_eq!(loaded.structure.code(), "P3Z");
+    let shown: Vec<String> = h
+        .get_all_by_role(egui::accesskit::Role::ComboBox)
+        .filter(|n| n.accesskit_node().label().as_deref() == Some("Model structure"))
+        .filter_map(|n| n.value())
+        .collect();
+    assert_eq!(shown, ["P3Z"]);
+    drop(h);
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -56,19 +56,13 @@ pub fn run_with(test: Option<identify::IdentSettings>, lang: Option<Lang>) -> ef
         "Degrau",
         options,
         Box::new(move |cc| {
-            let mut app = DegrauApp::restore();
+            let mut app = DegrauApp::restore_opening(test);
             // The first frame is laid out at the presentation size already, so the panels'
             // first sizes are taken at it.
             cc.egui_ctx
                 .set_zoom_factor(look::clamp_scale(app.saved.scale));
             if let Some(lang) = lang {
                 app.saved.lang = lang;
-            }
-            if let Some(settings) = test {
-                let path = settings.path.clone();
-                app.ident.settings = settings;
-                app.saved.mode = Mode::Identify;
-                app.ident.load_path(&path);
             }
             Ok(Box::new(app))
         }),
@@ -207,7 +201,25 @@ impl DegrauApp {
     /// The session kept in the state file at `path` (restored field by field; a file that
     /// could not be restored whole is copied aside first), saved there after every change.
     pub fn with_state_file(path: std::path::PathBuf) -> Self {
-        let restored = persist::restore(&path);
+        Self::from_state_file(path, None)
+    }
+
+    /// [`Self::with_state_file`] with the step test named on the command line (`degrau
+    /// open FILE` and its flags) in place of the saved one: the flags win over the last
+    /// session, which would otherwise load its own record first and then clear the new
+    /// record's column choices as left over from it.
+    pub fn opening(path: std::path::PathBuf, test: identify::IdentSettings) -> Self {
+        Self::from_state_file(path, Some(test))
+    }
+
+    fn from_state_file(path: std::path::PathBuf, test: Option<identify::IdentSettings>) -> Self {
+        let mut restored = persist::restore(&path);
+        if let Some(test) = test {
+            restored.saved.ident = test;
+            restored.saved.mode = Mode::Identify;
+            // What could not be restored of the last record's settings is replaced whole.
+            restored.problems.retain(|p| !p.field.starts_with("ident"));
+        }
         let mut app = Self::unchecked(restored.saved);
         app.notices.extend(restore_notice(
             &restored.problems,
@@ -221,10 +233,21 @@ impl DegrauApp {
     /// The last session from the state file in its usual place ([`persist::default_path`]),
     /// or the built-in example.
     pub fn restore() -> Self {
+        Self::restore_opening(None)
+    }
+
+    /// [`Self::restore`], with the step test named on the command line in place of the
+    /// saved one ([`Self::opening`]).
+    pub fn restore_opening(test: Option<identify::IdentSettings>) -> Self {
         match persist::default_path() {
-            Some(path) => Self::with_state_file(path),
+            Some(path) => Self::from_state_file(path, test),
             None => {
-                let mut app = Self::default();
+                let mut saved = Saved::default();
+                if let Some(test) = test {
+                    saved.ident = test;
+                    saved.mode = Mode::Identify;
+                }
+                let mut app = Self::new(saved);
                 app.notices.push(Notice::NoHome);
                 app
             }

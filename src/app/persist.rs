@@ -26,10 +26,11 @@ use super::Saved;
 use super::design::Kept;
 use super::design::splane::{SPlaneState, View};
 use super::design::state::{self, RootRole, System};
-use super::identify::{CODES, IdentSettings};
+use super::identify::IdentSettings;
 use super::look::clamp_scale;
 use crate::ident::experiment::{Experiment, Offset};
 use crate::ident::fit::MAX_STARTS;
+use crate::ident::models::Structure;
 
 /// The environment variable naming the directory of the state file (tests use a temporary
 /// one).
@@ -283,15 +284,11 @@ fn restore_ident(mut f: Fields<'_>, d: IdentSettings) -> IdentSettings {
         sampling_period: f.take("sampling_period", d.sampling_period),
         initial_input: f.take("initial_input", d.initial_input),
         u_path: f.take("u_path", d.u_path),
+        // Any structure: the diagnosis ends on ones the menu does not list (P3Z, P3DU…).
         code: f.checked("code", d.code, |c| {
-            if CODES.contains(&c.as_str()) {
-                Ok(())
-            } else {
-                Err(format!(
-                    "\"{c}\" is not one of the models {}",
-                    CODES.join(", ")
-                ))
-            }
+            Structure::parse(c).map(|_| ()).map_err(|_| {
+                format!("\"{c}\" is not a model code (P, 1 to 3 poles, then any of D, U, Z, I)")
+            })
         }),
         drift: f.take("drift", d.drift),
         method: f.take("method", d.method),

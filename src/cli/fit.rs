@@ -157,6 +157,10 @@ pub struct OpenArgs {
     /// Sampling period in seconds, for a file without a time column.
     #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub ts: Option<f64>,
+    /// The input's value before the record starts (a record whose first sample is already
+    /// stepped, such as DaISy's heating system).
+    #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
+    pub initial_input: Option<f64>,
     /// Model structure to start with.
     #[arg(long, default_value = "P2DU")]
     pub model: String,
@@ -176,6 +180,10 @@ impl OpenArgs {
                 .map(|p| p.display().to_string())
                 .unwrap_or_default(),
             sampling_period: self.ts.map(|t| t.to_string()).unwrap_or_default(),
+            initial_input: self
+                .initial_input
+                .map(|u| u.to_string())
+                .unwrap_or_default(),
             code: self.model.to_ascii_uppercase(),
             ..Default::default()
         }

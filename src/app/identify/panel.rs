@@ -428,7 +428,7 @@ fn model_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Comm
     };
     let lang = look.lang;
     ui.horizontal_wrapped(|ui| {
-        ui.strong(Phrase::ModelStructure.get(lang));
+        let label = ui.strong(Phrase::ModelStructure.get(lang));
         let current = session.settings.code.clone();
         egui::ComboBox::from_id_salt("model code")
             .selected_text(&current)
@@ -438,7 +438,9 @@ fn model_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Comm
                         out.push(Command::SetCode(code.to_string()));
                     }
                 }
-            });
+            })
+            .response
+            .labelled_by(label.id);
         let mut drift = session.settings.drift;
         if ui
             .checkbox(&mut drift, Phrase::Drift.get(lang))
