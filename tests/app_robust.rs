@@ -12,6 +12,7 @@ use std::time::{Duration, Instant};
 
 use degrau::app::design::splane::View;
 use degrau::app::design::state::{ROOT_LIMIT, Root, System};
+use degrau::app::identify::IdentSettings;
 use degrau::app::persist::FILE_NAME;
 use degrau::app::{DegrauApp, Saved};
 use eframe::egui::{self, Vec2};
@@ -293,11 +294,16 @@ fn flags_on_the_command_line_win_over_the_saved_session() {
     let dir = temp_dir("open-flags");
     let path = dir.join(FILE_NAME);
     let records = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/records/");
-    let mut saved = Saved::default();
-    saved.mode = degrau::app::Mode::Identify;
-    saved.ident.path = format!("{records}multistep_heater_synthetic.csv");
-    saved.ident.code = "P2DZ".into();
-    saved.ident.initial_input = "3".into();
+    let saved = Saved {
+        mode: degrau::app::Mode::Identify,
+        ident: IdentSettings {
+            path: format!("{records}multistep_heater_synthetic.csv"),
+            code: "P2DZ".into(),
+            initial_input: "3".into(),
+            ..IdentSettings::default()
+        },
+        ..Saved::default()
+    };
     std::fs::write(&path, serde_json::to_string(&saved).expect("json")).expect("write");
 
     let sbhs = format!("{records}sbhs_step_not_at_rest_synthetic.txt");
@@ -380,13 +386,14 @@ proptest::proptest! {
         dark: bool,
         scale in proptest::sample::select(vec![1.0f32, 1.2, 1.3, 1.4, 1.6, 1.8, 2.0]),
     ) {
-        let mut saved = Saved::default();
-        saved.ident.code = structure.clone();
-        saved.ident.drift = drift;
-        saved.mode = mode;
-        saved.lang = if pt { degrau::text::Lang::Pt } else { degrau::text::Lang::En };
-        saved.dark = dark;
-        saved.scale = scale;
+        let saved = Saved {
+            ident: IdentSettings { code: structure.clone(), drift, ..IdentSettings::default() },
+            mode,
+            lang: if pt { degrau::text::Lang::Pt } else { degrau::text::Lang::En },
+            dark,
+            scale,
+            ..Saved::default()
+        };
         let text = serde_json::to_string(&saved).expect("json");
         let (restored, problems) = degrau::app::persist::restore_text(&text);
         proptest::prop_assert!(problems.is_empty(), "{problems:?}");
@@ -400,10 +407,15 @@ proptest::proptest! {
 fn a_diagnosis_ending_on_p3z_starts_again_on_it() {
     let dir = temp_dir("p3z");
     let path = dir.join(FILE_NAME);
-    let mut saved = Saved::default();
-    saved.mode = degrau::app::Mode::Identify;
-    saved.ident.example = true;
-    saved.ident.code = "P3Z".into();
+    let saved = Saved {
+        mode: degrau::app::Mode::Identify,
+        ident: IdentSettings {
+            example: true,
+            code: "P3Z".into(),
+            ..IdentSettings::default()
+        },
+        ..Saved::default()
+    };
     std::fs::write(&path, serde_json::to_string(&saved).expect("json")).expect("write");
     let h = harness(DegrauApp::with_state_file(path));
     assert!(h.query_by_label_contains("could not be restored").is_none());
