@@ -165,10 +165,11 @@ fn copy_as_code_puts_the_system_on_the_clipboard_and_says_so() {
             _ => None,
         })
         .collect();
-    // 0.5/((s² + 2s + 5)(s + 5)) = 0.5/(s³ + 7s² + 15s + 25)
+    // 0.5/((s² + 2s + 5)(s + 5)) = 0.5/(s³ + 7s² + 15s + 25), driven by the notes' step
+    // of 2 (MATLAB's step(G) is a unit step: its peak was half the app's).
     assert_eq!(
         copied,
-        ["G = tf([0.5], [1 7 15 25]);\nstep(G)\nstepinfo(G)"]
+        ["G = tf([0.5], [1 7 15 25]);\nA = 2;  % the step's amplitude\nstep(A*G)\nstepinfo(A*G)"]
     );
     h.run_steps(2);
     h.get_by_label("Copied the system as MATLAB code");

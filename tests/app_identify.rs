@@ -604,9 +604,11 @@ fn the_fitted_model_copies_as_code() {
     let matlab = app.ident.fitted_code(CodeKind::Matlab).unwrap();
     assert_eq!(
         matlab,
-        degrau::text::code::matlab(&tf.num(), &tf.den(), tf.delay())
+        degrau::text::code::matlab(&tf.num(), &tf.den(), tf.delay(), 10.0)
     );
     assert!(matlab.contains("'InputDelay'"), "{matlab}");
+    // Driven by the test's own step, Δu = 10, as the plotted model is.
+    assert!(matlab.contains("A = 10;") && matlab.contains("step(A*G)"), "{matlab}");
     let python = app.ident.fitted_code(CodeKind::PythonControl).unwrap();
     assert!(python.contains("control.tf("), "{python}");
 }

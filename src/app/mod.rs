@@ -431,10 +431,11 @@ impl DegrauApp {
             Command::CopyCode(kind) => {
                 if let Ok(tf) = &self.design.analysis.tf {
                     let (num, den) = (tf.num(), tf.den());
+                    let a = self.saved.design.system.amplitude;
                     let code = match kind {
-                        CodeKind::Matlab => crate::text::code::matlab(&num, &den, tf.delay()),
+                        CodeKind::Matlab => crate::text::code::matlab(&num, &den, tf.delay(), a),
                         CodeKind::PythonControl => {
-                            crate::text::code::python_control(&num, &den, tf.delay())
+                            crate::text::code::python_control(&num, &den, tf.delay(), a)
                         }
                     };
                     ctx.copy_text(code);

@@ -27,24 +27,43 @@ fn row(v: &[f64], separator: &str) -> String {
         .join(separator)
 }
 
+/// The system a step of `amplitude` drives, as the code names it: `G`, or `A*G` after a
+/// line setting A (MATLAB's `step(G)` is a unit step: its peak would be 1/A of Degrau's).
+fn driven(amplitude: f64, comment: &str, end: &str) -> (String, &'static str) {
+    if amplitude == 1.0 {
+        (String::new(), "G")
+    } else {
+        (
+            format!(
+                "A = {}{end}  {comment} the step's amplitude\n",
+                literal(amplitude)
+            ),
+            "A*G",
+        )
+    }
+}
+
 /// MATLAB (Control System Toolbox): `G = tf([…], […])`, with `'InputDelay', θ` when the
-/// system has a dead time θ (s). Coefficients in descending powers of s.
-pub fn matlab(num: &[f64], den: &[f64], delay: f64) -> String {
+/// system has a dead time θ (s), and its response to a step of `amplitude`. Coefficients
+/// in descending powers of s.
+pub fn matlab(num: &[f64], den: &[f64], delay: f64, amplitude: f64) -> String {
     let delay = if delay > 0.0 {
         format!(", 'InputDelay', {}", literal(delay))
     } else {
         String::new()
     };
+    let (set, system) = driven(amplitude, "%", ";");
     format!(
-        "G = tf([{}], [{}]{delay});\nstep(G)\nstepinfo(G)",
+        "G = tf([{}], [{}]{delay});\n{set}step({system})\nstepinfo({system})",
         row(num, " "),
         row(den, " ")
     )
 }
 
 /// python-control: `G = control.tf([…], […])`; a dead time θ (s) becomes the Padé
-/// approximant of order [`PYTHON_PADE_ORDER`], labelled as an approximation.
-pub fn python_control(num: &[f64], den: &[f64], delay: f64) -> String {
+/// approximant of order [`PYTHON_PADE_ORDER`], labelled as an approximation; its response
+/// to a step of `amplitude`.
+pub fn python_control(num: &[f64], den: &[f64], delay: f64, amplitude: f64) -> String {
     let mut code = format!(
         "import control\n\nG = control.tf([{}], [{}])\n",
         row(num, ", "),
@@ -59,7 +78,10 @@ pub fn python_control(num: &[f64], den: &[f64], delay: f64) -> String {
             literal(delay)
         ));
     }
-    code.push_str("t, y = control.step_response(G)\nprint(control.step_info(G))\n");
+    let (set, system) = driven(amplitude, "#", "");
+    code.push_str(&format!(
+        "{set}t, y = control.step_response({system})\nprint(control.step_info({system}))\n"
+    ));
     code
 }
 
@@ -99,10 +121,10 @@ mod tests {
     fn matlab_with_and_without_delay() {
         let num = [0.5];
         let den = [1.0, 7.0, 15.0, 25.0];
-        let code = matlab(&num, &den, 0.0);
+        let code = matlab(&num, &den, 0.0, 1.0);
         assert!(code.starts_with("G = tf([0.5], [1 7 15 25]);"), "{code}");
         assert!(!code.contains("InputDelay"));
-        let code = matlab(&[2.0], &[10.0, 1.0], 1.0 / 3.0);
+        let code = matlab(&[2.0], &[10.0, 1.0], 1.0 / 3.0, 1.0);
         assert!(code.contains("'InputDelay', 0.3333333333333333"), "{code}");
         assert_eq!(numbers_after(&code, "tf([", ' '), vec![2.0]);
     }
@@ -110,12 +132,29 @@ mod tests {
     #[test]
     fn python_control_with_a_pade_delay() {
         let den = [1.0, 0.1 + 0.2, 1e-9];
-        let code = python_control(&[1.0], &den, 2.5);
+        let code = python_control(&[1.0], &den, 2.5, 1.0);
         assert_eq!(numbers_after(&code, "], [", ','), den.to_vec());
         assert!(code.contains("control.pade(2.5, 5)"), "{code}");
         assert!(code.contains("approximate"));
-        let plain = python_control(&[1.0], &[1.0, 1.0], 0.0);
+        let plain = python_control(&[1.0], &[1.0, 1.0], 0.0, 1.0);
         assert!(!plain.contains("pade"));
         assert!(plain.contains("G = control.tf([1], [1, 1])"), "{plain}");
+    }
+
+    /// A step of amplitude A is A·G's unit step: the code says so, or MATLAB's peak is 1/A
+    /// of Degrau's (issue 23, item 15).
+    #[test]
+    fn the_step_amplitude_is_in_the_code() {
+        let code = matlab(&[0.5], &[1.0, 7.0, 15.0, 25.0], 0.0, 2.0);
+        assert!(
+            code.ends_with("A = 2;  % the step's amplitude\nstep(A*G)\nstepinfo(A*G)"),
+            "{code}"
+        );
+        let code = python_control(&[1.0], &[1.0, 1.0], 0.0, -0.5);
+        assert!(
+            code.contains("A = -0.5  # the step's amplitude\n"),
+            "{code}"
+        );
+        assert!(code.contains("control.step_response(A*G)") && code.contains("step_info(A*G)"));
     }
 }

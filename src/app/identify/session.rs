@@ -766,12 +766,12 @@ impl Session {
 
     /// The fitted model as code for the course's tools.
     pub fn fitted_code(&self, kind: super::commands::CodeKind) -> Option<String> {
-        let (tf, _) = self.fitted_transfer_function()?;
+        let (tf, du) = self.fitted_transfer_function()?;
         let (num, den, delay) = (tf.num(), tf.den(), tf.delay());
         Some(match kind {
-            super::commands::CodeKind::Matlab => crate::text::code::matlab(&num, &den, delay),
+            super::commands::CodeKind::Matlab => crate::text::code::matlab(&num, &den, delay, du),
             super::commands::CodeKind::PythonControl => {
-                crate::text::code::python_control(&num, &den, delay)
+                crate::text::code::python_control(&num, &den, delay, du)
             }
         })
     }
