@@ -608,7 +608,10 @@ fn the_fitted_model_copies_as_code() {
     );
     assert!(matlab.contains("'InputDelay'"), "{matlab}");
     // Driven by the test's own step, Δu = 10, as the plotted model is.
-    assert!(matlab.contains("A = 10;") && matlab.contains("step(A*G)"), "{matlab}");
+    assert!(
+        matlab.contains("A = 10;") && matlab.contains("step(A*G)"),
+        "{matlab}"
+    );
     let python = app.ident.fitted_code(CodeKind::PythonControl).unwrap();
     assert!(python.contains("control.tf("), "{python}");
 }
@@ -690,4 +693,25 @@ fn the_views_speak_portuguese() {
     h.get_by_label("Intervalo de 95 %");
     h.get_by_label("Copiar como MATLAB");
     assert!(h.query_by_label("Fit").is_none());
+}
+
+/// A record with a few samples before the first of several changes (ECAM's MV test: 10)
+/// says why Y0 is estimated as the CLI does, "fewer than 20 samples", not that there is no
+/// sample before the step (issue 23, item 10), in both languages.
+#[test]
+fn a_short_rest_is_said_as_what_it_is() {
+    let mv = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/records/ecam_tclab_Open_loop_experiment_on_MV_2022-03-01-09h52.txt"
+    );
+    let mut h = harness();
+    load(&mut h, mv);
+    h.get_by_label_contains("Fewer than 20 samples before the first of several input changes");
+    assert!(
+        h.query_by_label_contains("No sample before the step")
+            .is_none()
+    );
+    h.state_mut().saved.lang = degrau::text::Lang::Pt;
+    h.run_steps(2);
+    h.get_by_label_contains("Menos de 20 amostras antes da primeira");
 }

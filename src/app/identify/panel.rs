@@ -7,7 +7,7 @@ use eframe::egui::{self, DragValue, RichText, Ui};
 use crate::app::field::{Limits, NumberField};
 use crate::app::look::Look;
 use crate::ident::excitation::Hold;
-use crate::ident::experiment::{Drive, EstimateReason, Offset, OperatingPoint};
+use crate::ident::experiment::{Drive, Offset, OperatingPoint};
 use crate::ident::fit::{MAX_STARTS, Method, bounds};
 use crate::ident::models::Param;
 use crate::text::Localize;
@@ -395,13 +395,10 @@ fn operating_point(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Co
                 ui.label(Phrase::HeldAt.with(lang, &[held]));
             }
             None => {
-                // Why it is estimated: no sample before the step, or the output still moved.
+                // Why it is estimated: no sample before the step, too few before the first
+                // of several changes, or the output still moved.
                 let text = match session.operating_point_fact() {
-                    Some(
-                        fact @ OperatingPoint::Estimated {
-                            reason: EstimateReason::NotAtRest,
-                        },
-                    ) => capitalised(&fact.text(lang)),
+                    Some(fact @ OperatingPoint::Estimated { .. }) => capitalised(&fact.text(lang)),
                     _ => Phrase::NoSampleBefore.get(lang).to_string(),
                 };
                 ui.label(RichText::new(text).color(look.palette.warning));
