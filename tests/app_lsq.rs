@@ -290,3 +290,41 @@ fn the_advisor_reads_the_notes_rules_with_the_record_numbers() {
     assert!(amplitude.holds(), "{amplitude:?}");
     h.get_by_label("step's effect / noise > 6");
 }
+
+/// A fit made in the Identify mode is the continuous fit the least-squares mode compares
+/// with, as soon as the student switches (issue 23, item 3: it said "None yet" right after
+/// a fit).
+#[test]
+fn a_fit_in_identify_is_compared_in_least_squares() {
+    let mut h = harness();
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    let settings = &mut h.state_mut().ident.settings;
+    settings.y_col = "T1".into();
+    settings.u_col = "Q1".into();
+    settings.code = "P1D".into();
+    load(&mut h, TCLAB);
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    kit::wait_for(&mut h, |h| h.query_by_label("Fitted P1D").is_some());
+    h.get_by_label("Least squares on samples").click();
+    h.run_steps(3);
+    assert!(h.query_by_label_contains("None yet").is_none());
+    h.get_by_label_contains("P1D: G(s) = ");
+    h.get_by_label_contains("Its fit % on these samples");
+    // After the whole loop, the model the chain ends on (or the row chosen) is compared.
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    h.get_by_label("Run the whole loop").click_accesskit();
+    h.run_steps(1);
+    kit::wait_for(&mut h, |h| !h.state().ident.is_diagnosing());
+    let chain = h.state().ident.diagnosis.clone().expect("a chain");
+    h.get_by_label(&chain.start.model.structure.label())
+        .click_accesskit();
+    h.run_steps(2);
+    h.get_by_label("Least squares on samples").click();
+    h.run_steps(3);
+    assert!(h.query_by_label_contains("None yet").is_none());
+    let code = chain.start.model.structure.code();
+    h.get_by_label_contains(&format!("{code}: G(s) = "));
+}

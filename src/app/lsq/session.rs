@@ -228,8 +228,9 @@ impl Session {
             self.continuous = None;
             self.record_changed();
         }
+        // The fit shown in the Identify mode: its own, or a row of its diagnosis chain.
         let fitted = match ident.shown() {
-            Some((m, Shown::Fitted)) => Some(m),
+            Some((m, Shown::Fitted | Shown::ChainRow(_))) => Some(m),
             _ => None,
         };
         if fitted != self.continuous.as_ref().map(|c| c.0) {
@@ -250,7 +251,7 @@ impl Session {
     /// either changed.
     fn advise(&mut self, ident: &identify::Session) {
         let shown = match ident.shown() {
-            Some((m, Shown::Fitted)) => Some((m, true)),
+            Some((m, Shown::Fitted | Shown::ChainRow(_))) => Some((m, true)),
             Some((m, Shown::Guess)) => Some((m, false)),
             _ => None,
         };
