@@ -328,3 +328,46 @@ fn a_fit_in_identify_is_compared_in_least_squares() {
     let code = chain.start.model.structure.code();
     h.get_by_label_contains(&format!("{code}: G(s) = "));
 }
+
+/// A PRBS test used as the record starts from its own columns (issue 23, item 3): the
+/// input before DaISy's record (6), set for the record loaded before, invented a 6 → 1 step
+/// and 69 input changes on it.
+#[test]
+fn a_prbs_used_as_the_record_takes_no_setting_of_the_last_record() {
+    let mut h = harness();
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    let settings = &mut h.state_mut().ident.settings;
+    settings.time_col = "1".into();
+    settings.y_col = "3".into();
+    settings.u_col = "2".into();
+    settings.initial_input = "6".into();
+    let daisy = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/records/daisy_heating_system.dat"
+    );
+    load(&mut h, daisy);
+    let loaded = h.state().ident.loaded.as_ref().expect("DaISy is loaded");
+    assert_eq!(loaded.experiment.initial_input, Some(6.0));
+    h.get_by_label("Least squares on samples").click();
+    h.run_steps(2);
+    h.get_by_label("PRBS test").click();
+    h.run_steps(2);
+    h.get_by_label("Use as record").click();
+    h.run_steps(3);
+    let ident = &h.state().ident;
+    let loaded = ident.loaded.as_ref().expect("the PRBS test is the record");
+    assert_eq!(loaded.experiment.initial_input, None);
+    assert!(ident.settings.initial_input.is_empty());
+    let data = loaded.data.as_ref().expect("its fit data");
+    let prbs = match &h.state().lsq.designed {
+        Some(Ok(d)) => d.record.clone(),
+        other => panic!("no PRBS designed: {other:?}"),
+    };
+    let changes = prbs.u.windows(2).filter(|w| w[0] != w[1]).count();
+    assert_eq!(
+        data.input.changes.len(),
+        changes,
+        "no step invented before the record"
+    );
+}

@@ -447,9 +447,13 @@ impl Session {
     pub fn load_text(&mut self, text: &str) {
         match data::from_columns(text) {
             Ok(test) => {
+                // Pasted columns (or a PRBS test used as the record) start from their own
+                // columns: an input before another record (DaISy's 6) would invent a step.
+                let cleared = self.start_reading(&Source::Pasted);
                 self.settings.example = false;
                 self.settings.path.clear();
-                self.accept(test, Source::Pasted, Vec::new());
+                self.settings.u_path.clear();
+                self.accept(test, Source::Pasted, cleared);
             }
             Err(e) => self.refuse(Source::Pasted, LoadError::Data(e)),
         }
