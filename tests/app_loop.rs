@@ -345,3 +345,27 @@ fn the_loop_is_still_closed_with_its_gain_after_a_restart() {
     drop((restored, bad));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// With the loop closed, the "Previous" curve is the closed loop before the gain changed
+/// (issue 23, item 3: it showed the open loop from the last edit of the system, two edits
+/// old, while Kp moved the closed loop).
+#[test]
+fn the_previous_curve_follows_the_loop_gain() {
+    let mut h = harness();
+    click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
+    kit::type_number(&mut h, "Kp", 0, "2");
+    h.run_steps(2);
+    let at_two = h
+        .state()
+        .design
+        .feedback
+        .closed
+        .as_ref()
+        .expect("the closed loop at Kp = 2")
+        .curve
+        .clone();
+    kit::type_number(&mut h, "Kp", 0, "5");
+    h.run_steps(2);
+    assert_eq!(h.state().saved.design.feedback.kp, 5.0);
+    assert_eq!(h.state().design.ghost.as_ref(), Some(&at_two));
+}

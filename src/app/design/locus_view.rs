@@ -242,6 +242,9 @@ pub fn handles(
             let (re, im) = t.to_plane(p);
             out.push(Command::DragLoopPole { branch, re, im });
         }
+        if response.drag_stopped() {
+            out.push(Command::EndDrag);
+        }
         if response.hovered() || response.dragged() {
             *readout = Some(format!(
                 "{name}: Kp = {} · {}",

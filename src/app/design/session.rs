@@ -48,6 +48,8 @@ pub struct Session {
     pub feedback: LoopDerived,
     /// The root being dragged (its drag is one undoable edit).
     dragging: Option<RootId>,
+    /// Whether a closed-loop pole is being dragged (its drag keeps one ghost).
+    dragging_loop: bool,
     /// The approximation chosen and its derived model and comparison.
     pub approx: super::approx::ApproxView,
 }
@@ -71,6 +73,7 @@ impl Session {
                 f
             },
             dragging: None,
+            dragging_loop: false,
             approx: Default::default(),
         }
     }
@@ -131,7 +134,10 @@ impl Session {
                     }
                 });
             }
-            Command::EndDrag => self.dragging = None,
+            Command::EndDrag => {
+                self.dragging = None;
+                self.dragging_loop = false;
+            }
             Command::Nudge { id, dre, dim } => self.edit(kept, |s| {
                 if let Some(r) = s.root_mut(id) {
                     let (re, im) = (r.re + dre, r.im + dim);
@@ -202,7 +208,8 @@ impl Session {
             }
             Command::SetLoopClosed(on) => kept.feedback.closed = on,
             Command::SetKp(kp) => {
-                if kp.is_finite() && kp.abs() <= KP_LIMIT {
+                if kp.is_finite() && kp.abs() <= KP_LIMIT && kp != kept.feedback.kp {
+                    self.keep_loop_ghost(kept);
                     kept.feedback.kp = kp;
                 }
             }
@@ -210,6 +217,10 @@ impl Session {
                 self.feedback
                     .refresh(&kept.system, &kept.feedback, kept.options, false);
                 if let Some(k) = self.feedback.gain_at(branch, crate::lti::C64::new(re, im)) {
+                    if !self.dragging_loop {
+                        self.keep_loop_ghost(kept);
+                        self.dragging_loop = true;
+                    }
                     kept.feedback.kp = k;
                     kept.feedback.closed = true;
                 }
@@ -226,6 +237,7 @@ impl Session {
                 self.feedback
                     .refresh(&kept.system, &kept.feedback, kept.options, false);
                 if let Some(k) = self.feedback.find(&kept.feedback.specs) {
+                    self.keep_loop_ghost(kept);
                     kept.feedback.kp = k;
                     kept.feedback.closed = true;
                 }
@@ -274,6 +286,20 @@ impl Session {
 
     fn keep_ghost(&mut self) {
         self.ghost = Some(self.analysis.curve.clone());
+    }
+
+    /// Before a change of the loop's gain: the closed-loop curve it changes is the previous
+    /// response (the open loop's does not move with Kp, so its ghost would be a system two
+    /// edits old beside a closed loop that moves).
+    fn keep_loop_ghost(&mut self, kept: &Kept) {
+        if let Some(c) = self
+            .feedback
+            .closed
+            .as_ref()
+            .filter(|_| kept.feedback.closed)
+        {
+            self.ghost = Some(c.curve.clone());
+        }
     }
 
     fn after_history_jump(&mut self, kept: &mut Kept) {
