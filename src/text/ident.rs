@@ -1266,6 +1266,33 @@ pub fn handle_help(h: Handle, lang: Lang) -> &'static str {
 // ---------------------------------------------------------------------------------------
 // The diagnosis: causes, remedies, evidence, verdict
 
+/// How a cause is named at the head of its lines: by its stable identifier (the CLI's text,
+/// which graders and scripts read, `extra_pole`), or in the student's words (the app).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Naming {
+    Id,
+    Words,
+}
+
+/// A cause's name: its identifier, or a few words in `lang` ("extra pole", "polo a mais").
+pub fn cause_name(c: Cause, naming: Naming, lang: Lang) -> &'static str {
+    if naming == Naming::Id {
+        return c.id();
+    }
+    let (en, pt) = match c {
+        Cause::DeadTime => ("Dead time", "Tempo morto"),
+        Cause::Offset => ("Operating point", "Ponto de operação"),
+        Cause::Oscillation => ("Oscillation", "Oscilação"),
+        Cause::ExtraPole => ("Extra pole", "Polo a mais"),
+        Cause::Zero => ("Zero", "Zero"),
+        Cause::InverseResponse => ("Inverse response", "Resposta inversa"),
+        Cause::Integrator => ("Integrator", "Integrador"),
+        Cause::Drift => ("Drift", "Deriva"),
+        Cause::None => ("Nothing", "Nada"),
+    };
+    lang.pick(en, pt)
+}
+
 impl Localize for Cause {
     /// The cause in plain words for a student.
     fn text(&self, lang: Lang) -> String {

@@ -11,6 +11,7 @@ use crate::ident::diagnose::{DiagnoseReport, Step};
 use crate::ident::fit::{FitReport, FitWarning};
 use crate::ident::models::{Model, Param, pair_poles};
 
+use super::ident::{Naming, cause_name};
 use super::{Lang, Localize, Message};
 
 /// Columns of the chain table.
@@ -153,12 +154,14 @@ fn chain_table(d: &DiagnoseReport, lang: Lang) -> Vec<String> {
         .collect()
 }
 
-/// A step's cause in words: `dead_time: The model moves before the data does: …`.
-pub fn cause_line(step: &Step, lang: Lang) -> String {
+/// A step's cause in words: `dead_time: The model moves before the data does: …` (named
+/// as `naming` says: `Dead time: …` in the app).
+pub fn cause_line(step: &Step, naming: Naming, lang: Lang) -> String {
+    let name = |c| cause_name(c, naming, lang);
     if step.removed {
         return format!(
             "{} {}: {}",
-            step.cause.id(),
+            name(step.cause),
             lang.pick("taken out", "retirado"),
             lang.pick(
                 "the term no longer pays once the later ones are in.",
@@ -169,12 +172,12 @@ pub fn cause_line(step: &Step, lang: Lang) -> String {
     match step.paired {
         Some(p) => format!(
             "{} + {}: {} {}",
-            step.cause.id(),
-            p.id(),
+            name(step.cause),
+            cause_name(p, naming, lang).to_lowercase(),
             step.cause.text(lang),
             p.text(lang)
         ),
-        None => format!("{}: {}", step.cause.id(), step.cause.text(lang)),
+        None => format!("{}: {}", name(step.cause), step.cause.text(lang)),
     }
 }
 
@@ -203,9 +206,9 @@ pub fn remedy_line(step: &Step, lang: Lang) -> String {
 }
 
 /// A step as the app shows the selected one: its cause, its evidence, its remedy and gain.
-pub fn step_lines(step: &Step, lang: Lang) -> [String; 3] {
+pub fn step_lines(step: &Step, naming: Naming, lang: Lang) -> [String; 3] {
     [
-        cause_line(step, lang),
+        cause_line(step, naming, lang),
         step.evidence.text(lang),
         remedy_line(step, lang),
     ]
@@ -259,7 +262,7 @@ pub fn diagnose_text(d: &DiagnoseReport, lang: Lang) -> String {
     lines.extend(chain_table(d, lang));
     for (k, s) in d.steps.iter().enumerate() {
         lines.push(String::new());
-        let [cause, evidence, remedy] = step_lines(s, lang);
+        let [cause, evidence, remedy] = step_lines(s, Naming::Id, lang);
         lines.push(format!("{}. {cause}", k + 1));
         lines.push(format!("   {evidence}"));
         lines.push(format!("   {remedy}"));
@@ -557,7 +560,7 @@ mod tests {
             ci95: Some((-0.001, 0.0014)),
             criterion_delta: 4.5,
         };
-        let [cause, evidence, remedy] = step_lines(&step, Lang::En);
+        let [cause, evidence, remedy] = step_lines(&step, Naming::Id, Lang::En);
         assert!(cause.starts_with("drift taken out"), "{cause}");
         assert!(
             evidence.contains("Drift = 0.0002 [-0.001, 0.0014] no longer pays"),
@@ -567,7 +570,7 @@ mod tests {
             remedy.starts_with("Remedy: take the term out again"),
             "{remedy}"
         );
-        let [cause, evidence, remedy] = step_lines(&step, Lang::Pt);
+        let [cause, evidence, remedy] = step_lines(&step, Naming::Id, Lang::Pt);
         assert!(cause.starts_with("drift retirado"), "{cause}");
         assert!(evidence.contains("não compensa"), "{evidence}");
         assert!(remedy.starts_with("Correção: retirar o termo"), "{remedy}");

@@ -13,6 +13,7 @@ use crate::ident::test_causes::{
     TestCause, TestCauseKind, TestEvidence,
 };
 
+use super::ident::Naming;
 use super::{Lang, Localize, Message};
 
 /// `x` with four significant digits.
@@ -38,6 +39,28 @@ crate::phrases! {
         Done => ("What Degrau did", "O que o Degrau fez"),
         NoArtefacts => ("no artefact found", "nenhum artefato encontrado"),
     }
+}
+
+/// A test cause's name: its identifier (`not_at_rest`), or a few words in `lang` ("Not at
+/// rest", "Fora do repouso") short enough to label a span on a plot.
+pub fn test_cause_name(k: TestCauseKind, naming: Naming, lang: Lang) -> &'static str {
+    if naming == Naming::Id {
+        return k.id();
+    }
+    let (en, pt) = match k {
+        TestCauseKind::NotAtRest => ("Not at rest", "Fora do repouso"),
+        TestCauseKind::Disturbance => ("Disturbance", "Perturbação"),
+        TestCauseKind::Nonlinearity => ("Nonlinearity", "Não linearidade"),
+        TestCauseKind::Saturation => ("Saturation", "Saturação"),
+        TestCauseKind::Outliers => ("Outliers", "Valores espúrios"),
+        TestCauseKind::ColouredNoise => ("Coloured noise", "Ruído colorido"),
+        TestCauseKind::Quantisation => ("Quantisation", "Quantização"),
+        TestCauseKind::Sampling => ("Sampling", "Amostragem"),
+        TestCauseKind::SmallStep => ("Small step", "Degrau pequeno"),
+        TestCauseKind::ImperfectStep => ("Imperfect step", "Degrau imperfeito"),
+        TestCauseKind::ClosedLoop => ("Closed loop", "Malha fechada"),
+    };
+    lang.pick(en, pt)
 }
 
 impl Localize for TestCauseKind {
@@ -683,12 +706,16 @@ pub fn remedy(cause: &TestCause, lang: Lang) -> String {
 
 /// A cause as the CLI and the app show it: `id: name`, the evidence (with its interval),
 /// what Degrau did, what to do.
-pub fn cause_lines(c: &TestCause, lang: Lang) -> [String; 4] {
+pub fn cause_lines(c: &TestCause, naming: Naming, lang: Lang) -> [String; 4] {
     let interval = c
         .interval
         .map_or(String::new(), |s| format!(" [{}]", span_words(s, lang)));
     [
-        format!("{}: {}", c.kind.id(), c.kind.text(lang)),
+        match naming {
+            Naming::Id => format!("{}: {}", c.kind.id(), c.kind.text(lang)),
+            // The kind's own words are already its heading.
+            Naming::Words => c.kind.text(lang),
+        },
         format!("{}{interval}", c.evidence.text(lang)),
         format!(
             "{}: {}",
@@ -707,7 +734,7 @@ pub fn section(causes: &[TestCause], lang: Lang) -> Vec<String> {
         lines.push(format!("   {}", TestCausePhrase::NothingFound.get(lang)));
     }
     for (k, c) in causes.iter().enumerate() {
-        let [name, evidence, done, remedy] = cause_lines(c, lang);
+        let [name, evidence, done, remedy] = cause_lines(c, Naming::Id, lang);
         lines.push(format!("{}. {name}", k + 1));
         for l in [evidence, done, remedy] {
             lines.push(format!("   {l}"));
@@ -1070,7 +1097,7 @@ mod tests {
         // strictest of the four rules: Åström and Wittenmark's 0.05 → 1 s).
         assert_eq!(remedy(slow, Lang::En), "Sample faster: every 1 s or less.");
         let rest = &all[0];
-        let [name, evidence, done, remedy] = cause_lines(rest, Lang::En);
+        let [name, evidence, done, remedy] = cause_lines(rest, Naming::Id, Lang::En);
         assert!(name.starts_with("not_at_rest: Not at rest"), "{name}");
         assert!(evidence.contains("moved by 5.2") && evidence.ends_with("[t = 10 … 20 s]"));
         assert!(done.contains("initial transient") && remedy.contains("steady state"));
@@ -1083,7 +1110,7 @@ mod tests {
             .iter()
             .find(|c| c.kind == TestCauseKind::ClosedLoop)
             .unwrap();
-        let [name, evidence, _, remedy] = cause_lines(c, Lang::En);
+        let [name, evidence, _, remedy] = cause_lines(c, Naming::Id, Lang::En);
         assert!(name.starts_with("closed_loop: Closed loop"), "{name}");
         assert!(evidence.contains("98 % of the samples"), "{evidence}");
         assert!(evidence.contains("F = 85.3 with 4 and 1991"), "{evidence}");
@@ -1092,7 +1119,7 @@ mod tests {
             "{evidence}"
         );
         assert!(remedy.contains("Open the loop") && remedy.contains("dither"));
-        let [name, evidence, _, remedy] = cause_lines(c, Lang::Pt);
+        let [name, evidence, _, remedy] = cause_lines(c, Naming::Id, Lang::Pt);
         assert!(name.starts_with("closed_loop: Malha fechada"), "{name}");
         assert!(evidence.contains("F = 85,3 com 4 e 1991"), "{evidence}");
         assert!(evidence.contains("viesado"), "{evidence}");

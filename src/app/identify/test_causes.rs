@@ -11,7 +11,8 @@ use egui_plot::{MarkerShape, PlotPoint, PlotTransform, PlotUi, Points};
 use crate::app::look::Look;
 use crate::ident::test_causes::{TestCause, TestEvidence};
 use crate::text::Localize;
-use crate::text::test_causes::{TestCausePhrase, cause_lines, span_words};
+use crate::text::ident::Naming;
+use crate::text::test_causes::{TestCausePhrase, cause_lines, span_words, test_cause_name};
 
 use super::session::Session;
 
@@ -32,7 +33,7 @@ pub fn section(ui: &mut Ui, session: &Session, look: &Look) {
         ui.label(TestCausePhrase::NothingFound.get(lang));
     }
     for c in causes {
-        let [name, evidence, done, remedy] = cause_lines(c, lang);
+        let [name, evidence, done, remedy] = cause_lines(c, Naming::Words, lang);
         ui.strong(name);
         ui.label(evidence);
         ui.label(done);
@@ -70,7 +71,7 @@ pub fn shade(
         for (a, b) in spans(c) {
             crate::app::plot_span::labelled_span(
                 plot,
-                c.kind.text(look.lang),
+                test_cause_name(c.kind, Naming::Words, look.lang).to_string(),
                 a..=b,
                 fill,
                 [a, top],
@@ -84,7 +85,7 @@ pub fn shade(
                 .filter_map(|&t| super::plot::nearest_point(measured, t))
                 .collect();
             plot.points(
-                Points::new(c.kind.id(), points)
+                Points::new(test_cause_name(c.kind, Naming::Words, look.lang), points)
                     .color(palette.error)
                     .shape(MarkerShape::Cross)
                     .radius(5.0),
@@ -105,7 +106,8 @@ pub fn marks(ui: &mut Ui, session: &Session, transform: &PlotTransform, look: &L
                 continue;
             }
             let rect = Rect::from_x_y_ranges(left..=right, frame.bottom() - 16.0..=frame.bottom());
-            let label = format!("{}: {}", c.kind.id(), span_words((a, b), look.lang));
+            let name = test_cause_name(c.kind, Naming::Words, look.lang);
+            let label = format!("{name}: {}", span_words((a, b), look.lang));
             let response = ui.interact(rect, Id::unique(("test cause span", k, j)), Sense::hover());
             response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Label, true, &label));
             response.on_hover_text(c.evidence.text(look.lang));

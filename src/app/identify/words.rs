@@ -177,14 +177,21 @@ pub fn status(status: &Status, lang: Lang) -> String {
 }
 
 /// What the diagnosis said last (empty: nothing).
+/// A cause named in the student's words.
+fn named(c: Cause, lang: Lang) -> &'static str {
+    crate::text::ident::cause_name(c, crate::text::ident::Naming::Words, lang)
+}
+
 pub fn diagnose_note(note: &DiagnoseNote, lang: Lang) -> String {
     match note {
         DiagnoseNote::None => String::new(),
         DiagnoseNote::RunningLoop => Phrase::RunningLoop.get(lang).to_string(),
         DiagnoseNote::LookingForCause => Phrase::LookingForCause.get(lang).to_string(),
         DiagnoseNote::Verdict(v) => v.map_or(String::new(), |v| v.text(lang)),
-        DiagnoseNote::Cause(c) => format!("{}: {}", c.id(), c.text(lang)),
-        DiagnoseNote::Adequate => format!("none: {}", Cause::None.text(lang)),
+        DiagnoseNote::Cause(c) => format!("{}: {}", named(*c, lang), c.text(lang)),
+        DiagnoseNote::Adequate => {
+            format!("{}: {}", named(Cause::None, lang), Cause::None.text(lang))
+        }
         DiagnoseNote::Cancelled => Phrase::DiagnosisCancelled.get(lang).to_string(),
     }
 }
@@ -208,7 +215,7 @@ pub fn static_gain_line(d: &DiagnoseReport, lang: Lang) -> String {
 
 /// A selected step of the chain: its cause, its evidence, its remedy and what it gained.
 pub fn step_lines(step: &Step, lang: Lang) -> [String; 3] {
-    crate::text::report::step_lines(step, lang)
+    crate::text::report::step_lines(step, crate::text::ident::Naming::Words, lang)
 }
 
 /// An optimiser's name (a proper name, the same in every language).
