@@ -11,7 +11,7 @@ use kit::{load, wait_for};
 use degrau::app::DegrauApp;
 use degrau::app::identify::plot::main_plot_id;
 use egui_kittest::Harness;
-use egui_kittest::kittest::{NodeT, Queryable};
+use egui_kittest::kittest::Queryable;
 
 const SBHS: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
