@@ -213,3 +213,18 @@ fn saving_over_a_file_asks_first_and_a_png_waits_for_the_dialog_to_close() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The closed form speaks the student's language (issue 23, item 9): in Portuguese a dead
+/// time reads "para t ≥ 0,5 (y = 0 antes de 0,5)", its numbers with the decimal comma.
+#[test]
+fn the_closed_form_is_written_in_portuguese() {
+    let mut h = harness(DegrauApp::default());
+    let mut system = h.state().system().clone();
+    system.delay = 0.5;
+    h.state_mut().set_system(system);
+    h.state_mut().saved.lang = degrau::text::Lang::Pt;
+    h.run_steps(3);
+    h.get_by_label_contains("para t ≥ 0,5 (y = 0 antes de 0,5)");
+    assert!(h.query_by_label_contains("for t ≥").is_none());
+    assert!(h.query_by_label_contains("before 0").is_none());
+}

@@ -11,6 +11,7 @@
 
 use super::number::format_number;
 use super::response::StepResponse;
+use crate::text::Lang;
 
 /// How oscillatory terms are written.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -85,8 +86,20 @@ pub fn terms(response: &StepResponse) -> Vec<Term> {
     out
 }
 
-/// `y(t) = …` for a step response.
+/// `y(t) = …` for a step response, in English (the CLI's text and JSON).
 pub fn expression(response: &StepResponse, form: OscillationForm) -> String {
+    expression_in(response, form, Lang::En)
+}
+
+/// `y(t) = …` for a step response, its words in `lang`; in Portuguese the numbers take the
+/// decimal comma and a list of poles is separated by semicolons.
+pub fn expression_in(response: &StepResponse, form: OscillationForm, lang: Lang) -> String {
+    let text = english_numbers(response, form, lang);
+    lang.localize_number(&text)
+}
+
+/// [`expression_in`] with the numbers still written with points.
+fn english_numbers(response: &StepResponse, form: OscillationForm, lang: Lang) -> String {
     let delay = response.delay();
     let var = if delay > 0.0 {
         format!("(t − {})", format_number(delay))
@@ -108,10 +121,14 @@ pub fn expression(response: &StepResponse, form: OscillationForm) -> String {
     if body.is_empty() {
         body.push('0');
     }
-    let (relation, note) = approximation_note(response);
+    let (relation, note) = approximation_note(response, lang);
     if delay > 0.0 {
         let d = format_number(delay);
-        format!("y(t) {relation} {body} for t ≥ {d} (y = 0 before {d}){note}")
+        let after = lang.pick(
+            format!("for t ≥ {d} (y = 0 before {d})"),
+            format!("para t ≥ {d} (y = 0 antes de {d})"),
+        );
+        format!("y(t) {relation} {body} {after}{note}")
     } else {
         format!("y(t) {relation} {body}{note}")
     }
@@ -120,7 +137,7 @@ pub fn expression(response: &StepResponse, form: OscillationForm) -> String {
 /// "=" when the text is the exact form (to far below the digits it prints); "≈" and a note
 /// naming the clusters of distinct poles written as repeated poles at their centres, and
 /// how far that form is from the exact y(t), otherwise.
-fn approximation_note(response: &StepResponse) -> (&'static str, String) {
+fn approximation_note(response: &StepResponse, lang: Lang) -> (&'static str, String) {
     let error = response.repeated_form_error();
     if error <= INVISIBLE_ERROR * response.magnitude_scale() {
         return ("=", String::new());
@@ -131,30 +148,44 @@ fn approximation_note(response: &StepResponse) -> (&'static str, String) {
         .filter(|c| !c.is_repeated())
         .map(|c| {
             let poles: Vec<String> = c.poles().iter().map(|&p| format_root(p)).collect();
-            format!(
-                "the poles {} as a {}-fold pole at {}",
-                poles.join(", "),
-                c.multiplicity,
-                format_root(c.center)
+            let (k, at) = (c.multiplicity, format_root(c.center));
+            lang.pick(
+                format!("the poles {} as a {k}-fold pole at {at}", poles.join(", ")),
+                format!(
+                    "os polos {} como um polo de multiplicidade {k} em {at}",
+                    poles.join("; ")
+                ),
             )
         })
         .collect();
     let size = if error.is_finite() {
-        format!(
-            "differs from the exact y(t) by up to {}",
-            format_number(error)
+        lang.pick(
+            format!(
+                "differs from the exact y(t) by up to {}",
+                format_number(error)
+            ),
+            format!("difere do y(t) exato em até {}", format_number(error)),
         )
     } else {
-        "drifts away from the exact y(t) as t grows".to_string()
+        lang.pick(
+            "drifts away from the exact y(t) as t grows",
+            "afasta-se do y(t) exato à medida que t cresce",
+        )
+        .to_string()
     };
-    (
-        "≈",
+    let note = lang.pick(
         format!(
             " [written with {}; this form {size}, while the curve and the metrics use the \
              exact response]",
             clusters.join(" and ")
         ),
-    )
+        format!(
+            " [escrita com {}; esta forma {size}, enquanto a curva e as métricas usam a \
+             resposta exata]",
+            clusters.join(" e ")
+        ),
+    );
+    ("≈", note)
 }
 
 /// `-1.0002`, `-0.5+3j` with [`format_number`]'s digits.
@@ -341,6 +372,30 @@ mod tests {
 
     fn response(zeros: &[C64], poles: &[C64], k: f64, a: f64) -> StepResponse {
         StepResponse::new(&TransferFunction::from_zpk(zeros, poles, k).unwrap(), a).unwrap()
+    }
+
+    /// The note on clustered poles in Portuguese: its words, the decimal comma, and the
+    /// poles listed with semicolons (a comma would split -1,0001).
+    #[test]
+    fn a_cluster_note_in_portuguese() {
+        let poles: Vec<C64> = (0..5).map(|i| c(-1.0 - 1e-4 * i as f64, 0.0)).collect();
+        let r = response(&[], &poles, 1.0, 1.0);
+        let en = expression_in(&r, OscillationForm::CosSin, Lang::En);
+        let pt = expression_in(&r, OscillationForm::CosSin, Lang::Pt);
+        assert!(
+            en.starts_with("y(t) ≈") && en.contains("the poles -1, -1.0001"),
+            "{en}"
+        );
+        assert!(
+            pt.contains("[escrita com os polos -1; -1,0001; -1,0002"),
+            "{pt}"
+        );
+        assert!(
+            pt.contains("como um polo de multiplicidade 5 em -1,0002"),
+            "{pt}"
+        );
+        assert!(pt.contains("difere do y(t) exato em até"), "{pt}");
+        assert!(!pt.contains('.'), "{pt}");
     }
 
     #[test]

@@ -4,8 +4,9 @@
 //! thresholds change. No drawing here.
 
 use super::state::System;
-use crate::lti::expr::{OscillationForm, expression};
+use crate::lti::expr::{OscillationForm, expression_in};
 use crate::lti::{StepInfo, StepInfoOptions, StepResponse, TransferFunction};
+use crate::text::Lang;
 
 /// Points of the plotted curve.
 pub const CURVE_SAMPLES: usize = 2000;
@@ -22,9 +23,6 @@ pub struct Analysis {
     /// (t, y) samples over [0, horizon].
     pub curve: Vec<[f64; 2]>,
     pub horizon: f64,
-    /// y(t) in cos–sin form and in amplitude–phase form.
-    pub expression: String,
-    pub expression_phase: String,
 }
 
 impl Analysis {
@@ -43,8 +41,6 @@ impl Analysis {
             info: None,
             curve: Vec::new(),
             horizon: 1.0,
-            expression: String::new(),
-            expression_phase: String::new(),
         };
         if out.tf.is_ok() && response.is_none() {
             out.tf = Err(format!(
@@ -67,11 +63,17 @@ impl Analysis {
             out.horizon = horizon;
             out.curve = t.into_iter().zip(y).map(|(t, y)| [t, y]).collect();
             out.info = Some(StepInfo::of_response(&r, &options));
-            out.expression = expression(&r, OscillationForm::CosSin);
-            out.expression_phase = expression(&r, OscillationForm::AmplitudePhase);
             out.response = Some(r);
         }
         out
+    }
+
+    /// y(t) in closed form, in `form` and in `lang`'s words and decimal separator; empty
+    /// without a response (a few microseconds: written when drawn, in the language shown).
+    pub fn expression(&self, form: OscillationForm, lang: Lang) -> String {
+        self.response
+            .as_ref()
+            .map_or(String::new(), |r| expression_in(r, form, lang))
     }
 
     /// Whether this analysis is still current for `system` and `options`.

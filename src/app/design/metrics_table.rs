@@ -4,6 +4,7 @@
 use eframe::egui::{self, Ui};
 
 use crate::app::look::Look;
+use crate::lti::expr::OscillationForm;
 use crate::text::design::Design as P;
 use crate::text::step::{Metric, stability};
 
@@ -56,16 +57,17 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
                     out.push(Command::SetPhaseForm(phase));
                 }
             });
-            let text = if kept.phase_form {
-                &analysis.expression_phase
+            let form = if kept.phase_form {
+                OscillationForm::AmplitudePhase
             } else {
-                &analysis.expression
+                OscillationForm::CosSin
             };
+            let text = analysis.expression(form, lang);
             if text.is_empty() {
                 ui.weak(P::NoSystemShort.get(lang));
             } else {
                 ui.add(
-                    egui::Label::new(egui::RichText::new(text).monospace())
+                    egui::Label::new(egui::RichText::new(&text).monospace())
                         .wrap()
                         .selectable(true),
                 );
