@@ -369,3 +369,27 @@ fn the_previous_curve_follows_the_loop_gain() {
     assert_eq!(h.state().saved.design.feedback.kp, 5.0);
     assert_eq!(h.state().design.ghost.as_ref(), Some(&at_two));
 }
+
+/// One name, one thing (issue 23, item 9): the loop's gain is Kp, the error constants are
+/// the notes' K_p, K_v, K_a; the plot's legend reads in Portuguese word order ("faixa de
+/// ±2 %", not the calque "±2 % faixa").
+#[test]
+fn the_error_constants_and_the_legend_read_as_the_notes_write_them() {
+    let mut h = harness();
+    click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
+    h.get_by_label_contains("error constants of Kp·G: position K_p = ");
+    assert!(h.query_by_label_contains("position Kp =").is_none());
+    h.state_mut().saved.lang = degrau::text::Lang::Pt;
+    h.run_steps(3);
+    h.get_by_label_contains("posição K_p = ");
+    let painted: Vec<String> = kit::painted_texts(&h).into_iter().map(|p| p.0).collect();
+    assert!(painted.iter().any(|t| t == "faixa de ±2 %"), "{painted:?}");
+    assert!(
+        painted.iter().any(|t| t == "passagem por 90 %"),
+        "{painted:?}"
+    );
+    assert!(
+        !painted.iter().any(|t| t.ends_with("% faixa")),
+        "{painted:?}"
+    );
+}

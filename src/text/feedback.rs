@@ -239,10 +239,10 @@ impl Localize for LoopLine {
                 ka,
             } => match lang {
                 Lang::En => format!(
-                    "System type {system_type}; error constants of Kp·G: position Kp = {kp}, velocity Kv = {kv}, acceleration Ka = {ka}"
+                    "System type {system_type}; error constants of Kp·G: position K_p = {kp}, velocity K_v = {kv}, acceleration K_a = {ka}"
                 ),
                 Lang::Pt => format!(
-                    "Tipo do sistema {system_type}; constantes de erro de Kp·G: posição Kp = {kp}, velocidade Kv = {kv}, aceleração Ka = {ka}"
+                    "Tipo do sistema {system_type}; constantes de erro de Kp·G: posição K_p = {kp}, velocidade K_v = {kv}, aceleração K_a = {ka}"
                 ),
             },
             LoopLine::Errors(step, ramp, parabola) => match lang {

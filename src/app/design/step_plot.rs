@@ -406,10 +406,10 @@ pub fn draw_step_markers_in(
     }
     if markers.settling {
         let band = options.settling_threshold * delta.abs();
-        let name = format!(
-            "±{} % {}",
-            pct(options.settling_threshold, lang),
-            P::BandName.get(lang)
+        // Word order is the language's ("faixa de ±2 %", not a calque "±2 % faixa").
+        let name = crate::text::identify::fill(
+            P::BandName.get(lang),
+            &[pct(options.settling_threshold, lang)],
         );
         for y in [y_final - band, y_final + band] {
             plot.hline(
@@ -446,7 +446,8 @@ pub fn draw_step_markers_in(
             egui::Align2::LEFT_TOP,
             color,
         );
-        let crossing = |f: f64| format!("{} % {}", pct(f, lang), P::CrossingName.get(lang));
+        let crossing =
+            |f: f64| crate::text::identify::fill(P::CrossingName.get(lang), &[pct(f, lang)]);
         plot.points(point(&crossing(lo), a, at(lo), color));
         plot.points(point(&crossing(hi), b, at(hi), color));
     }
