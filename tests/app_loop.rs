@@ -393,3 +393,30 @@ fn the_error_constants_and_the_legend_read_as_the_notes_write_them() {
         "{painted:?}"
     );
 }
+
+/// Typed coefficients stay as the student typed them (issue 23, item 14: "7.5 19 8.5 1"
+/// was rewritten "1 2.5333333 …", monic); the system is the one typed, and a later change
+/// of the system writes the fields afresh.
+#[test]
+fn typed_coefficients_stay_as_typed() {
+    let mut h = harness();
+    kit::type_number(&mut h, "num", 0, "3");
+    kit::type_number(&mut h, "den", 0, "7.5 19 8.5 1");
+    h.run_steps(3);
+    let value = |h: &Harness<'_, DegrauApp>, label: &str| {
+        h.get_all_by_role(egui::accesskit::Role::TextInput)
+            .find(|n| n.accesskit_node().label().as_deref() == Some(label))
+            .and_then(|n| n.value())
+            .unwrap_or_default()
+    };
+    assert_eq!(value(&h, "den"), "7.5 19 8.5 1");
+    assert_eq!(value(&h, "num"), "3");
+    let g = h.state().system().transfer_function().unwrap();
+    assert!((g.dc_gain() - 3.0).abs() < 1e-12, "G(0) = 3/1");
+    click(&mut h, "Undo");
+    assert_ne!(
+        value(&h, "den"),
+        "7.5 19 8.5 1",
+        "the undone system's own coefficients"
+    );
+}

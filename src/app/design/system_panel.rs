@@ -93,6 +93,9 @@ struct CoefficientBuffer {
     /// The coefficients the texts were written from.
     source: Option<(Vec<f64>, Vec<f64>)>,
     editing: bool,
+    /// The texts were just committed: they stay as the student typed them (not rewritten
+    /// as the system's monic coefficients) until the system changes otherwise.
+    typed: bool,
     error: Option<String>,
 }
 
@@ -134,7 +137,9 @@ fn coefficient_fields(ui: &mut Ui, session: &Session, system: &System, lang: Lan
         .ok()
         .map(|tf| (tf.num(), tf.den()));
     if !buffer.editing && buffer.source != current {
-        if let Some((num, den)) = &current {
+        if buffer.typed {
+            buffer.typed = false;
+        } else if let Some((num, den)) = &current {
             let list = |c: &[f64]| {
                 c.iter()
                     .map(|x| lang.num(*x, 8))
@@ -175,6 +180,7 @@ fn coefficient_fields(ui: &mut Ui, session: &Session, system: &System, lang: Lan
                     Some(s) if s.check().is_ok() && s.placement().is_ok() => {
                         buffer.error = None;
                         buffer.source = None;
+                        buffer.typed = true;
                         out.push(Command::SetCoefficients { num, den });
                     }
                     _ => {
