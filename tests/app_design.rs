@@ -228,3 +228,30 @@ fn the_closed_form_is_written_in_portuguese() {
     assert!(h.query_by_label_contains("for t ≥").is_none());
     assert!(h.query_by_label_contains("before 0").is_none());
 }
+
+/// G(s) with a dead time is drawn as the fraction times the delay (issue 23, item 7: the
+/// delay sat after the denominator, "5 / s + 2 · e^(−0.5 s)"), its numbers with the
+/// language's separator (item 9).
+#[test]
+fn a_dead_time_multiplies_the_whole_fraction() {
+    let mut h = harness(DegrauApp::default());
+    h.state_mut().set_system(System {
+        zeros: vec![],
+        poles: vec![degrau::app::design::state::Root::real(-2.0)],
+        gain: 5.0,
+        delay: 0.5,
+        ..System::default()
+    });
+    h.state_mut().saved.lang = degrau::text::Lang::Pt;
+    h.run_steps(3);
+    let g = h
+        .get_all_by_role(egui::accesskit::Role::Label)
+        .filter_map(|n| n.value())
+        .find(|v| v.contains('─'))
+        .expect("G(s) as a fraction");
+    let lines: Vec<&str> = g.lines().collect();
+    assert_eq!(lines.len(), 3, "{g}");
+    assert_eq!(lines[0].trim(), "5", "{g}");
+    assert!(lines[1].ends_with("─ · e^(−0,5 s)"), "{g}");
+    assert_eq!(lines[2].trim(), "s + 2", "{g}");
+}

@@ -375,6 +375,22 @@ fn root_row(
     out
 }
 
+/// num over den as three monospace lines, each centred over the bar, and a factor after
+/// the fraction on the bar's line (`e^(−0.5 s)` multiplies the whole fraction, not den).
+pub fn fraction_text(num: &str, den: &str, factor: &str) -> String {
+    let width = num.chars().count().max(den.chars().count()).max(1);
+    let centred = |text: &str| {
+        let pad = (width - text.chars().count().min(width)) / 2;
+        format!("{}{text}", " ".repeat(pad))
+    };
+    format!(
+        "{}\n{}{factor}\n{}",
+        centred(num),
+        "─".repeat(width),
+        centred(den)
+    )
+}
+
 /// A real part left of the existing roots, so a new root does not sit on another.
 fn next_free_real(roots: &[Root]) -> f64 {
     let leftmost = roots.iter().map(|r| r.re).fold(0.0, f64::min);
@@ -385,16 +401,15 @@ fn transfer_function(ui: &mut Ui, session: &Session, lang: Lang) {
     ui.strong("G(s)");
     match &session.analysis.tf {
         Ok(tf) => {
-            let num = format_poly(&tf.num());
-            let den = format_poly(&tf.den());
+            let num = lang.localize_number(&format_poly(&tf.num()));
+            let den = lang.localize_number(&format_poly(&tf.den()));
             let delay = if tf.delay() > 0.0 {
                 format!(" · e^(−{} s)", lang.num(tf.delay(), 6))
             } else {
                 String::new()
             };
-            let bar = "─".repeat(num.chars().count().max(den.chars().count()).clamp(1, 40));
             ui.add(
-                egui::Label::new(RichText::new(format!("{num}\n{bar}\n{den}{delay}")).monospace())
+                egui::Label::new(RichText::new(fraction_text(&num, &den, &delay)).monospace())
                     .wrap(),
             );
             let dc = tf.dc_gain();
