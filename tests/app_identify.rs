@@ -316,7 +316,7 @@ fn the_input_before_the_record_finds_a_step_at_the_first_sample() {
     h.state_mut().ident.settings.y_col = "T1".into();
     h.state_mut().ident.settings.u_col = "Q1".into();
     load(&mut h, DROPOUTS);
-    h.get_by_label_contains("the step could not be found");
+    h.get_by_label_contains("The step could not be found");
     h.state_mut().ident.settings.initial_input = "0".into();
     load(&mut h, DROPOUTS);
     let e = h.state().ident.loaded.as_ref().unwrap().experiment.clone();
@@ -714,4 +714,40 @@ fn a_short_rest_is_said_as_what_it_is() {
     h.state_mut().saved.lang = degrau::text::Lang::Pt;
     h.run_steps(2);
     h.get_by_label_contains("Menos de 20 amostras antes da primeira");
+}
+
+/// What the panel says follows what is drawn (issue 23, item 14): a chain row chosen
+/// replots it and the table is that row's ("Fitted P1", not the last fit's structure);
+/// fitted values are not labelled "guess"; the load message's sentences each end with a
+/// full stop.
+#[test]
+fn the_table_and_the_fields_say_what_is_drawn() {
+    let mut h = tclab_p1();
+    let message = h
+        .get_all_by_role(egui::accesskit::Role::Label)
+        .filter_map(|n| n.value())
+        .find(|v| v.starts_with("Loaded 801 samples"))
+        .expect("the load message");
+    assert!(!message.contains(" read as"), "{message}");
+    assert!(message.ends_with('.'), "{message}");
+    h.get_by_label("Kp guess");
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| h.query_by_label("Fitted P1").is_some());
+    h.get_by_label("Kp fitted (the next fit starts here)");
+    assert!(h.query_by_label("Kp guess").is_none());
+    h.get_by_label("Run the whole loop").click_accesskit();
+    h.run_steps(1);
+    wait_for(&mut h, |h| !h.state().ident.is_diagnosing());
+    let d = h.state().ident.diagnosis.clone().expect("a chain");
+    let last = d.final_fit.model.structure;
+    assert_ne!(last.code(), "P1", "the chain extends P1 on this heater");
+    h.get_by_label(&d.start.model.structure.label())
+        .click_accesskit();
+    h.run_steps(2);
+    h.get_by_label("Fitted P1");
+    assert!(
+        h.query_by_label(&format!("Fitted {}", last.code()))
+            .is_none()
+    );
 }

@@ -103,6 +103,7 @@ crate::phrases! {
         AutoGuess => ("Automatic guess", "Estimativa inicial automática"),
         AutoGuessHelp => ("Read the guesses off the curve again", "Lê de novo as estimativas na curva"),
         GuessOf => ("{} guess", "{} (estimativa inicial)"),
+        FittedStartOf => ("{} fitted (the next fit starts here)", "{} ajustado (o próximo ajuste parte daqui)"),
         Multistart => ("multi-start", "vários inícios"),
         MultistartHelp => (
             "Run from the guess and from spread-out starts, keep the best result that is not an alias",

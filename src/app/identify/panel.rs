@@ -398,7 +398,9 @@ fn operating_point(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Co
                 // Why it is estimated: no sample before the step, too few before the first
                 // of several changes, or the output still moved.
                 let text = match session.operating_point_fact() {
-                    Some(fact @ OperatingPoint::Estimated { .. }) => capitalised(&fact.text(lang)),
+                    Some(fact @ OperatingPoint::Estimated { .. }) => {
+                        words::sentence(&fact.text(lang))
+                    }
                     _ => Phrase::NoSampleBefore.get(lang).to_string(),
                 };
                 ui.label(RichText::new(text).color(look.palette.warning));
@@ -455,9 +457,15 @@ fn model_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Comm
         }
     });
     let data = loaded.data.as_ref().ok();
+    // After a fit the fields hold its values, where the next fit starts: not a "guess".
+    let named = if session.guess_is_fitted() {
+        Phrase::FittedStartOf
+    } else {
+        Phrase::GuessOf
+    };
     for p in loaded.structure.params() {
         let (min, max) = data.map_or((f64::NEG_INFINITY, f64::INFINITY), |d| bounds(p, d));
-        let label = Phrase::GuessOf.with(lang, &[p.name().to_string()]);
+        let label = named.with(lang, &[p.name().to_string()]);
         let field = NumberField::new(&label, loaded.guess.get(p))
             .limits(Limits {
                 min,
@@ -533,7 +541,8 @@ fn fit_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Comman
 }
 
 fn results(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
-    let Some(report) = session.report.as_ref() else {
+    // The fit drawn: a chain row chosen replots that row, and its table follows.
+    let Some(report) = session.shown_report().or(session.report.as_ref()) else {
         return;
     };
     let lang = look.lang;
@@ -661,15 +670,6 @@ fn per_step_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<C
         .map_or(0.0, |(_, d)| d.sampling_period());
     for line in words::agreement_lines(report, fits, instant_step, lang) {
         ui.label(line);
-    }
-}
-
-/// `text` with its first letter upper-case (a fact said mid-sentence elsewhere, here alone).
-fn capitalised(text: &str) -> String {
-    let mut chars = text.chars();
-    match chars.next() {
-        Some(first) => first.to_uppercase().chain(chars).collect::<String>() + ".",
-        None => String::new(),
     }
 }
 

@@ -648,6 +648,25 @@ impl Session {
         }
     }
 
+    /// The fit whose model is shown: the row of the diagnosis chain chosen, else the last
+    /// fit while it still describes what is shown.
+    pub fn shown_report(&self) -> Option<&FitReport> {
+        match (self.shown(), &self.diagnosis) {
+            (Some((_, Shown::ChainRow(k))), Some(d)) => d.rows().get(k).copied(),
+            (Some((_, Shown::Fitted)), _) => self.report.as_ref(),
+            _ => None,
+        }
+    }
+
+    /// Whether the values in the model's fields are a fit's (the next fit starts from them).
+    pub fn guess_is_fitted(&self) -> bool {
+        let Some(l) = self.loaded.as_ref() else {
+            return false;
+        };
+        self.shown_report()
+            .is_some_and(|r| r.model.values == l.guess && r.model.structure == l.structure)
+    }
+
     fn guess_model(&self) -> Option<Model> {
         let l = self.loaded.as_ref()?;
         Some(Model::new(l.structure, l.guess))
@@ -763,7 +782,7 @@ impl Session {
 
     /// The fitted model as a transfer function and the step it was fitted to.
     pub fn fitted_transfer_function(&self) -> Option<(crate::lti::TransferFunction, f64)> {
-        let report = self.report.as_ref()?;
+        let report = self.shown_report()?;
         let du = self.fitted.as_ref().map_or(1.0, |f| f.1.input.du());
         Some((report.model.transfer_function().ok()?, du))
     }

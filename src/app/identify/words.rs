@@ -54,6 +54,21 @@ fn source_name(source: &Source, lang: Lang) -> String {
     }
 }
 
+/// `text` as a sentence of its own: its first letter upper-case and a full stop at its end
+/// (a fact said mid-sentence elsewhere, here alone; sentences side by side ran together).
+pub fn sentence(text: &str) -> String {
+    let text = text.trim();
+    let mut chars = text.chars();
+    let Some(first) = chars.next() else {
+        return String::new();
+    };
+    let mut out: String = first.to_uppercase().chain(chars).collect();
+    if !out.ends_with(['.', '!', '?', ':']) {
+        out.push('.');
+    }
+    out
+}
+
 /// The last load's message: (is an error, text).
 pub fn load_message(message: &LoadMessage, lang: Lang) -> (bool, String) {
     match message {
@@ -81,6 +96,7 @@ pub fn load_message(message: &LoadMessage, lang: Lang) -> (bool, String) {
             if !kept.is_empty() {
                 out.push(Phrase::KeptChoices.with(lang, &[choices(kept, lang)]));
             }
+            let out: Vec<String> = out.iter().map(|s| sentence(s)).collect();
             (false, out.join(" "))
         }
         LoadMessage::Example {
