@@ -70,7 +70,9 @@ impl Palette {
         let rgb = Color32::from_rgb;
         Self {
             main: pick(rgb(120, 190, 255), rgb(20, 90, 200)),
-            compare: pick(rgb(255, 170, 90), rgb(210, 100, 0)),
+            // Purple: the fitted model's and the closed loop's orange is another curve on
+            // the same plots (the notes' example drew two models in one orange).
+            compare: pick(rgb(205, 140, 255), rgb(130, 50, 190)),
             marker: pick(rgb(240, 200, 80), rgb(170, 110, 0)),
             ghost: visuals.weak_text_color().gamma_multiply(0.6),
             error: pick(rgb(255, 110, 90), rgb(200, 40, 30)),
@@ -136,10 +138,22 @@ mod tests {
             let curves = [p.main, p.compare, p.marker, p.data, p.model];
             for (i, a) in curves.iter().enumerate() {
                 for b in &curves[i + 1..] {
-                    assert_ne!(a, b, "dark = {dark}");
+                    // Told apart at a glance: the "redmean" colour distance (0 to ~765),
+                    // not merely unequal ((255, 170, 90) and (255, 150, 80) were both orange).
+                    assert!(distance(*a, *b) > 80.0, "{a:?} {b:?}, dark = {dark}");
                 }
             }
         }
+    }
+
+    /// The "redmean" approximation of perceived colour difference.
+    fn distance(a: Color32, b: Color32) -> f64 {
+        let (r1, g1, b1) = (a.r() as f64, a.g() as f64, a.b() as f64);
+        let (r2, g2, b2) = (b.r() as f64, b.g() as f64, b.b() as f64);
+        let mean = (r1 + r2) / 2.0;
+        let (dr, dg, db) = (r1 - r2, g1 - g2, b1 - b2);
+        ((2.0 + mean / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - mean) / 256.0) * db * db)
+            .sqrt()
     }
 
     #[test]
