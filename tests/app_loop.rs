@@ -420,3 +420,46 @@ fn typed_coefficients_stay_as_typed() {
         "the undone system's own coefficients"
     );
 }
+
+/// With the loop closed, the metrics and the closed form describe the closed loop beside
+/// the open loop (issue 23, item 8: "does not settle: it ramps (integrator)" stood alone
+/// beside a closed-loop curve with 10 % overshoot).
+#[test]
+fn the_closed_loop_has_its_own_metrics_and_closed_form() {
+    let mut h = harness();
+    kit::type_number(&mut h, "num", 0, "1");
+    kit::type_number(&mut h, "den", 0, "1 2 0");
+    click(&mut h, "Specs");
+    click(&mut h, "overshoot");
+    click(&mut h, "Find K");
+    let closed = h
+        .state()
+        .design
+        .feedback
+        .closed
+        .clone()
+        .expect("the closed loop");
+    let os = closed
+        .info
+        .as_ref()
+        .and_then(|i| i.overshoot)
+        .expect("an overshoot");
+    assert!((os - 10.0).abs() < 1e-6, "{os}");
+    // The column's heading, beside the curve's legend entry.
+    assert!(h.query_all_by_label("closed loop y(t)").count() >= 2);
+    let cell = degrau::app::design::metrics_table::cell_text(
+        &closed,
+        degrau::text::step::Metric::Overshoot,
+        degrau::text::Lang::En,
+    );
+    assert!(h.query_all_by_label(&cell).count() >= 1, "{cell}");
+    h.get_by_label_contains("closed loop y(t): y(t) = ");
+    // The open loop's own column still says why it has no overshoot: it ramps.
+    let open = degrau::app::design::metrics_table::cell_text(
+        &h.state().design.analysis,
+        degrau::text::step::Metric::Overshoot,
+        degrau::text::Lang::En,
+    );
+    assert!(h.query_all_by_label(&open).count() >= 1, "{open}");
+    assert_ne!(open, cell);
+}

@@ -26,14 +26,20 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
     let lang = look.lang;
     let analysis = &session.analysis;
     let compare = session.compare(kept);
+    // With the loop closed, the closed loop is described beside the open loop: a table and
+    // a closed form of the open loop alone said "it ramps" beside a curve that settles.
+    let closed = closed_loop(session, kept, lang);
     let mut out = Vec::new();
     ui.horizontal_top(|ui| {
         egui::Grid::new("metrics")
             .striped(true)
-            .num_columns(3)
+            .num_columns(4)
             .show(ui, |ui| {
                 ui.strong(P::MetricHeading.get(lang));
                 ui.strong(P::CurrentColumn.get(lang));
+                if let Some((name, _)) = &closed {
+                    ui.strong(name);
+                }
                 if let Some((name, _)) = compare {
                     ui.strong(format!("B: {}", super::presets::compare_name(name, lang)));
                 }
@@ -42,6 +48,9 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
                     ui.label(metric.name(lang))
                         .on_hover_text(metric.definition(&analysis.options, lang));
                     ui.label(cell_text(analysis, metric, lang));
+                    if let Some((_, c)) = &closed {
+                        ui.label(cell_text(c, metric, lang));
+                    }
                     if let Some((_, b)) = compare {
                         ui.label(cell_text(b, metric, lang));
                     }
@@ -66,11 +75,17 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
             if text.is_empty() {
                 ui.weak(P::NoSystemShort.get(lang));
             } else {
-                ui.add(
-                    egui::Label::new(egui::RichText::new(&text).monospace())
-                        .wrap()
-                        .selectable(true),
+                closed_form(
+                    ui,
+                    &text,
+                    closed.as_ref().map(|_| P::CurrentColumn.get(lang)),
                 );
+            }
+            if let Some((name, c)) = &closed {
+                let text = c.expression(form, lang);
+                if !text.is_empty() {
+                    closed_form(ui, &text, Some(name));
+                }
             }
             if let Ok(tf) = analysis.tf.as_ref() {
                 let dc = tf.dc_gain();
@@ -93,6 +108,35 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
         });
     });
     out
+}
+
+/// The closed loop's name and analysis, when the loop is closed and has one.
+fn closed_loop<'a>(
+    session: &'a Session,
+    kept: &Kept,
+    lang: crate::text::Lang,
+) -> Option<(String, &'a Analysis)> {
+    let c = session
+        .feedback
+        .closed
+        .as_ref()
+        .filter(|_| kept.feedback.closed)?;
+    let approximate = session.feedback.approximant.is_some();
+    let name = crate::text::feedback::Loop::closed_loop_curve(approximate).get(lang);
+    Some((name.to_string(), c))
+}
+
+/// One closed form, selectable, after its name when there are two.
+fn closed_form(ui: &mut Ui, text: &str, name: Option<&str>) {
+    let text = match name {
+        Some(name) => format!("{name}: {text}"),
+        None => text.to_string(),
+    };
+    ui.add(
+        egui::Label::new(egui::RichText::new(text).monospace())
+            .wrap()
+            .selectable(true),
+    );
 }
 
 #[cfg(test)]
