@@ -255,3 +255,28 @@ fn a_dead_time_multiplies_the_whole_fraction() {
     assert!(lines[1].ends_with("─ · e^(−0,5 s)"), "{g}");
     assert_eq!(lines[2].trim(), "s + 2", "{g}");
 }
+
+/// "Save step plot as PNG" crops to the plot with its title, axes and ticks (issue 23,
+/// item 15: the plot's frame alone had none of them).
+#[test]
+fn the_plot_region_holds_its_title_axes_and_ticks() {
+    let h = harness(DegrauApp::default());
+    let region = h.state().plot_rect().expect("the plot was drawn");
+    let painted = kit::painted_texts(&h);
+    for text in ["Step response y(t), A = 2", "t (s)", "y(t)"] {
+        let (_, rect) = painted
+            .iter()
+            .find(|(t, _)| t == text)
+            .unwrap_or_else(|| panic!("{text:?} not painted"));
+        assert!(
+            region.expand(0.5).contains_rect(*rect),
+            "{text:?} {rect:?} outside {region:?}"
+        );
+    }
+    // A tick label of each axis too.
+    let ticks = painted
+        .iter()
+        .filter(|(t, r)| t.parse::<f64>().is_ok() && region.contains_rect(*r))
+        .count();
+    assert!(ticks >= 4, "{ticks} tick labels inside");
+}

@@ -307,9 +307,15 @@ impl ExportState {
         let sender = self.results.0.clone();
         let repaint = ctx.clone();
         ctx.request_screenshot(move |image: Arc<ColorImage>| {
-            let cropped = match region {
-                Some(r) => image.region(&r, Some(pixels_per_point)),
-                None => (*image).clone(),
+            // Within the image: a region past its edge would index beyond its pixels.
+            let [w, h] = image.size;
+            let whole = Rect::from_min_size(
+                egui::Pos2::ZERO,
+                egui::vec2(w as f32, h as f32) / pixels_per_point,
+            );
+            let cropped = match region.map(|r| r.intersect(whole)) {
+                Some(r) if r.is_positive() => image.region(&r, Some(pixels_per_point)),
+                _ => (*image).clone(),
             };
             let outcome = match save_png(&path, &cropped) {
                 Ok(()) => Outcome::SavedPng(path),

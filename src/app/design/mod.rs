@@ -95,9 +95,14 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
     commands.extend(more);
     Shown {
         commands,
-        plot_rect: Some(plot_rect),
+        // A margin for the rotated y-axis label, which egui_plot paints a few points
+        // outside the area it takes.
+        plot_rect: Some(plot_rect.expand(PNG_MARGIN)),
     }
 }
+
+/// Points kept around the step plot's area in its PNG.
+const PNG_MARGIN: f32 = 8.0;
 
 fn splane_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
     let lang = look.lang;

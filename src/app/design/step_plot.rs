@@ -221,7 +221,10 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
     // current curves' own, frame after frame; kept with the plot as egui_plot keeps its own.
     let navigated_id = ui.scope_id().with("step plot navigated");
     let navigated: bool = ui.data(|d| d.get_temp(navigated_id)).unwrap_or(false);
-    ui.scope(|ui| {
+    // The plot's scope holds its title, its axes and ticks: what "Save step plot as PNG"
+    // crops to (the plot frame alone had no axes, ticks or title).
+    let scoped = ui.scope(|ui| {
+        ui.label(egui::RichText::new(plot_title(analysis, lang)).strong());
         let font = FontId::proportional(PLOT_TEXT);
         ui.style_mut()
             .text_styles
@@ -329,9 +332,22 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
         response
             .response
             .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
-        response.response.rect
-    })
-    .inner
+    });
+    scoped.response.rect
+}
+
+/// "Step response y(t), A = 2": what the plot shows, above it.
+fn plot_title(analysis: &Analysis, lang: crate::text::Lang) -> String {
+    let name = P::PlotName.get(lang);
+    let mut chars = name.chars();
+    let name: String = chars
+        .next()
+        .map(|c| c.to_uppercase().chain(chars).collect())
+        .unwrap_or_default();
+    format!(
+        "{name} y(t), A = {}",
+        lang.num(analysis.system.amplitude, 6)
+    )
 }
 
 fn draw_markers(
