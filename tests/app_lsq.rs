@@ -371,3 +371,34 @@ fn a_prbs_used_as_the_record_takes_no_setting_of_the_last_record() {
         "no step invented before the record"
     );
 }
+
+/// A PRBS of levels 0/1 through a P1D of gain 2 (the designer's default) gives an output
+/// between Y0 = 0 and 2, as a test started at rest at the low level (issue 23, item 13: it
+/// ran from −1.7 to 0, measured from the first, high, bit).
+#[test]
+fn a_prbs_output_starts_from_rest_at_its_low_level() {
+    let mut h = harness();
+    h.get_by_label("Least squares on samples").click();
+    h.run_steps(2);
+    h.get_by_label("PRBS test").click();
+    h.run_steps(2);
+    let settings = PrbsSettings {
+        noise_percent: 0.0,
+        ..PrbsSettings::default()
+    };
+    apply(&mut h, Command::SetPrbs(settings));
+    h.run_steps(2);
+    let record = match &h.state().lsq.designed {
+        Some(Ok(d)) => d.record.clone(),
+        other => panic!("no PRBS designed: {other:?}"),
+    };
+    assert_eq!(record.u[0], 1.0, "this seed's first bit is high");
+    let (lo, hi) = record
+        .y
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| {
+            (a.min(y), b.max(y))
+        });
+    assert!(lo >= -1e-12 && hi <= 2.0 + 1e-12, "y from {lo} to {hi}");
+    assert!(hi > 1.0, "the output rises with the high bits: {hi}");
+}

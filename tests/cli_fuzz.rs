@@ -1449,12 +1449,15 @@ impl Case for PrbsCase {
     }
 }
 
-/// y = Y0 + Kp·Σ Δu_j·(1 − e^{−(t − t_j − Td)/Tp1}) over the input's changes (the input
-/// before the record at its first value), to 1e-9 of |Y0| and the largest deviation, plus
+/// y = Y0 + Kp·(u₀ − low) + Kp·Σ Δu_j·(1 − e^{−(t − t_j − Td)/Tp1}) over the input's
+/// changes (at rest at the first sample, Y0 the output at rest at the lower level), to
+/// 1e-9 of |Y0| and the largest deviation, plus
 /// 16 ulps times Tp1/h. Left out below that: the core's step response loses digits as
 /// ε·τ/t at t ≪ τ (1 − e^{−t/τ} as a difference; at Tp1 = 1e10 samples, 1.8000011e-12 for
 /// 1.7999999999e-12; reported).
 fn check_p1d(m: &P1d, time: &[f64], u: &[f64], y: &[f64], at: &str) -> Outcome {
+    let low = u.iter().copied().fold(f64::INFINITY, f64::min);
+    let rest = m.kp * (u.first().copied().unwrap_or(low) - low);
     let changes: Vec<(f64, f64)> = (1..u.len())
         .filter(|&j| u[j] != u[j - 1])
         .map(|j| (time[j], u[j] - u[j - 1]))
@@ -1467,7 +1470,7 @@ fn check_p1d(m: &P1d, time: &[f64], u: &[f64], y: &[f64], at: &str) -> Outcome {
                 .filter(|(tj, _)| t - tj - m.td > 0.0)
                 .map(|(tj, du)| du * -(-(t - tj - m.td) / m.tp1).exp_m1())
                 .sum();
-            m.y0 + m.kp * moved
+            m.y0 + rest + m.kp * moved
         })
         .collect();
     let size = want.iter().fold(m.y0.abs(), |s, w| s.max((w - m.y0).abs()));

@@ -102,7 +102,9 @@ fn arx_recovers_the_exact_zoh_coefficients_far_from_zero() {
     close(&fit.model.b, exact.b(), 1e-9, "b");
     assert!(fit.scores.fit_percent_prediction > 100.0 - 1e-7);
     assert!(fit.scores.fit_percent_simulation > 100.0 - 1e-7);
-    assert!((fit.model.y0 - 250.0).abs() < 1e-12 && fit.model.u0 == u[0]);
+    // At rest at the first sample: Y0 is the output at the lower level, 40.
+    let at_rest = 250.0 + 1.8 * (u[0] - 40.0);
+    assert!((fit.model.y0 - at_rest).abs() < 1e-12 * at_rest && fit.model.u0 == u[0]);
     // The same with a constant regressor instead of the operating point.
     let c = arx(&rec.time, &rec.u, &rec.y, orders, Offset::Constant).unwrap();
     close(&c.model.a, exact.a(), 1e-8, "a (constant)");

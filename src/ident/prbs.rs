@@ -198,9 +198,11 @@ pub struct Record {
 }
 
 /// The response of `model` to the input `u` sampled every `ts` seconds (held between
-/// samples; the model at rest at its operating point Y0 before the first sample, the input
-/// at `u[0]` before it), with white Gaussian noise of standard deviation `noise` (output
-/// units) from the seed `seed`.
+/// samples), at rest before the first sample with the input at `u[0]`, and Y0 the output
+/// at rest at the input's lower level: levels 0/1 through a gain of 2 give an output
+/// between Y0 and Y0 + 2 whichever the first bit (measured from a first high bit it ran
+/// from −2 to 0). An integrating model has no rest but at its Y0. With white Gaussian noise
+/// of standard deviation `noise` (output units) from the seed `seed`.
 pub fn simulate_record(
     model: &Model,
     u: &[f64],
@@ -216,6 +218,12 @@ pub fn simulate_record(
         Some(input) => model.simulate(&input, &time).map_err(PrbsError::Model)?,
         None => vec![model.get(super::models::Param::Y0); u.len()],
     };
+    let low = u.iter().copied().fold(f64::INFINITY, f64::min);
+    let gain = model.transfer_function().map_or(f64::NAN, |g| g.dc_gain());
+    let rest = gain * (u[0] - low);
+    if rest.is_finite() && rest != 0.0 {
+        y.iter_mut().for_each(|v| *v += rest);
+    }
     let mut rng = Lcg(seed);
     if noise > 0.0 {
         for v in &mut y {
