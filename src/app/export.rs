@@ -201,11 +201,16 @@ impl ExportState {
             self.take_png(ctx, figure, path, plot_rect);
             return;
         }
+        // A closed window is not shown at all: egui keeps showing a window whose `open` is
+        // false until its fade-out animation ends (at full opacity with `fade_out(false)`),
+        // which put the dialog, "Taking the screenshot…", into "Save window as PNG".
+        if !self.open {
+            return;
+        }
         let mut open = self.open;
         egui::Window::new(T::ExportTitle.get(lang))
             .open(&mut open)
             .resizable(false)
-            .fade_out(false)
             .show(ctx, |ui| {
                 self.contents(ui, curve, compare, lang);
             });

@@ -145,9 +145,14 @@ impl PrbsSettings {
                 let tf = design.ok_or(DesignError::NoDesignSystem)?;
                 let h = c2d(tf, self.ts).map_err(DesignError::Discrete)?;
                 let du: Vec<f64> = u.iter().map(|v| v - u[0]).collect();
+                // At rest at the first sample, 0 the output at rest at the lower level, as
+                // a procest model's record ([`prbs::simulate_record`]).
+                let low = u.iter().copied().fold(f64::INFINITY, f64::min);
+                let rest = tf.dc_gain() * (u[0] - low);
+                let rest = if rest.is_finite() { rest } else { 0.0 };
                 Record {
                     time: (0..u.len()).map(|k| k as f64 * self.ts).collect(),
-                    y: h.simulate(&du),
+                    y: h.simulate(&du).into_iter().map(|y| y + rest).collect(),
                     u,
                 }
             }
