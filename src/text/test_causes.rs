@@ -456,6 +456,7 @@ impl Localize for TestEvidence {
                 broken,
                 per_sample,
                 noise,
+                ..
             } => {
                 let h = n4(lang, *ts);
                 let rules: Vec<String> = broken.iter().map(|c| rule_words(c, lang)).collect();
@@ -591,8 +592,15 @@ impl Localize for Handling {
 }
 
 /// The sampling period the broken rules allow, on the side they were broken: the largest
-/// h all of them allow when too slow, the smallest when too fast (s).
-fn advised_period(ts: f64, too_slow: bool, broken: &[RuleCheck]) -> Option<f64> {
+/// h all of them allow when too slow, the smallest when too fast (s); none when too fast and
+/// that h breaks a rule's upper bound (`ceiling`: the rules disagree for this model, so no
+/// period meets them all; "every 23.71 s or more" for a time constant of 11.4 s).
+fn advised_period(
+    ts: f64,
+    too_slow: bool,
+    broken: &[RuleCheck],
+    ceiling: Option<f64>,
+) -> Option<f64> {
     let limits = broken.iter().filter_map(|c| {
         let bound = if too_slow { c.high } else { c.low }?;
         (c.value > 0.0).then(|| ts * bound / c.value)
@@ -600,7 +608,9 @@ fn advised_period(ts: f64, too_slow: bool, broken: &[RuleCheck]) -> Option<f64> 
     if too_slow {
         limits.reduce(f64::min)
     } else {
-        limits.reduce(f64::max)
+        limits
+            .reduce(f64::max)
+            .filter(|h| ceiling.is_none_or(|c| *h <= c))
     }
 }
 
@@ -614,10 +624,11 @@ pub fn remedy(cause: &TestCause, lang: Lang) -> String {
                 ts,
                 too_slow,
                 broken,
+                ceiling,
                 ..
             },
         ) => {
-            let h = advised_period(*ts, *too_slow, broken).map(|h| n4(lang, h));
+            let h = advised_period(*ts, *too_slow, broken, *ceiling).map(|h| n4(lang, h));
             match (too_slow, h) {
                 (true, Some(h)) => lang.pick(
                     format!("Sample faster: every {h} s or less."),
@@ -916,6 +927,7 @@ pub fn examples() -> Vec<TestCause> {
                 ],
                 per_sample: 3.0,
                 noise: 0.1,
+                ceiling: None,
             },
             Handling::Reported,
         ),
@@ -932,6 +944,7 @@ pub fn examples() -> Vec<TestCause> {
                 )],
                 per_sample: 0.03,
                 noise: 0.24,
+                ceiling: Some(1.0),
             },
             Handling::Reported,
         ),
@@ -1021,6 +1034,38 @@ pub fn messages() -> Vec<Message> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Sampled too fast for Isermann's rule (h ≥ t_s/15) on a model whose slowest lag asks
+    /// for h ≤ τ/10: the rules disagree, and no period is advised that breaks the other
+    /// (issue 23, item 13: "every 23.71 s or more" for an 11.4 s time constant).
+    #[test]
+    fn no_period_is_advised_beyond_another_rules_bound() {
+        let settling = RuleCheck {
+            rule: SamplingRule::SettlingRatio,
+            value: 0.5 / 355.0,
+            low: Some(1.0 / 15.0),
+            high: Some(1.0 / 6.0),
+        };
+        let evidence = |ceiling| TestEvidence::Sampling {
+            ts: 0.5,
+            too_slow: false,
+            broken: vec![settling],
+            per_sample: 0.01,
+            noise: 0.1,
+            ceiling,
+        };
+        let cause = |ceiling| TestCause {
+            kind: TestCauseKind::Sampling,
+            evidence: evidence(ceiling),
+            interval: None,
+            handling: Handling::Reported,
+        };
+        let conflicting = remedy(&cause(Some(1.14)), Lang::En);
+        assert!(!conflicting.contains("or more"), "{conflicting}");
+        assert!(conflicting.starts_with("Sample more slowly, or low-pass filter"));
+        let agreeing = remedy(&cause(Some(60.0)), Lang::En);
+        assert!(agreeing.contains("(every 23.67 s or more)"), "{agreeing}");
+    }
 
     #[test]
     fn every_kind_and_handling_has_an_example() {

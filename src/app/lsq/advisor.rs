@@ -6,12 +6,14 @@
 //!
 //! - **The step's effect**: |K·Δu|, K the model's static gain and Δu the record's largest
 //!   input change (none for a model without a finite static gain, an integrator).
-//! - **The noise**: the output's white-noise standard deviation read from its first
-//!   differences ([`crate::ident::rest::difference_noise`], robust to the steps themselves).
+//! - **The noise**: the standard deviation of a fit's residuals (robust), or before a fit
+//!   the output's white noise read from its first differences
+//!   ([`crate::ident::rest::difference_noise`], robust to the steps themselves).
 
 use crate::ident::fit::FitData;
 use crate::ident::models::Model;
 use crate::ident::rest::difference_noise;
+use crate::ident::stats::robust_scale;
 use crate::ident::test_causes::RuleCheck;
 use crate::ident::test_causes::{TimeScales, sampling_checks};
 
@@ -67,7 +69,7 @@ impl Advice {
         let du = data.input.largest_change().map_or(0.0, |c| c.du);
         let amplitude = gain.is_finite().then(|| Amplitude {
             effect: (gain * du).abs(),
-            noise: difference_noise(&data.y),
+            noise: noise(data, &model, fitted),
         });
         Self {
             checks: sampling_checks(h, &scales),
@@ -80,11 +82,60 @@ impl Advice {
     }
 }
 
+/// The noise's standard deviation: of a fit's residuals (robust: 1.4826·MAD), or from the
+/// first differences before a fit. On a record whose input changes every few samples (a
+/// PRBS) the differences hold the response itself and read it as noise (a PRBS with 1 %
+/// noise was called "too small for the noise", 3.77).
+fn noise(data: &FitData, model: &Model, fitted: bool) -> f64 {
+    let residuals = fitted
+        .then(|| model.simulate(&data.input, &data.times).ok())
+        .flatten()
+        .map(|yhat| {
+            data.y
+                .iter()
+                .zip(&yhat)
+                .map(|(y, m)| y - m)
+                .collect::<Vec<f64>>()
+        });
+    match residuals {
+        Some(r) if !r.is_empty() => robust_scale(&r),
+        _ => difference_noise(&data.y),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::ident::excitation::Excitation;
     use crate::ident::models::{Param, Structure, Values};
+
+    /// A PRBS (clocked every sample) through a fast first order, with 1 % noise: the first
+    /// differences hold the response and read it as noise ("too small", issue 23, item 13);
+    /// the fit's residuals read the noise itself.
+    #[test]
+    fn a_prbs_is_judged_on_its_fits_residuals() {
+        let prbs = crate::ident::prbs::Prbs::for_length(255, 1, 0.0, 1.0).unwrap();
+        let u = prbs.signal(255).unwrap();
+        let mut v = Values::default();
+        v.set(Param::Kp, 2.0);
+        v.set(Param::Tp1, 2.0);
+        v.set(Param::Y0, 0.0);
+        let model = Model::new(Structure::parse("P1").unwrap(), v);
+        let rec = crate::ident::prbs::simulate_record(&model, &u, 1.0, 0.02, 5).unwrap();
+        let input =
+            Excitation::measured(&rec.time, &rec.u, None, crate::ident::excitation::Hold::Zoh)
+                .unwrap();
+        let data = FitData {
+            times: rec.time,
+            y: rec.y,
+            input,
+        };
+        let guessed = Advice::new(&data, model, false).amplitude.unwrap();
+        let fitted = Advice::new(&data, model, true).amplitude.unwrap();
+        assert!(!guessed.holds(), "{guessed:?}");
+        assert!(fitted.holds(), "{fitted:?}");
+        assert!((fitted.noise - 0.02).abs() < 0.005, "{fitted:?}");
+    }
 
     #[test]
     fn a_foptd_sampled_at_a_second_of_its_twenty_second_time_constant() {

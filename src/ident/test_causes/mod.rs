@@ -261,6 +261,9 @@ pub enum TestEvidence {
         broken: Vec<RuleCheck>,
         per_sample: f64,
         noise: f64,
+        /// The largest sampling period every rule with an upper bound allows (s), when one
+        /// has: advice to sample more slowly goes no further.
+        ceiling: Option<f64>,
     },
     /// The step's effect against the noise's standard deviation: `ratio` < 6.
     SmallStep { effect: f64, noise: f64, ratio: f64 },

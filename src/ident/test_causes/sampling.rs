@@ -167,6 +167,14 @@ pub fn sampling(record: &FittedRecord) -> Option<TestCause> {
     if !(too_slow || too_fast) {
         return None;
     }
+    let ceiling = checks
+        .iter()
+        .filter_map(|c| {
+            c.high
+                .filter(|_| c.value > 0.0)
+                .map(|high| h * high / c.value)
+        })
+        .reduce(f64::min);
     let broken = checks
         .into_iter()
         .filter(|c| if too_slow { c.too_slow() } else { c.too_fast() })
@@ -179,6 +187,7 @@ pub fn sampling(record: &FittedRecord) -> Option<TestCause> {
             broken,
             per_sample,
             noise,
+            ceiling,
         },
         interval: None,
         handling: Handling::Reported,
