@@ -179,6 +179,10 @@ crate::phrases! {
         Settling => ("Settling", "Acomodação"),
         FinalLevel => ("Final level", "Valor final"),
         SettlingBand => ("±{} % band", "faixa de ±{} %"),
+        OvershootWithinNoise => (
+            "overshoot within the noise (±{})",
+            "sobressinal dentro do ruído (±{})"
+        ),
         FinalValueHandle => ("final value handle", "alça do valor final"),
         DeadTimeHandle => ("dead time handle", "alça do tempo morto"),
         TimeConstantHandle => ("time constant handle", "alça da constante de tempo"),

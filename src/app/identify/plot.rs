@@ -183,7 +183,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                     plot,
                     info,
                     &plots.measured,
-                    setup.t0(),
+                    (setup.t0(), plots.noise_band),
                     session.markers,
                     look,
                 );
@@ -294,7 +294,7 @@ fn draw_markers(
     plot: &mut PlotUi<'_>,
     info: &StepInfo,
     measured: &[[f64; 2]],
-    t0: f64,
+    (t0, noise_band): (f64, f64),
     markers: MeasuredMarkers,
     look: &Look,
 ) {
@@ -358,7 +358,14 @@ fn draw_markers(
     if markers.peak
         && let (Some(tp), Some(os)) = (info.peak_time, info.overshoot)
     {
-        let name = format!("{} {} %", Metric::Overshoot.name(lang), lang.num(os, 4));
+        // Read off raw samples, an excursion the noise explains is no overshoot: a heater
+        // that does not overshoot read 13.7 % or 16.9 % as the model changed.
+        let excess = os / 100.0 * delta.abs();
+        let name = if excess <= noise_band {
+            Phrase::OvershootWithinNoise.with(lang, &[lang.num(noise_band, 3)])
+        } else {
+            format!("{} {} %", Metric::Overshoot.name(lang), lang.num(os, 4))
+        };
         plot.points(
             Points::new(name, vec![[t0 + tp, value_at(t0 + tp)]])
                 .color(color)

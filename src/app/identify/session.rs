@@ -245,6 +245,10 @@ pub struct Plots {
     pub residuals: Vec<[f64; 2]>,
     /// The measured curve's step characteristics.
     pub info: Option<StepInfo>,
+    /// What the noise explains of a sample's excursion: √(2 ln N)·σ, the largest of N
+    /// Gaussian residuals, σ from the shown model's residuals (robust), or from the first
+    /// differences without a model (output units). A measured overshoot within it is noise.
+    pub noise_band: f64,
     /// The time the record spans.
     pub t_range: (f64, f64),
     /// The y range of the current curves (measured and model) only.
@@ -1380,6 +1384,13 @@ fn plots_for(data: &FitData, model: Option<Model>, y0: f64) -> Plots {
     let y_final = crate::ident::guess::features(data, Some(y0)).y_final;
     let pieces = crate::ident::prepare::SampledPieces::new(&data.times, &data.y, setup.t0());
     let info = StepInfo::from_pieces(&pieces, y0, y_final, &StepInfoOptions::default());
+    let sigma = if residuals.is_empty() {
+        crate::ident::rest::difference_noise(&data.y)
+    } else {
+        let r: Vec<f64> = residuals.iter().map(|p| p[1]).collect();
+        crate::ident::stats::robust_scale(&r)
+    };
+    let noise_band = sigma * (2.0 * (data.y.len().max(2) as f64).ln()).sqrt();
     let y_range = padded(range_of(measured.iter().chain(&curve).map(|p| p[1])));
     let residual_range = padded(range_of(
         residuals.iter().map(|p| p[1]).chain(std::iter::once(0.0)),
@@ -1389,6 +1400,7 @@ fn plots_for(data: &FitData, model: Option<Model>, y0: f64) -> Plots {
         model: curve,
         residuals,
         info: Some(info),
+        noise_band,
         t_range: (t_start, t_end.max(t_start + f64::EPSILON)),
         y_range,
         residual_range,
