@@ -83,14 +83,30 @@ fn table(ui: &mut Ui, session: &Session, look: &Look) {
             for (m, r) in &hand.results {
                 match r {
                     Ok(e) => {
+                        // A method's warning (a construction starting before the step, θ
+                        // taken as 0) is marked on its own row, drawn or not.
+                        let warned = !e.warnings.is_empty();
                         for (c, cell) in estimate_row(e, lang).into_iter().enumerate() {
-                            let text = RichText::new(cell);
+                            let marked = c == 0 && warned;
+                            let text = if marked {
+                                RichText::new(format!("{cell} (!)")).color(look.palette.warning)
+                            } else {
+                                RichText::new(cell)
+                            };
                             let text = if *m == hand.method() && c == 0 {
                                 text.strong()
                             } else {
                                 text
                             };
-                            ui.label(text);
+                            let label = ui.label(text);
+                            if marked {
+                                let said: Vec<String> = e
+                                    .warnings
+                                    .iter()
+                                    .map(|w| crate::text::Localize::text(w, lang))
+                                    .collect();
+                                label.on_hover_text(said.join("\n"));
+                            }
                         }
                     }
                     Err(err) => {
