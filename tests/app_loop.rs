@@ -468,3 +468,40 @@ fn the_closed_loop_has_its_own_metrics_and_closed_form() {
     assert!(h.query_all_by_label(&open).count() >= 1, "{open}");
     assert_ne!(open, cell);
 }
+
+/// With the loop closed, only the closed loop's rise and peak carry text on the plot
+/// (issue 23, item 6: the open and closed loops' labels printed over each other).
+#[test]
+fn only_the_closed_loops_markers_are_labelled() {
+    let mut h = harness();
+    let count = |h: &Harness<'_, DegrauApp>, start: &str| {
+        kit::painted_texts(h)
+            .into_iter()
+            .filter(|(t, _)| t.trim_start().starts_with(start))
+            .count()
+    };
+    // The label on the plot and its legend entry.
+    let open = count(&h, "rise time");
+    assert!(open >= 1);
+    click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
+    h.run_steps(2);
+    let closed = h
+        .state()
+        .design
+        .feedback
+        .closed
+        .clone()
+        .expect("the closed loop");
+    let tr = closed
+        .info
+        .as_ref()
+        .and_then(|i| i.rise_time)
+        .expect("a rise");
+    let label = format!("rise time {} s", degrau::text::Lang::En.num(tr, 4));
+    let painted: Vec<String> = kit::painted_texts(&h).into_iter().map(|p| p.0).collect();
+    assert_eq!(count(&h, "rise time"), open, "not doubled: {painted:?}");
+    assert!(
+        painted.iter().any(|t| t.trim() == label),
+        "{label} in {painted:?}"
+    );
+}

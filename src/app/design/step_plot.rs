@@ -281,7 +281,9 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
                         .color(palette.main)
                         .width(2.2),
                 );
-                draw_markers(plot, analysis, &kept.markers, look);
+                // With the loop closed, only the closed loop's markers carry text: the open
+                // loop's labels printed over the closed loop's.
+                draw_markers(plot, analysis, &kept.markers, look, closed.is_none());
                 if let Some(c) = closed {
                     plot.line(
                         Line::new(
@@ -292,7 +294,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
                         .color(palette.model)
                         .width(2.2),
                     );
-                    draw_markers(plot, c, &kept.markers, look);
+                    draw_markers(plot, c, &kept.markers, look, true);
                 }
                 if let Some((curve, reference)) = input {
                     let which = Loop::input_name(kept.feedback.input).get(lang);
@@ -355,6 +357,7 @@ fn draw_markers(
     analysis: &Analysis,
     markers: &Markers,
     look: &Look,
+    labelled: bool,
 ) {
     let (Some(info), Some(response)) = (&analysis.info, &analysis.response) else {
         return;
@@ -383,7 +386,7 @@ fn draw_markers(
         info,
         &analysis.options,
         &value_at,
-        0.0,
+        (0.0, labelled),
         markers,
         color,
         lang,
@@ -391,14 +394,15 @@ fn draw_markers(
 }
 
 /// The markers of any step response: `value_at(t)` evaluates the curve, `shift` is added
-/// to the metric times (the step instant of a measured test); names in `lang`.
+/// to the metric times (the step instant of a measured test), `labelled` says whether the
+/// rise and the peak carry text on the plot; names in `lang`.
 #[allow(clippy::too_many_arguments)]
 pub fn draw_step_markers_in(
     plot: &mut egui_plot::PlotUi<'_>,
     info: &crate::lti::StepInfo,
     options: &StepInfoOptions,
     value_at: &dyn Fn(f64) -> f64,
-    shift: f64,
+    (shift, labelled): (f64, bool),
     markers: &Markers,
     color: Color32,
     lang: Lang,
@@ -453,15 +457,19 @@ pub fn draw_step_markers_in(
     {
         let (lo, hi) = options.rise_limits;
         // The label starts at the end of the rise, beside the upper crossing.
-        crate::app::plot_span::labelled_span(
-            plot,
-            format!("  {} {} s", P::RiseTimeName.get(lang), num(tr)),
-            a..=b,
-            color.gamma_multiply(0.12),
-            [b, at(hi)],
-            egui::Align2::LEFT_TOP,
-            color,
-        );
+        if labelled {
+            crate::app::plot_span::labelled_span(
+                plot,
+                format!("  {} {} s", P::RiseTimeName.get(lang), num(tr)),
+                a..=b,
+                color.gamma_multiply(0.12),
+                [b, at(hi)],
+                egui::Align2::LEFT_TOP,
+                color,
+            );
+        } else {
+            plot.span(egui_plot::Span::new("", a..=b).fill(color.gamma_multiply(0.12)));
+        }
         let crossing =
             |f: f64| crate::text::identify::fill(P::CrossingName.get(lang), &[pct(f, lang)]);
         plot.points(point(&crossing(lo), a, at(lo), color));
@@ -477,11 +485,13 @@ pub fn draw_step_markers_in(
                 .shape(MarkerShape::Diamond)
                 .radius(6.0),
         );
-        plot.text(
-            Text::new(name, PlotPoint::new(tp, y), format!("  {} %", num(os)))
-                .anchor(egui::Align2::LEFT_BOTTOM)
-                .color(color),
-        );
+        if labelled {
+            plot.text(
+                Text::new(name, PlotPoint::new(tp, y), format!("  {} %", num(os)))
+                    .anchor(egui::Align2::LEFT_BOTTOM)
+                    .color(color),
+            );
+        }
     }
     if markers.undershoot
         && let (Some(tu), Some(us)) = (shifted(info.undershoot_time), info.undershoot)
