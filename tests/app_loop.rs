@@ -19,6 +19,24 @@ fn harness() -> Harness<'static, DegrauApp> {
     h
 }
 
+/// The closed loop's analysis (the loop must be closed).
+fn closed_loop(h: &Harness<'_, DegrauApp>) -> degrau::app::design::analysis::Analysis {
+    h.state()
+        .design
+        .feedback
+        .closed
+        .clone()
+        .expect("the closed loop")
+}
+
+/// The app with G(s) typed as tf(num, den).
+fn typed(num: &str, den: &str) -> Harness<'static, DegrauApp> {
+    let mut h = harness();
+    kit::type_number(&mut h, "num", 0, num);
+    kit::type_number(&mut h, "den", 0, den);
+    h
+}
+
 fn click(h: &mut Harness<'_, DegrauApp>, label: &str) {
     h.get_by_label(label).click();
     h.run_steps(3);
@@ -122,9 +140,7 @@ fn an_overshoot_spec_shades_its_region() {
 
 #[test]
 fn typed_coefficients_and_k_found_for_an_overshoot() {
-    let mut h = harness();
-    kit::type_number(&mut h, "num", 0, "1");
-    kit::type_number(&mut h, "den", 0, "1 2 0");
+    let mut h = typed("1", "1 2 0");
     let g = h.state().system().transfer_function().unwrap();
     assert_eq!(
         g.den(),
@@ -404,9 +420,7 @@ fn the_error_constants_and_the_legend_read_as_the_notes_write_them() {
 /// of the system writes the fields afresh.
 #[test]
 fn typed_coefficients_stay_as_typed() {
-    let mut h = harness();
-    kit::type_number(&mut h, "num", 0, "3");
-    kit::type_number(&mut h, "den", 0, "7.5 19 8.5 1");
+    let mut h = typed("3", "7.5 19 8.5 1");
     h.run_steps(3);
     let value = |h: &Harness<'_, DegrauApp>, label: &str| {
         h.get_all_by_role(egui::accesskit::Role::TextInput)
@@ -431,19 +445,11 @@ fn typed_coefficients_stay_as_typed() {
 /// beside a closed-loop curve with 10 % overshoot).
 #[test]
 fn the_closed_loop_has_its_own_metrics_and_closed_form() {
-    let mut h = harness();
-    kit::type_number(&mut h, "num", 0, "1");
-    kit::type_number(&mut h, "den", 0, "1 2 0");
+    let mut h = typed("1", "1 2 0");
     click(&mut h, "Specs");
     click(&mut h, "overshoot");
     click(&mut h, "Find K");
-    let closed = h
-        .state()
-        .design
-        .feedback
-        .closed
-        .clone()
-        .expect("the closed loop");
+    let closed = closed_loop(&h);
     let os = closed
         .info
         .as_ref()
@@ -485,13 +491,7 @@ fn only_the_closed_loops_markers_are_labelled() {
     assert!(open >= 1);
     click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
     h.run_steps(2);
-    let closed = h
-        .state()
-        .design
-        .feedback
-        .closed
-        .clone()
-        .expect("the closed loop");
+    let closed = closed_loop(&h);
     let tr = closed
         .info
         .as_ref()

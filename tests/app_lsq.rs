@@ -26,14 +26,23 @@ fn harness() -> Harness<'static, DegrauApp> {
     h
 }
 
-/// The app in the least-squares mode on the TCLab record (output T1, input Q1).
-fn tclab() -> Harness<'static, DegrauApp> {
+/// The app in the Identify mode with its reading settings `set`.
+fn identify_with(
+    set: impl FnOnce(&mut degrau::app::identify::IdentSettings),
+) -> Harness<'static, DegrauApp> {
     let mut h = harness();
     h.get_by_label("Identify a step test").click();
     h.run_steps(2);
-    let settings = &mut h.state_mut().ident.settings;
-    settings.y_col = "T1".into();
-    settings.u_col = "Q1".into();
+    set(&mut h.state_mut().ident.settings);
+    h
+}
+
+/// The app in the least-squares mode on the TCLab record (output T1, input Q1).
+fn tclab() -> Harness<'static, DegrauApp> {
+    let mut h = identify_with(|s| {
+        s.y_col = "T1".into();
+        s.u_col = "Q1".into();
+    });
     load(&mut h, TCLAB);
     h.get_by_label("Least squares on samples").click();
     h.run_steps(3);
@@ -185,20 +194,33 @@ fn rls_animates_to_the_batch_solution() {
     assert_eq!(taken(&h).0, 1);
 }
 
-#[test]
-fn a_prbs_test_is_exported_and_used_as_the_record_and_arx_recovers_its_model() {
-    let mut h = harness();
+/// The PRBS tab with the designer's default test, noise-free: the FOPTD 2·e^(−3s)/(20s + 1)
+/// sampled at 1 s, clock 4 samples, 600 samples, levels 0/1.
+fn noise_free_prbs(h: &mut Harness<'static, DegrauApp>) {
     h.get_by_label("Least squares on samples").click();
     h.run_steps(2);
     h.get_by_label("PRBS test").click();
     h.run_steps(2);
-    // Noise-free: the FOPTD 2·e^(−3s)/(20s + 1) sampled at 1 s, clock 4 samples, 600 samples.
     let settings = PrbsSettings {
         noise_percent: 0.0,
         ..PrbsSettings::default()
     };
-    apply(&mut h, Command::SetPrbs(settings));
+    apply(h, Command::SetPrbs(settings));
     h.run_steps(2);
+}
+
+/// The record the PRBS tab designed.
+fn designed(h: &Harness<'static, DegrauApp>) -> degrau::ident::prbs::Record {
+    match &h.state().lsq.designed {
+        Some(Ok(d)) => d.record.clone(),
+        other => panic!("no PRBS designed: {other:?}"),
+    }
+}
+
+#[test]
+fn a_prbs_test_is_exported_and_used_as_the_record_and_arx_recovers_its_model() {
+    let mut h = harness();
+    noise_free_prbs(&mut h);
     h.get_by_label_contains("Register of 8 bits: 255 bits per period × 4 samples per bit");
     let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("prbs_test.csv");
     apply(&mut h, Command::ExportPrbs(path.clone()));
@@ -296,13 +318,11 @@ fn the_advisor_reads_the_notes_rules_with_the_record_numbers() {
 /// a fit).
 #[test]
 fn a_fit_in_identify_is_compared_in_least_squares() {
-    let mut h = harness();
-    h.get_by_label("Identify a step test").click();
-    h.run_steps(2);
-    let settings = &mut h.state_mut().ident.settings;
-    settings.y_col = "T1".into();
-    settings.u_col = "Q1".into();
-    settings.code = "P1D".into();
+    let mut h = identify_with(|s| {
+        s.y_col = "T1".into();
+        s.u_col = "Q1".into();
+        s.code = "P1D".into();
+    });
     load(&mut h, TCLAB);
     h.get_by_label("Fit").click();
     h.run_steps(1);
@@ -334,14 +354,12 @@ fn a_fit_in_identify_is_compared_in_least_squares() {
 /// and 69 input changes on it.
 #[test]
 fn a_prbs_used_as_the_record_takes_no_setting_of_the_last_record() {
-    let mut h = harness();
-    h.get_by_label("Identify a step test").click();
-    h.run_steps(2);
-    let settings = &mut h.state_mut().ident.settings;
-    settings.time_col = "1".into();
-    settings.y_col = "3".into();
-    settings.u_col = "2".into();
-    settings.initial_input = "6".into();
+    let mut h = identify_with(|s| {
+        s.time_col = "1".into();
+        s.y_col = "3".into();
+        s.u_col = "2".into();
+        s.initial_input = "6".into();
+    });
     let daisy = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/tests/data/records/daisy_heating_system.dat"
@@ -360,10 +378,7 @@ fn a_prbs_used_as_the_record_takes_no_setting_of_the_last_record() {
     assert_eq!(loaded.experiment.initial_input, None);
     assert!(ident.settings.initial_input.is_empty());
     let data = loaded.data.as_ref().expect("its fit data");
-    let prbs = match &h.state().lsq.designed {
-        Some(Ok(d)) => d.record.clone(),
-        other => panic!("no PRBS designed: {other:?}"),
-    };
+    let prbs = designed(&h);
     let changes = prbs.u.windows(2).filter(|w| w[0] != w[1]).count();
     assert_eq!(
         data.input.changes.len(),
@@ -378,20 +393,8 @@ fn a_prbs_used_as_the_record_takes_no_setting_of_the_last_record() {
 #[test]
 fn a_prbs_output_starts_from_rest_at_its_low_level() {
     let mut h = harness();
-    h.get_by_label("Least squares on samples").click();
-    h.run_steps(2);
-    h.get_by_label("PRBS test").click();
-    h.run_steps(2);
-    let settings = PrbsSettings {
-        noise_percent: 0.0,
-        ..PrbsSettings::default()
-    };
-    apply(&mut h, Command::SetPrbs(settings));
-    h.run_steps(2);
-    let record = match &h.state().lsq.designed {
-        Some(Ok(d)) => d.record.clone(),
-        other => panic!("no PRBS designed: {other:?}"),
-    };
+    noise_free_prbs(&mut h);
+    let record = designed(&h);
     assert_eq!(record.u[0], 1.0, "this seed's first bit is high");
     let (lo, hi) = record
         .y
