@@ -18,22 +18,12 @@
 use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};
-use std::time::Instant;
 
 use degrau::lti::{StepInfoOptions, StepResponse, analyse};
 
 mod systems;
-
-/// Seconds of the fastest of `runs` runs of `f`.
-fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> f64 {
-    (0..runs)
-        .map(|_| {
-            let clock = Instant::now();
-            std::hint::black_box(f());
-            clock.elapsed().as_secs_f64()
-        })
-        .fold(f64::INFINITY, f64::min)
-}
+mod timing;
+use timing::best_of;
 
 /// One run of `degrau step --batch` on `input`: the number of reply lines.
 fn run_process(input: &Path) -> usize {

@@ -21,24 +21,14 @@ use degrau::ident::excitation::{Excitation, Hold};
 use degrau::ident::experiment::Experiment;
 use degrau::ident::fit::{FitData, FitOptions};
 use degrau::ident::models::{Model, Param, Structure, Values};
-use std::time::Instant;
 
 mod common;
+mod timing;
+use timing::best_of;
 #[path = "../tests/records/mod.rs"]
 mod records;
 
 use records::{Flags, RECORDS};
-
-/// Seconds of the fastest of `runs` runs of `f`.
-fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> f64 {
-    (0..runs)
-        .map(|_| {
-            let clock = Instant::now();
-            std::hint::black_box(f());
-            clock.elapsed().as_secs_f64()
-        })
-        .fold(f64::INFINITY, f64::min)
-}
 
 /// The record's samples as the CLI prepares them, and the held Y0 of a start at rest.
 fn prepared(flags: &Flags) -> Result<(Experiment, FitData, Option<Values>), String> {
