@@ -751,3 +751,20 @@ fn the_table_and_the_fields_say_what_is_drawn() {
             .is_none()
     );
 }
+
+/// The right panel keeps its width through a fit and a diagnosis (issue 23, item 5: it
+/// widened after them, so the tabs moved under the mouse); what is wider scrolls.
+#[test]
+fn the_panel_keeps_its_width_through_a_fit_and_a_diagnosis() {
+    let mut h = tclab_p1();
+    let left = |h: &Harness<'static, DegrauApp>| h.get_by_label("Fit").rect().left();
+    let before = left(&h);
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    wait_for(&mut h, |h| h.query_by_label("Fitted P1").is_some());
+    h.get_by_label("Run the whole loop").click_accesskit();
+    h.run_steps(1);
+    wait_for(&mut h, |h| !h.state().ident.is_diagnosing());
+    h.run_steps(3);
+    assert!((left(&h) - before).abs() < 0.5, "{before} → {}", left(&h));
+}

@@ -709,29 +709,33 @@ fn diagnose_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<C
         ui.label(note);
     }
     let Some(d) = &session.diagnosis else { return };
-    egui::Grid::new("chain")
-        .striped(true)
-        .num_columns(5)
+    egui::ScrollArea::horizontal()
+        .id_salt("chain table")
         .show(ui, |ui| {
-            let (header, rows) = words::chain_rows(d, lang);
-            for head in &header {
-                ui.strong(head);
-            }
-            ui.end_row();
-            for (k, row) in rows.iter().enumerate() {
-                let selected = session.selected_step == Some(k);
-                if ui
-                    .selectable_label(selected, &row[0])
-                    .on_hover_text(Phrase::RowHelp.get(lang))
-                    .clicked()
-                {
-                    out.push(Command::SelectStep(k));
-                }
-                for cell in &row[1..] {
-                    ui.label(cell);
-                }
-                ui.end_row();
-            }
+            egui::Grid::new("chain")
+                .striped(true)
+                .num_columns(5)
+                .show(ui, |ui| {
+                    let (header, rows) = words::chain_rows(d, lang);
+                    for head in &header {
+                        ui.strong(head);
+                    }
+                    ui.end_row();
+                    for (k, row) in rows.iter().enumerate() {
+                        let selected = session.selected_step == Some(k);
+                        if ui
+                            .selectable_label(selected, &row[0])
+                            .on_hover_text(Phrase::RowHelp.get(lang))
+                            .clicked()
+                        {
+                            out.push(Command::SelectStep(k));
+                        }
+                        for cell in &row[1..] {
+                            ui.label(cell);
+                        }
+                        ui.end_row();
+                    }
+                });
         });
     if ui.button(Phrase::CopyTable.get(lang)).clicked() {
         ui.ctx().copy_text(words::chain_text(d, lang));
