@@ -768,3 +768,23 @@ fn the_panel_keeps_its_width_through_a_fit_and_a_diagnosis() {
     h.run_steps(3);
     assert!((left(&h) - before).abs() < 0.5, "{before} → {}", left(&h));
 }
+
+/// A real overshoot stays named on the measured curve (the LECI test of the notes, ζ ≈ 0.19:
+/// about 54 %, far beyond its noise), beside the noisy heater whose is not
+/// (`tests/app_test_causes.rs`).
+#[test]
+fn a_real_overshoot_is_still_measured() {
+    let h = with_example();
+    let info = h
+        .state()
+        .ident
+        .plots()
+        .info
+        .clone()
+        .expect("the measured curve's metrics");
+    let os = info.overshoot.expect("an overshoot");
+    assert!(os > 30.0, "{os}");
+    let label = format!("Overshoot {} %", degrau::text::Lang::En.num(os, 4));
+    let painted: Vec<String> = kit::painted_texts(&h).into_iter().map(|p| p.0).collect();
+    assert!(painted.contains(&label), "{label} in {painted:?}");
+}

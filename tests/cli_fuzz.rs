@@ -496,6 +496,14 @@ fn typed() -> impl Strategy<Value = Typed> {
 }
 
 impl Plant {
+    /// The smallest pole modulus (1/s): the slowest time constant's inverse.
+    fn slowest_rate(&self) -> f64 {
+        self.poles
+            .iter()
+            .map(|p| p.norm())
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// num and den as typed (leading zeros stripped), descending powers.
     fn polys(&self, typed: Typed) -> (Vec<f64>, Vec<f64>) {
         let (num, den) = (
@@ -733,13 +741,7 @@ impl ApproxCase {
     /// comparison's window cannot resolve the responses (its ISE came out 0 beside a largest
     /// gap of 100 %): a limit of double precision `approx` does not refuse (reported).
     fn time_resolved(&self) -> bool {
-        let slowest = self
-            .plant
-            .poles
-            .iter()
-            .map(|p| p.norm())
-            .fold(f64::INFINITY, f64::min);
-        self.delay.unwrap_or(0.0) <= 1e9 / slowest
+        self.delay.unwrap_or(0.0) <= 1e9 / self.plant.slowest_rate()
     }
 }
 
@@ -1113,13 +1115,7 @@ fn sampled_case() -> impl Strategy<Value = SampledCase> {
 
 impl SampledCase {
     fn delay(&self) -> f64 {
-        let slowest = self
-            .plant
-            .poles
-            .iter()
-            .map(|p| p.norm())
-            .fold(f64::INFINITY, f64::min);
-        self.delay / slowest
+        self.delay / self.plant.slowest_rate()
     }
 
     fn with(&self, head: &[&str]) -> Vec<String> {

@@ -246,8 +246,8 @@ pub struct Plots {
     /// The measured curve's step characteristics.
     pub info: Option<StepInfo>,
     /// What the noise explains of a sample's excursion: √(2 ln N)·σ, the largest of N
-    /// Gaussian residuals, σ from the shown model's residuals (robust), or from the first
-    /// differences without a model (output units). A measured overshoot within it is noise.
+    /// Gaussian samples, σ read from the first differences (robust; output units). A
+    /// measured overshoot within it is noise.
     pub noise_band: f64,
     /// The time the record spans.
     pub t_range: (f64, f64),
@@ -1384,12 +1384,10 @@ fn plots_for(data: &FitData, model: Option<Model>, y0: f64) -> Plots {
     let y_final = crate::ident::guess::features(data, Some(y0)).y_final;
     let pieces = crate::ident::prepare::SampledPieces::new(&data.times, &data.y, setup.t0());
     let info = StepInfo::from_pieces(&pieces, y0, y_final, &StepInfoOptions::default());
-    let sigma = if residuals.is_empty() {
-        crate::ident::rest::difference_noise(&data.y)
-    } else {
-        let r: Vec<f64> = residuals.iter().map(|p| p[1]).collect();
-        crate::ident::stats::robust_scale(&r)
-    };
+    // The markers are drawn on a single step, where the first differences read the noise
+    // (robust to the step itself) whatever the model shown: a poor guess's residuals would
+    // call a real overshoot noise.
+    let sigma = crate::ident::rest::difference_noise(&data.y);
     let noise_band = sigma * (2.0 * (data.y.len().max(2) as f64).ln()).sqrt();
     let y_range = padded(range_of(measured.iter().chain(&curve).map(|p| p[1])));
     let residual_range = padded(range_of(
