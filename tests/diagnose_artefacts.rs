@@ -922,8 +922,8 @@ const MIN_CLEAN_QUIET: f64 = 0.98;
 /// The least share of clean records with no `outliers`.
 const MIN_CLEAN_NO_OUTLIERS: f64 = 0.99;
 
-/// The `index`-th clean record of `n` samples: an ideal step between two samples, far from
-/// zero, white Gaussian noise of 0.2–2 % of the effect (of the ramp's rise for an
+/// The `index`-th clean record of `n` samples: an ideal step between two samples (every
+/// third record a staircase of two or three, each held as long), far from zero, white Gaussian noise of 0.2–2 % of the effect (of the ramp's rise for an
 /// integrator), no artefact. The start is the truth in half the records and P1 in the other
 /// half (a wrong start: its large smooth residuals are no outliers); Y0 free or held.
 fn clean(index: usize, n: usize) -> (FitData, Structure, String) {
@@ -957,13 +957,37 @@ fn clean(index: usize, n: usize) -> (FitData, Structure, String) {
         0.0
     };
     v.set(Param::Td, td);
+    // Every third record a staircase: one or two more changes of either sign, each held
+    // as long as the first, so that a linear process shows the same gain on each.
+    let changes = if index % 3 == 2 && !truth.integrator {
+        2 + (index / 3) % 2
+    } else {
+        1
+    };
     let after = range(&mut rng, (6.0, 10.0)) * slowest + td;
     let fraction = range(&mut rng, (0.12, 0.25));
-    let length = after / (1.0 - fraction);
+    let length = changes as f64 * after / (1.0 - fraction);
     let t0 = fraction * length;
+    let hold = (length - t0) / changes as f64;
+    let mut levels = vec![0.0, du];
+    for _ in 1..changes {
+        let last = *levels.last().unwrap();
+        levels.push(last + signed(&mut rng, (0.5, 1.5)) * du);
+    }
+    // The later changes at the first one's fraction of the sampling period, as a logger
+    // that sets the input gives them (one latency for every change).
+    let h = length / (n - 1) as f64;
+    let fraction_of_h = t0 / h - (t0 / h).floor();
+    let mut excitation = Excitation::step(t0, du);
+    for (k, w) in levels.windows(2).enumerate().skip(1) {
+        excitation.steps.push(InputStep {
+            t: (((t0 + k as f64 * hold) / h).floor() + fraction_of_h) * h,
+            du: w[1] - w[0],
+        });
+    }
     let times: Vec<f64> = (0..n).map(|k| length * k as f64 / (n - 1) as f64).collect();
     let model = Model::new(truth, v);
-    let mut y = model.simulate(&Excitation::step(t0, du), &times).unwrap();
+    let mut y = model.simulate(&excitation, &times).unwrap();
     let effect = if truth.integrator {
         (kp * du * (length - t0)).abs()
     } else {
@@ -973,7 +997,10 @@ fn clean(index: usize, n: usize) -> (FitData, Structure, String) {
     y.iter_mut().for_each(|x| *x += sd * gaussian(&mut rng));
     let logged: Vec<f64> = times
         .iter()
-        .map(|&t| u0 + if t < t0 { 0.0 } else { du })
+        .map(|&t| {
+            let k = excitation.steps.iter().filter(|s| s.t <= t).count();
+            u0 + levels[k]
+        })
         .collect();
     let input = Excitation::measured(&times, &logged, None, Hold::Zoh).unwrap();
     let mut start = if index.is_multiple_of(2) {
@@ -984,7 +1011,7 @@ fn clean(index: usize, n: usize) -> (FitData, Structure, String) {
     start.free_offset = (index / 2).is_multiple_of(2);
     start.lead = true;
     let note = format!(
-        "seed {seed:#x} {code} from {} N={n} Kp={kp:.3} du={du:.3} slowest={slowest:.3} td={td:.3} sd={sd:.4}",
+        "seed {seed:#x} {code} from {} N={n} Kp={kp:.3} levels={levels:.3?} slowest={slowest:.3} td={td:.3} sd={sd:.4}",
         start.code()
     );
     (FitData { times, y, input }, start, note)

@@ -18,6 +18,7 @@ use super::excitation::{Excitation, InputChange};
 use super::fit::{FitData, FitError, FitObserver, FitOptions, FitReport, fit};
 use super::guess::auto_guess;
 use super::models::{Model, Param, Structure};
+use super::stats::{ar1_widening, lag_one};
 
 /// One change's own fit.
 #[derive(Debug, Clone, PartialEq)]
@@ -119,6 +120,31 @@ pub fn per_step_fits(data: &FitData, structure: Structure, options: &FitOptions)
     .into_iter()
     .flatten()
     .collect()
+}
+
+/// `report`'s intervals widened for the colour of its residuals on `data` (the AR(1)
+/// correction [`ar1_widening`] of their lag-one autocorrelation). Intervals computed as if
+/// the residuals were white are honest only for a model that fits: a structure that misses
+/// the response's shape (a P1 on a delayed response) leaves slow, correlated residuals, and
+/// gains whose white-noise intervals are far too narrow to tell steps apart by.
+pub fn widened_for_colour(report: &FitReport, data: &FitData) -> FitReport {
+    let mut widened = report.clone();
+    if let Ok(r) = report.residuals(data) {
+        widened.widen_intervals(ar1_widening(lag_one(&r)));
+    }
+    widened
+}
+
+/// Each change's own fit in `fits` widened for the colour of its residuals on its own
+/// window ([`widened_for_colour`]).
+pub fn widen_steps_for_colour(data: &FitData, fits: &mut [StepFit]) {
+    for f in fits.iter_mut() {
+        let k = data.input.changes.iter().position(|c| c.t == f.change.t);
+        let window = k.and_then(|k| window_data(data, k));
+        if let (Some(window), Ok(r)) = (window, &mut f.fit) {
+            *r = widened_for_colour(r, &window);
+        }
+    }
 }
 
 /// The process parameters compared step by step: gain, time constants, damping, zero, dead

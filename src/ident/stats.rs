@@ -151,6 +151,15 @@ pub fn lag_one(v: &[f64]) -> f64 {
     if c0 > 0.0 { c1 / c0 } else { 0.0 }
 }
 
+/// The factor by which intervals computed as if N residuals were independent widen for
+/// residuals with lag-one autocorrelation `rho` (an AR(1) coefficient, clamped to
+/// [0, 0.99]): √((1 + ρ)/(1 − ρ)), since the variance of a mean of AR(1) samples is that
+/// factor squared times the white one's.
+pub fn ar1_widening(rho: f64) -> f64 {
+    let rho = rho.clamp(0.0, 0.99);
+    ((1.0 + rho) / (1.0 - rho)).sqrt()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

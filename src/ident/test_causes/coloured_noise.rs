@@ -6,18 +6,12 @@
 //! factor squared times the white one's).
 
 use super::{Handling, TestCause, TestCauseKind, TestEvidence};
-use crate::ident::stats::lag_one;
+use crate::ident::stats::{ar1_widening, lag_one};
 
 /// The least lag-one autocorrelation named.
 pub const MIN_LAG1: f64 = 0.3;
 /// ... and its least significance, ρ·√N (the white-noise band is ±1.96/√N at 95 %).
 pub const MIN_Z: f64 = 4.0;
-
-/// The widening factor of an AR(1) coefficient `rho` (clamped to [0, 0.99]).
-pub fn widening(rho: f64) -> f64 {
-    let rho = rho.clamp(0.0, 0.99);
-    ((1.0 + rho) / (1.0 - rho)).sqrt()
-}
 
 /// Coloured noise in the final model's `residuals`, if correlated enough.
 pub fn detect(times: &[f64], residuals: &[f64]) -> Option<TestCause> {
@@ -26,7 +20,7 @@ pub fn detect(times: &[f64], residuals: &[f64]) -> Option<TestCause> {
     if !(lag1 >= MIN_LAG1 && lag1 * n.sqrt() >= MIN_Z) {
         return None;
     }
-    let factor = widening(lag1);
+    let factor = ar1_widening(lag1);
     Some(TestCause {
         kind: TestCauseKind::ColouredNoise,
         evidence: TestEvidence::ColouredNoise {

@@ -17,7 +17,9 @@ use crate::ident::drift_evidence::{read_drift, read_drift_after};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit, within_span};
 use crate::ident::guess::auto_guess;
 use crate::ident::models::{Param, Structure};
-use crate::ident::per_step::{MAX_PER_STEP, StepFit, per_step_fits, window_data};
+use crate::ident::per_step::{
+    MAX_PER_STEP, StepFit, per_step_fits, widen_steps_for_colour, window_data,
+};
 use crate::ident::robust::{RobustFit, robust_fit};
 
 /// A record with its test's artefacts handled.
@@ -206,7 +208,11 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
     };
     let mut structure = fitted.model.structure;
     structure.transient = false;
-    let fits = per_step_fits(data, structure, &options);
+    let mut fits = per_step_fits(data, structure, &options);
+    // Intervals as honest as the model's fit: a structure about to be extended leaves
+    // correlated residuals, and its white-noise intervals would call a linear record's
+    // steps different.
+    widen_steps_for_colour(data, &mut fits);
     // Only changes held through their response are evidence (the others' gains rest on an
     // extrapolated tail): at least two of them must differ.
     let held: Vec<StepFit> = fits
@@ -217,7 +223,7 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
     if held.len() < 2 {
         return None;
     }
-    let cause = nonlinearity(fitted, &held, data.sampling_period())?;
+    let cause = nonlinearity(&held)?;
     if drift_explains_gains(data, fitted, &options) {
         return None;
     }
@@ -292,12 +298,13 @@ fn drift_explains_gains(data: &FitData, fitted: &FitReport, options: &FitOptions
     joint.model.structure.drift = false;
     let mut structure = joint.model.structure;
     structure.transient = false;
-    let fits = per_step_fits(&detrended, structure, options);
+    let mut fits = per_step_fits(&detrended, structure, options);
+    widen_steps_for_colour(&detrended, &mut fits);
     let held: Vec<StepFit> = fits
         .into_iter()
         .filter(|f| fit_held(f, &joint.model))
         .collect();
-    held.len() >= 2 && nonlinearity(&joint, &held, data.sampling_period()).is_none()
+    held.len() >= 2 && nonlinearity(&held).is_none()
 }
 
 /// `nonlinearity` checked before the model's causes. A gain that differs between the up

@@ -1,17 +1,19 @@
 //! `nonlinearity`: on a record with several input changes, each change's own fit
 //! ([`per_step_fits`](crate::ident::per_step::per_step_fits)) gives a static gain; a linear
-//! process gives the same one every time. Named when a change's gain differs from the joint
-//! fit's beyond both 95 % intervals and by more than the record resolves (the per-step
-//! table's rule, [`agreement`]): up against down, small against large, one operating point
-//! against another. The evidence lists every change's gain with its interval. Only
+//! process gives the same one every time. Named when two changes' gains differ beyond both
+//! 95 % intervals (widened for the colour of each window's residuals,
+//! [`widen_steps_for_colour`](crate::ident::per_step::widen_steps_for_colour)) and by more
+//! than the record resolves ([`RESOLVED_SHARE`]): up against down, small against large, one
+//! operating point against another. The evidence lists every change's gain with its
+//! interval. Only
 //! the changes held long enough to show their gain ([`HELD_LAGS`] time constants beyond the
 //! dead time, [`fit_held`]): a change made while the output still moves is no evidence on
 //! its own, its gain resting on the extrapolated tail of the response before it.
 //! Cost: nothing beyond the per-step fits the diagnosis already has.
 
-use crate::ident::fit::{FitData, FitReport};
+use crate::ident::fit::FitData;
 use crate::ident::models::{Model, Param};
-use crate::ident::per_step::{Agreement, StepFit, agreement};
+use crate::ident::per_step::{RESOLVED_SHARE, StepFit};
 
 use super::{Handling, StepGain, TestCause, TestCauseKind, TestEvidence, TimeScales};
 
@@ -77,16 +79,30 @@ pub fn step_gains(fits: &[StepFit]) -> Vec<StepGain> {
         .collect()
 }
 
-/// `nonlinearity` from the joint fit and the per-step fits; `instant_step` is how well each
-/// change's instant is known (s, the sampling period for a measured input).
-pub fn nonlinearity(joint: &FitReport, fits: &[StepFit], instant_step: f64) -> Option<TestCause> {
-    let Agreement::Differ(differences) = agreement(joint, fits, instant_step) else {
-        return None;
+/// Whether two of `steps`' gains differ: their 95 % intervals are disjoint and they lie more
+/// than [`RESOLVED_SHARE`] of the larger apart. Step against step, not against the joint
+/// fit: a structure that misses the response's shape gives every window's gain the same
+/// bias away from the joint one, and a linear process gives the steps one gain whatever it.
+fn gains_differ(steps: &[StepGain]) -> bool {
+    let differ = |a: &StepGain, b: &StepGain| match (a.ci95, b.ci95) {
+        (Some(x), Some(y)) => {
+            (x.1 < y.0 || y.1 < x.0)
+                && (a.kp - b.kp).abs() > RESOLVED_SHARE * a.kp.abs().max(b.kp.abs())
+        }
+        _ => false,
     };
-    if !differences.iter().any(|d| d.param == Param::Kp) {
+    steps
+        .iter()
+        .enumerate()
+        .any(|(i, a)| steps[i + 1..].iter().any(|b| differ(a, b)))
+}
+
+/// `nonlinearity` from the per-step fits of the changes held through their response.
+pub fn nonlinearity(fits: &[StepFit]) -> Option<TestCause> {
+    let steps = step_gains(fits);
+    if !gains_differ(&steps) {
         return None;
     }
-    let steps = step_gains(fits);
     let start = fits
         .iter()
         .map(|f| f.window.0)
@@ -123,7 +139,7 @@ mod tests {
         };
         let fits = per_step_fits(&m.data, m.fit.model.structure, &options);
         assert_eq!(fits.len(), 2);
-        nonlinearity(&m.fit, &fits, m.data.sampling_period())
+        nonlinearity(&fits)
     }
 
     #[test]
