@@ -20,7 +20,8 @@
 //! more memory than the record itself.
 //!
 //! A multi-start option (on by default) runs LM from the guess and from spread-out starts
-//! and keeps the best: the LECI notes show a single start landing on a spurious alias.
+//! and keeps the best: the LECI notes show a single start landing on a spurious alias. A fit
+//! nobody watches ([`FitObserver::watches`]) screens its starts on every core.
 //!
 //! On a long record (more than [`reduce::MIN_SAMPLES`] samples) the starts run on its
 //! reduction ([`reduce`]: every sample just after each input change, block means of doubling
@@ -249,9 +250,18 @@ pub trait FitObserver {
     fn cancelled(&self) -> bool {
         false
     }
+    /// Whether this observer follows the fit's iterations (progress or cancel): a fit
+    /// nobody watches screens its starts on every core and reports no progress.
+    fn watches(&self) -> bool {
+        true
+    }
 }
 
-impl FitObserver for () {}
+impl FitObserver for () {
+    fn watches(&self) -> bool {
+        false
+    }
+}
 
 /// One estimated parameter with its 95 % confidence interval, when it exists.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -531,13 +541,20 @@ fn fit_on(
         ..*options
     };
     let mut runs: Vec<Option<Run>> = Vec::new();
-    for (k, start) in starts.iter().enumerate() {
-        if observer.cancelled() {
-            break;
+    if observer.watches() {
+        for (k, start) in starts.iter().enumerate() {
+            if observer.cancelled() {
+                break;
+            }
+            let best_cost = lowest_cost(&runs) / n;
+            let mut report = progress(&problem, observer, (k, starts.len()), best_cost);
+            runs.push(searched.run(options.method, start, &first_pass, &mut report));
         }
-        let best_cost = lowest_cost(&runs) / n;
-        let mut report = progress(&problem, observer, (k, starts.len()), best_cost);
-        runs.push(searched.run(options.method, start, &first_pass, &mut report));
+    } else {
+        // Independent starts: the same runs, in the same order, on every core.
+        runs = super::parallel::map(&starts, |start| {
+            searched.run(options.method, start, &first_pass, &mut |_, _, _| false)
+        });
     }
     // A screen: only the lowest unfinished runs go on; the others are dropped.
     let continued = if screens {
@@ -648,8 +665,9 @@ fn progress<'a>(
     best_cost: f64,
 ) -> impl FnMut(usize, f64, &[f64]) -> bool + 'a {
     let n = problem.data.y.len() as f64;
+    let watched = observer.watches();
     move |iteration: usize, sse: f64, x: &[f64]| {
-        if let Ok(model) = problem.model_out(x) {
+        if watched && let Ok(model) = problem.model_out(x) {
             observer.progress(&Progress {
                 start: k,
                 starts,

@@ -4,8 +4,31 @@
 //!
 //! Written here rather than taken from rayon: one scoped map over a slice is all the
 //! diagnosis needs, and rayon's pool would add a dependency (and its build time) for it.
+//! A map inside a map (a fit's starts inside the diagnosis's candidates) runs on the thread
+//! it is called from: the cores are already busy, and more threads would only contend.
 
+use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+thread_local! {
+    /// Whether this thread is one of a [`map`]'s workers.
+    static INSIDE: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Marks this thread a worker while alive, and restores what it was (even on a panic).
+struct Worker(bool);
+
+impl Worker {
+    fn enter() -> Self {
+        Self(INSIDE.replace(true))
+    }
+}
+
+impl Drop for Worker {
+    fn drop(&mut self) {
+        INSIDE.set(self.0);
+    }
+}
 
 /// `f` applied to every item, on up to as many threads as the machine has cores (one
 /// thread for one item, or a machine that reports a single core): the results in the
@@ -14,11 +37,12 @@ pub fn map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> 
     let workers = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .min(items.len());
-    if workers <= 1 {
+    if workers <= 1 || INSIDE.get() {
         return items.iter().map(f).collect();
     }
     let next = AtomicUsize::new(0);
     let work = || {
+        let _worker = Worker::enter();
         let mut done = Vec::new();
         loop {
             let i = next.fetch_add(1, Ordering::Relaxed);
@@ -54,5 +78,20 @@ mod tests {
         });
         assert_eq!(out, items.iter().map(|k| k * k).collect::<Vec<_>>());
         assert!(map(&Vec::<u64>::new(), |&k| k).is_empty());
+    }
+
+    #[test]
+    fn a_map_inside_a_map_runs_on_its_callers_thread() {
+        let outer: Vec<u64> = (0..4).collect();
+        let out = map(&outer, |&k| {
+            let me = std::thread::current().id();
+            let inner: Vec<u64> = (0..8).collect();
+            let threads = map(&inner, |_| std::thread::current().id());
+            (threads.iter().all(|t| *t == me), k)
+        });
+        assert!(out.iter().all(|(same, _)| *same), "{out:?}");
+        assert_eq!(out.iter().map(|(_, k)| *k).collect::<Vec<_>>(), outer);
+        // The caller's thread is no worker once the map is over.
+        assert!(!INSIDE.get());
     }
 }
