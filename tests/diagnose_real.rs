@@ -159,7 +159,14 @@ fn daisy_heating_names_nonlinearity_with_its_per_step_gains() {
     // Every gain has its interval, the first change's too (at the record's first sample,
     // from the input before it: its instant is exact, so its window's Y0 is known).
     assert!(steps.iter().all(|s| s.ci95.is_some()), "{steps:?}");
-    assert!(report.static_gain.1.is_some());
+    // The gain of the first change's model is stated with its own interval, widened once
+    // for its coloured residuals (not once more for the comparison's widening).
+    let (kp, ci) = report.static_gain;
+    let (lo, hi) = ci.expect("the final gain's interval");
+    assert!(
+        lo < kp && kp < hi && (hi - lo) / 2.0 <= 0.2 * kp,
+        "DaISy: final Kp {kp} [{lo}, {hi}]"
+    );
     let changes = &data.input.changes;
     let sizes: Vec<(f64, f64)> = steps.iter().map(|s| (s.u_before, s.du)).collect();
     let levels = [6.0, 9.0, 4.0, 8.0, 3.0, 7.0, 6.0];

@@ -208,14 +208,16 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
     };
     let mut structure = fitted.model.structure;
     structure.transient = false;
-    let mut fits = per_step_fits(data, structure, &options);
-    // Intervals as honest as the model's fit: a structure about to be extended leaves
-    // correlated residuals, and its white-noise intervals would call a linear record's
-    // steps different.
-    widen_steps_for_colour(data, &mut fits);
+    let fits = per_step_fits(data, structure, &options);
+    // Judged on intervals as honest as the model's fit: a structure about to be extended
+    // leaves correlated residuals, and its white-noise intervals would call a linear
+    // record's steps different. The fits returned keep their own intervals (a model started
+    // from one is widened once, at the end, for what its own residuals show).
+    let mut judged = fits.clone();
+    widen_steps_for_colour(data, &mut judged);
     // Only changes held through their response are evidence (the others' gains rest on an
     // extrapolated tail): at least two of them must differ.
-    let held: Vec<StepFit> = fits
+    let held: Vec<StepFit> = judged
         .iter()
         .filter(|f| fit_held(f, &fitted.model))
         .cloned()
