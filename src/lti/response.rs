@@ -603,10 +603,10 @@ struct Superposition<'a> {
     advance: Option<divided::RowAdvance>,
 }
 
-/// Relative distance within which an advance reuses the cached e^{ch} (times the exact
-/// correction e^{cδ} by its series), so that instants on a grid, whose spacings differ by
-/// rounding, share one exponential.
-const SAME_ADVANCE: f64 = 1e-9;
+/// The largest |cδ| (|re| + |im|) by which an advance reuses the cached e^{ch}, times the
+/// correction e^{cδ} by its series ([`small_exp`]): instants on a grid, whose spacings differ
+/// by rounding, and a logger's jittered instants share one exponential.
+const NEAR_ADVANCE: f64 = 0.05;
 
 impl<'a> Superposition<'a> {
     fn new(cluster: &'a Cluster, delay: f64, scale: f64) -> Self {
@@ -672,12 +672,12 @@ impl<'a> Superposition<'a> {
         self.t = self.t.max(t);
     }
 
-    /// e^{ch}, from the cached advance when h is within [`SAME_ADVANCE`] of it.
+    /// e^{ch}, from the cached advance when h is within [`NEAR_ADVANCE`] of it.
     fn exponential(&mut self, h: f64) -> C64 {
         let c = self.cluster;
-        let delta = h - self.cached_h;
-        if delta.abs() <= SAME_ADVANCE * h {
-            return self.cached_exp * small_exp(c.center * delta);
+        let z = c.center * (h - self.cached_h);
+        if z.re.abs() + z.im.abs() <= NEAR_ADVANCE {
+            return self.cached_exp * small_exp(z);
         }
         self.cached_h = h;
         self.cached_exp = exp(c.center * h);
@@ -719,13 +719,30 @@ impl<'a> Superposition<'a> {
     }
 }
 
-/// e^z, by its series to z³ when |z| ≤ 1e-4 (the rest under 5e-18): the correction of a
-/// cached advance to a spacing that differs by rounding or jitter.
+/// e^z, by its series when |z| ≤ [`NEAR_ADVANCE`] (to z³ below 1e-4, to z¹⁰ above: the
+/// rest under 5e-18 either way): the correction of a cached advance to a spacing that
+/// differs by rounding or jitter.
 fn small_exp(z: C64) -> C64 {
-    if z.re.abs() + z.im.abs() > 1e-4 {
+    let size = z.re.abs() + z.im.abs();
+    if size > NEAR_ADVANCE {
         return exp(z);
     }
-    C64::new(1.0, 0.0) + z * (1.0 + z * (0.5 + z / 6.0))
+    let one = C64::new(1.0, 0.0);
+    if size <= 1e-4 {
+        return one + z * (1.0 + z * (0.5 + z / 6.0));
+    }
+    (1..=10).rev().fold(one, |acc, k| one + z * acc / k as f64)
+}
+
+/// e^z for a real z, as [`small_exp`].
+fn small_exp_real(z: f64) -> f64 {
+    if z.abs() > NEAR_ADVANCE {
+        return z.exp();
+    }
+    if z.abs() <= 1e-4 {
+        return 1.0 + z * (1.0 + z * (0.5 + z / 6.0));
+    }
+    (1..=10).rev().fold(1.0, |acc, k| 1.0 + z * acc / k as f64)
 }
 
 /// e^z, without a sine and cosine of 0 for a real z.
@@ -765,8 +782,10 @@ trait PoleNumber:
     const ONE: Self;
     /// e^{self·h}.
     fn exp_times(self, h: f64) -> Self;
-    /// e^{self·δ} for a tiny δ.
+    /// e^{self·δ} for a small δ ([`small_exp`]).
     fn small_exp_times(self, delta: f64) -> Self;
+    /// Whether |self·δ| is within [`NEAR_ADVANCE`].
+    fn near(self, delta: f64) -> bool;
     /// Re(self·other).
     fn re_product(self, other: Self) -> f64;
 }
@@ -778,11 +797,10 @@ impl PoleNumber for f64 {
         (self * h).exp()
     }
     fn small_exp_times(self, delta: f64) -> Self {
-        let z = self * delta;
-        if z.abs() > 1e-4 {
-            return z.exp();
-        }
-        1.0 + z * (1.0 + z * (0.5 + z / 6.0))
+        small_exp_real(self * delta)
+    }
+    fn near(self, delta: f64) -> bool {
+        (self * delta).abs() <= NEAR_ADVANCE
     }
     fn re_product(self, other: Self) -> f64 {
         self * other
@@ -797,6 +815,10 @@ impl PoleNumber for C64 {
     }
     fn small_exp_times(self, delta: f64) -> Self {
         small_exp(self * delta)
+    }
+    fn near(self, delta: f64) -> bool {
+        let z = self * delta;
+        z.re.abs() + z.im.abs() <= NEAR_ADVANCE
     }
     fn re_product(self, other: Self) -> f64 {
         (self * other).re
@@ -842,7 +864,7 @@ fn walk_simple<P: PoleNumber>(
     }
 }
 
-/// e^{ch} for the spacings h of a walk, kept for the last distinct one (see [`SAME_ADVANCE`]).
+/// e^{ch} for the spacings h of a walk, kept for the last distinct one (see [`NEAR_ADVANCE`]).
 struct Advance<P> {
     center: P,
     h: f64,
@@ -863,7 +885,7 @@ impl<P: PoleNumber> Advance<P> {
         if delta == 0.0 {
             return self.exp;
         }
-        if delta.abs() <= SAME_ADVANCE * h {
+        if self.center.near(delta) {
             return self.exp * self.center.small_exp_times(delta);
         }
         self.h = h;
