@@ -1022,8 +1022,10 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
 const PAIRS_TAKEN_ON: usize = 3;
 /// Iterations every start of a candidate runs before the leaders are picked ([`best_fits`]).
 const SCREEN_ITERATIONS: usize = 8;
-/// Screened starts of each candidate taken on to convergence at a time ([`best_fits`]).
-const KEPT_PER_KEY: usize = 2;
+/// Screened starts of each candidate taken on to convergence at a time ([`best_fits`]): the
+/// leader alone, since starts in the same basin agree after the screen; the next one goes
+/// on only when the leader ends unacceptable (an alias, a lag beyond the record).
+const KEPT_PER_KEY: usize = 1;
 
 fn aliased(r: &FitReport) -> bool {
     r.warnings
