@@ -187,6 +187,53 @@ fn features_as_given(data: &FitData, y0: Option<f64>) -> CurveFeatures {
     }
 }
 
+/// The least normalised overshoot or dip the shape must show, beyond the noise, to suggest
+/// a structure that makes one.
+const SHAPE_SHARE: f64 = 0.03;
+
+/// The final slope, over the mean slope since the first change, above which the output is
+/// taken to ramp (an integrator): a lag slows down towards its level, an integrator does not
+/// (a first-order response cut at half its time constant still ends at 0.77 of its mean).
+const RAMP_RATIO: f64 = 0.9;
+
+/// The structure the record's shape suggests, for the first guess a student starts from:
+/// the notes' first order plus dead time (P1D) unless the curve shows more. An overshoot
+/// beyond the noise that falls back before the record's end (not the end of a rise still
+/// under way) suggests an underdamped pair with its dead time (P2DU); a dip the wrong
+/// way before the rise, a zero (P2Z); an output still climbing at the end as fast as on
+/// average, an integrator (P1DI). "Beyond the noise" is beyond the largest of N Gaussian
+/// samples, √(2 ln N)·σ (σ from the first differences), and at least [`SHAPE_SHARE`] of
+/// the change.
+pub fn suggested_structure(data: &FitData) -> Structure {
+    let code = suggested_code(data);
+    Structure::parse(code).unwrap_or_else(|_| Structure::parse("P1D").expect("P1D is a code"))
+}
+
+fn suggested_code(data: &FitData) -> &'static str {
+    let f = features(data, None);
+    let span = (f.y_final - f.y0).abs();
+    let n = data.y.len().max(2) as f64;
+    let noise = super::rest::difference_noise(&data.y) * (2.0 * n.ln()).sqrt();
+    let beyond = |share: f64| span > 0.0 && share > SHAPE_SHARE.max(noise / span);
+    let after = data.times.last().copied().unwrap_or(0.0) - data.input.t0();
+    let mean_slope = (f.y_final - f.y0) / after;
+    let ramps = after > 0.0 && f.final_slope * mean_slope > 0.0 && {
+        f.final_slope.abs() >= RAMP_RATIO * mean_slope.abs()
+    };
+    if ramps {
+        "P1DI"
+    } else if f.t_dip.is_some() && beyond(f.undershoot) {
+        "P2Z"
+    } else if f.t_peak.is_some_and(|t| t < 0.9 * after)
+        && f.overshoot_decay.is_some()
+        && beyond(f.overshoot)
+    {
+        "P2DU"
+    } else {
+        "P1D"
+    }
+}
+
 /// First instant at which the normalised curve reaches `level`, interpolated.
 fn first_crossing(e: &[(f64, f64)], level: f64) -> Option<f64> {
     e.windows(2).find_map(|w| {
@@ -731,6 +778,66 @@ mod tests {
         assert_eq!(rest.wild, 1);
         let data = rest_record(&[(12, 0.32)], Some(0.32));
         assert_eq!(rest_level(&data).unwrap().wild, 0);
+    }
+
+    /// A step record of `code` (values `params`) far from zero, from 10 s of rest on 0.25 s
+    /// samples to 120 s, with Gaussian noise of `noise` of the effect.
+    fn shaped(code: &str, params: &[(Param, f64)], noise: f64) -> FitData {
+        let s = Structure::parse(code).unwrap();
+        let mut v = Values::default();
+        v.set(Param::Y0, 40.0);
+        params.iter().for_each(|&(p, x)| v.set(p, x));
+        let times: Vec<f64> = (0..480).map(|k| 0.25 * k as f64).collect();
+        let input = Excitation::step(10.1, 5.0);
+        let mut y = Model::new(s, v).simulate(&input, &times).unwrap();
+        let effect = 5.0 * v.get(Param::Kp).abs();
+        let mut rng = super::super::fit::Lcg(3);
+        for x in y.iter_mut() {
+            let (a, b) = (rng.unit().max(1e-300), rng.unit());
+            *x += noise * effect * (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos();
+        }
+        FitData { times, y, input }
+    }
+
+    #[test]
+    fn the_suggested_structure_follows_the_shape() {
+        let code = |d: &FitData| suggested_structure(d).code();
+        for noise in [0.002, 0.02] {
+            // A first-order heater, with and without a dead time, even at 2 % noise.
+            let heater = shaped(
+                "P1D",
+                &[(Param::Kp, 0.8), (Param::Tp1, 20.0), (Param::Td, 2.0)],
+                noise,
+            );
+            assert_eq!(code(&heater), "P1D", "noise {noise}");
+            let slow = shaped("P1", &[(Param::Kp, -2.0), (Param::Tp1, 150.0)], noise);
+            assert_eq!(code(&slow), "P1D", "unsettled, noise {noise}");
+            let two = shaped(
+                "P2",
+                &[(Param::Kp, 1.5), (Param::Tp1, 12.0), (Param::Tp2, 4.0)],
+                noise,
+            );
+            assert_eq!(code(&two), "P1D", "noise {noise}");
+            let ringing = shaped(
+                "P2U",
+                &[(Param::Kp, 2.0), (Param::Tw, 3.0), (Param::Zeta, 0.3)],
+                noise,
+            );
+            assert_eq!(code(&ringing), "P2DU", "noise {noise}");
+            let inverse = shaped(
+                "P2Z",
+                &[
+                    (Param::Kp, 1.0),
+                    (Param::Tp1, 10.0),
+                    (Param::Tp2, 4.0),
+                    (Param::Tz, -8.0),
+                ],
+                noise,
+            );
+            assert_eq!(code(&inverse), "P2Z", "noise {noise}");
+            let ramp = shaped("P1I", &[(Param::Kp, 0.1), (Param::Tp1, 5.0)], noise);
+            assert_eq!(code(&ramp), "P1DI", "noise {noise}");
+        }
     }
 
     #[test]
