@@ -589,12 +589,22 @@ fn backward_step(
     current: &FitReport,
     added: Extension,
 ) -> Option<(Extension, Step)> {
-    EXTENSIONS
+    // The refits without each term are independent: spread over the cores, the first in
+    // EXTENSIONS' order that no longer pays is taken.
+    let removable: Vec<(Extension, Structure, Param)> = EXTENSIONS
         .into_iter()
         .filter(|e| *e != added)
-        .find_map(|e| {
+        .filter_map(|e| {
             let (s, param) = e.removed(current.model.structure)?;
-            let without = refit_without(data, current, s)?;
+            Some((e, s, param))
+        })
+        .collect();
+    let refits = super::parallel::map(&removable, |&(_, s, _)| refit_without(data, current, s));
+    removable
+        .into_iter()
+        .zip(refits)
+        .find_map(|((e, _, param), without)| {
+            let without = without?;
             let delta = judged_change(data, &without, current);
             no_longer_pays(current, param, delta).then(|| {
                 let step = Step {

@@ -91,8 +91,12 @@ pub fn hold_out(data: &FitData, current: &FitReport, candidate: &FitReport) -> O
     let keep: Vec<bool> = data.times.iter().map(|&t| t < at).collect();
     let estimation = data.keeping(&keep);
     let held = data.times.partition_point(|&t| t < at);
-    let a = held_errors(&estimation, data, held, current)?;
-    let b = held_errors(&estimation, data, held, candidate)?;
+    // The two refits are independent: one on each core.
+    let mut both = super::parallel::map(&[current, candidate], |r| {
+        held_errors(&estimation, data, held, r)
+    });
+    let b = both.pop().flatten()?;
+    let a = both.pop().flatten()?;
     let ms = |v: &[f64]| {
         // In units of the largest error, so that errors of 1e200 do not overflow a square.
         let unit = v.iter().fold(0.0f64, |m, e| m.max(e.abs()));
