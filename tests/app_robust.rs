@@ -318,7 +318,9 @@ fn flags_on_the_command_line_win_over_the_saved_session() {
         .lines()
         .count();
     assert_eq!(loaded.test.time.len(), rows);
-    assert_eq!(loaded.structure.code(), "P2DU");
+    // Not the saved record's P2DZ: the structure SBHS's own shape suggests (a heater).
+    assert_eq!(loaded.structure.code(), "P1D");
+    assert_eq!(ident.settings.code, "P1D");
     assert_eq!(ident.settings.y_col, "4");
     assert_eq!(
         loaded.experiment.initial_input, None,
@@ -345,6 +347,68 @@ fn flags_on_the_command_line_win_over_the_saved_session() {
     let loaded = h.state().ident.loaded.as_ref().expect("DaISy is loaded");
     assert_eq!(loaded.experiment.initial_input, Some(6.0));
     drop(h);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The structure shown in the "Model structure" box.
+fn shown_structure(h: &Harness<'_, DegrauApp>) -> Vec<String> {
+    h.get_all_by_role(egui::accesskit::Role::ComboBox)
+        .filter(|n| n.accesskit_node().label().as_deref() == Some("Model structure"))
+        .filter_map(|n| n.value())
+        .collect()
+}
+
+/// Issue 23, item 11: a record opened without `--model` starts on the structure its shape
+/// suggests, its guess drawn from it: a first-order heater on P1D (not an oscillating P2DU
+/// guess), an underdamped response on P2DU; `--model` still wins.
+#[test]
+fn a_record_opened_without_a_model_starts_on_the_structure_its_shape_suggests() {
+    use degrau::ident::excitation::Excitation;
+    use degrau::ident::models::{Model, Param, Structure, Values};
+    let dir = temp_dir("suggested");
+    let state = dir.join(FILE_NAME);
+    let records = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/records/");
+    let heater = format!("{records}tclab_step_q1_50_synthetic.csv");
+    let heater_flags = ["--time-col", "Time", "--y-col", "T1", "--u-col", "Q1"];
+    // An underdamped response written as a logger would: ζ 0.3, a step at 5 s, far from 0.
+    let mut v = Values::default();
+    for (p, x) in [
+        (Param::Kp, 2.0),
+        (Param::Tw, 1.5),
+        (Param::Zeta, 0.3),
+        (Param::Y0, 20.0),
+    ] {
+        v.set(p, x);
+    }
+    let times: Vec<f64> = (0..400).map(|k| 0.1 * k as f64).collect();
+    let y = Model::new(Structure::parse("P2U").expect("a code"), v)
+        .simulate(&Excitation::step(5.0, 3.0), &times)
+        .expect("a response");
+    let ringing = dir.join("ringing.csv");
+    let mut text = String::from("t,u,y\n");
+    for (t, y) in times.iter().zip(&y) {
+        let u = if *t >= 5.0 { 3.0 } else { 0.0 };
+        text.push_str(&format!("{t},{u},{y}\n"));
+    }
+    std::fs::write(&ringing, text).expect("write");
+    let ringing = ringing.display().to_string();
+    let ringing_flags = ["--time-col", "t", "--y-col", "y", "--u-col", "u"];
+    for (file, flags, model, expected) in [
+        (&heater, heater_flags, None, "P1D"),
+        (&ringing, ringing_flags, None, "P2DU"),
+        (&heater, heater_flags, Some("P2"), "P2"),
+    ] {
+        let mut args = vec![file.as_str()];
+        args.extend(flags);
+        if let Some(m) = model {
+            args.extend(["--model", m]);
+        }
+        let h = harness(DegrauApp::opening(state.clone(), open_flags(&args)));
+        let loaded = h.state().ident.loaded.as_ref().expect("loaded");
+        assert_eq!(loaded.structure.code(), expected, "{file} {model:?}");
+        assert_eq!(shown_structure(&h), [expected], "{file} {model:?}");
+        drop(h);
+    }
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -427,12 +491,7 @@ fn a_diagnosis_ending_on_p3z_starts_again_on_it() {
         .as_ref()
         .expect("the example is loaded");
     assert_eq!(loaded.structure.code(), "P3Z");
-    let shown: Vec<String> = h
-        .get_all_by_role(egui::accesskit::Role::ComboBox)
-        .filter(|n| n.accesskit_node().label().as_deref() == Some("Model structure"))
-        .filter_map(|n| n.value())
-        .collect();
-    assert_eq!(shown, ["P3Z"]);
+    assert_eq!(shown_structure(&h), ["P3Z"]);
     drop(h);
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -161,9 +161,10 @@ pub struct OpenArgs {
     /// stepped, such as DaISy's heating system).
     #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub initial_input: Option<f64>,
-    /// Model structure to start with.
-    #[arg(long, default_value = "P2DU")]
-    pub model: String,
+    /// Model structure to start with (default: the one the record's shape suggests: P1D,
+    /// or P2DU for an overshoot, P2Z for a dip first, P1DI for a ramp).
+    #[arg(long)]
+    pub model: Option<String>,
 }
 
 impl OpenArgs {
@@ -184,7 +185,11 @@ impl OpenArgs {
                 .initial_input
                 .map(|u| u.to_string())
                 .unwrap_or_default(),
-            code: self.model.to_ascii_uppercase(),
+            code: self
+                .model
+                .as_deref()
+                .map(str::to_ascii_uppercase)
+                .unwrap_or_default(),
             ..Default::default()
         }
     }

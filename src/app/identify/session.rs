@@ -348,6 +348,16 @@ fn optional_number(text: &str, choice: Choice) -> Result<Option<f64>, LoadError>
         .map_err(|error| LoadError::Choice { choice, error })
 }
 
+/// The structure `test`'s shape suggests ([`crate::ident::guess::suggested_structure`]):
+/// what a record starts with when no structure was asked for; the notes' P1D when its data
+/// cannot be read yet.
+fn suggested_code(test: &StepTest, experiment: &Experiment) -> String {
+    experiment.fit_data(test).map_or_else(
+        |_| "P1D".into(),
+        |d| crate::ident::guess::suggested_structure(&d).code(),
+    )
+}
+
 impl Session {
     /// A session with the given settings, with the test they name loaded again (the example
     /// or the file, with the choices made on it), as it was when the app was closed.
@@ -471,6 +481,8 @@ impl Session {
             Some(used) if used != source => {
                 let cleared = self.settings.reading_choices();
                 self.settings.clear_reading_choices();
+                // Another record: its structure is the one its own shape suggests.
+                self.settings.code.clear();
                 cleared
             }
             _ => Vec::new(),
@@ -539,6 +551,9 @@ impl Session {
             kept,
             cleared,
         });
+        if self.settings.code.trim().is_empty() {
+            self.settings.code = suggested_code(&test, &experiment);
+        }
         let structure =
             match Structure::parse(&self.settings.code).or_else(|_| Structure::parse("P1D")) {
                 Ok(s) => s,
