@@ -465,6 +465,66 @@ proptest::proptest! {
     }
 }
 
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
+    /// The Design mode's reachable states round-trip too, and the app starts on them with no
+    /// notice: a dead time or none, either gain form, any step amplitude, the loop open or
+    /// closed at any gain the field accepts, the locus and its complement, every input and
+    /// Padé order offered, either form of y(t).
+    #[test]
+    fn every_reachable_design_state_round_trips(
+        delay in proptest::sample::select(vec![0.0, 0.3, 2.0]),
+        static_gain: bool,
+        amplitude in proptest::sample::select(vec![1.0, 2.0, -4.0, 0.01]),
+        closed: bool,
+        kp in proptest::sample::select(vec![0.1, 1.0, 37.5, -2.0, 1e6]),
+        locus: bool,
+        complementary: bool,
+        input in proptest::sample::select(vec![
+            degrau::lti::feedback::Input::Impulse,
+            degrau::lti::feedback::Input::Step,
+            degrau::lti::feedback::Input::Ramp,
+            degrau::lti::feedback::Input::Parabola,
+        ]),
+        pade in proptest::sample::select(degrau::lti::feedback::PadeOrder::offered()),
+        phase_form: bool,
+        pt: bool,
+    ) {
+        let mut saved = Saved {
+            mode: degrau::app::Mode::Design,
+            lang: if pt { degrau::text::Lang::Pt } else { degrau::text::Lang::En },
+            ..Saved::default()
+        };
+        let design = &mut saved.design;
+        design.system.delay = delay;
+        design.system.amplitude = amplitude;
+        if static_gain {
+            design.system.gain_mode = degrau::app::design::state::GainMode::Static;
+        }
+        design.phase_form = phase_form;
+        let feedback = &mut design.feedback;
+        feedback.closed = closed;
+        feedback.kp = kp;
+        feedback.locus = locus;
+        feedback.complementary = complementary;
+        feedback.input = input;
+        feedback.pade = pade;
+        let text = serde_json::to_string(&saved).expect("json");
+        let (restored, problems) = degrau::app::persist::restore_text(&text);
+        proptest::prop_assert!(problems.is_empty(), "{problems:?}");
+        proptest::prop_assert_eq!(serde_json::to_string(&restored).expect("json"), text.clone());
+        let dir = temp_dir("design-state");
+        let path = dir.join(FILE_NAME);
+        std::fs::write(&path, &text).expect("write");
+        let h = harness(DegrauApp::with_state_file(path));
+        let notice = h.query_by_label_contains("could not be restored").is_none()
+            && h.query_by_label_contains("não pôde ser restaurad").is_none();
+        drop(h);
+        std::fs::remove_dir_all(&dir).ok();
+        proptest::prop_assert!(notice, "a notice on {text}");
+    }
+}
+
 /// A session saved on a structure the menu does not list starts again on it, with no
 /// notice, and the structure box shows it.
 #[test]
