@@ -465,12 +465,33 @@ proptest::proptest! {
     }
 }
 
+/// No approximation, and every one the comparison table lists for a third-order system
+/// with a dead time (every reduction and every stand-in for the delay).
+fn approximations() -> Vec<Option<degrau::lti::approx::Approximation>> {
+    use degrau::lti::{C64, TransferFunction};
+    let poles = [
+        C64::new(-1.0, 2.0),
+        C64::new(-1.0, -2.0),
+        C64::new(-5.0, 0.0),
+    ];
+    let g = TransferFunction::from_zpk(&[], &poles, 0.5)
+        .and_then(|g| g.with_delay(0.3))
+        .expect("a system");
+    let mut all = vec![None];
+    all.extend(
+        degrau::lti::approx::Approximation::catalogue(&g)
+            .into_iter()
+            .map(Some),
+    );
+    all
+}
+
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(32))]
     /// The Design mode's reachable states round-trip too, and the app starts on them with no
     /// notice: a dead time or none, either gain form, any step amplitude, the loop open or
     /// closed at any gain the field accepts, the locus and its complement, every input and
-    /// Padé order offered, either form of y(t).
+    /// Padé order offered, either form of y(t), every approximation with its table or not.
     #[test]
     fn every_reachable_design_state_round_trips(
         delay in proptest::sample::select(vec![0.0, 0.3, 2.0]),
@@ -489,6 +510,8 @@ proptest::proptest! {
         pade in proptest::sample::select(degrau::lti::feedback::PadeOrder::offered()),
         phase_form: bool,
         pt: bool,
+        approx in proptest::sample::select(approximations()),
+        approx_table: bool,
     ) {
         let mut saved = Saved {
             mode: degrau::app::Mode::Design,
@@ -502,6 +525,7 @@ proptest::proptest! {
             design.system.gain_mode = degrau::app::design::state::GainMode::Static;
         }
         design.phase_form = phase_form;
+        (design.approx, design.approx_table) = (approx, approx_table);
         let feedback = &mut design.feedback;
         feedback.closed = closed;
         feedback.kp = kp;
@@ -519,6 +543,9 @@ proptest::proptest! {
         let h = harness(DegrauApp::with_state_file(path));
         let notice = h.query_by_label_contains("could not be restored").is_none()
             && h.query_by_label_contains("não pôde ser restaurad").is_none();
+        // The approximation chosen is the one shown again.
+        let shown = h.state().design.approx.choice;
+        proptest::prop_assert_eq!(shown, approx);
         drop(h);
         std::fs::remove_dir_all(&dir).ok();
         proptest::prop_assert!(notice, "a notice on {text}");

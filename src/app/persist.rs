@@ -202,6 +202,8 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
         options: f.checked("options", d.design.options, |o| o.validate()),
         phase_form: f.take("phase_form", d.design.phase_form),
         feedback: f.checked("feedback", d.design.feedback, |l| l.validate()),
+        approx: f.take("approx", d.design.approx),
+        approx_table: f.take("approx_table", d.design.approx_table),
         system,
     };
     let mut saved = Saved {

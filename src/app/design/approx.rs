@@ -276,9 +276,10 @@ fn count_field(
     value: usize,
     range: std::ops::RangeInclusive<usize>,
 ) -> Option<usize> {
-    ui.label(label);
+    let name = ui.label(label);
     let mut v = value;
-    ui.add(egui::DragValue::new(&mut v).range(range).speed(0.05));
+    ui.add(egui::DragValue::new(&mut v).range(range).speed(0.05))
+        .labelled_by(name.id);
     (v != value).then_some(v)
 }
 

@@ -32,6 +32,9 @@ pub struct Kept {
     pub phase_form: bool,
     /// The closed loop, the locus, the specs and the Padé order the student chose.
     pub feedback: LoopSettings,
+    /// The approximation shown, if any, and whether every method's table is open.
+    pub approx: Option<crate::lti::approx::Approximation>,
+    pub approx_table: bool,
 }
 
 /// The Design mode's history and derived data.
@@ -74,7 +77,12 @@ impl Session {
             },
             dragging: None,
             dragging_loop: false,
-            approx: Default::default(),
+            // Its model and comparison are derived at the first refresh.
+            approx: {
+                let mut a = super::approx::ApproxView::default();
+                (a.choice, a.show_table) = (kept.approx, kept.approx_table);
+                a
+            },
         }
     }
 
@@ -200,7 +208,10 @@ impl Session {
             }
             Command::SetPhaseForm(on) => kept.phase_form = on,
             Command::Readout(text) => self.readout = text,
-            Command::Approx(c) => self.approx.apply(c),
+            Command::Approx(c) => {
+                self.approx.apply(c);
+                (kept.approx, kept.approx_table) = (self.approx.choice, self.approx.show_table);
+            }
             Command::SetCoefficients { num, den } => {
                 if let Some(system) = from_coefficients(&kept.system, &num, &den) {
                     self.replace(kept, system);
