@@ -391,18 +391,7 @@ mod tests {
         let mut tried = 0;
         while tried < 40 {
             let lag = |rng: &mut crate::ident::fit::Lcg| 0.2 * 500f64.powf(rng.unit());
-            let (t1, t2, t3) = (lag(&mut rng), lag(&mut rng), lag(&mut rng));
-            let x = transient(
-                "P3",
-                &[
-                    (Param::Tp1, t1),
-                    (Param::Tp2, t2),
-                    (Param::Tp3, t3),
-                    (Param::X1, 1.0),
-                    (Param::X2, -0.7),
-                    (Param::X3, 0.3),
-                ],
-            );
+            let x = three_lags((lag(&mut rng), lag(&mut rng), lag(&mut rng)));
             let Modes::Real {
                 center, offsets, ..
             } = &x.modes
@@ -423,19 +412,23 @@ mod tests {
             (10.0, 10.0 * (1.0 + 1e-9), 9.99),
             (8.0, 8.0, 8.0),
         ] {
-            let x = transient(
-                "P3",
-                &[
-                    (Param::Tp1, t1),
-                    (Param::Tp2, t2),
-                    (Param::Tp3, t3),
-                    (Param::X1, 1.0),
-                    (Param::X2, -0.7),
-                    (Param::X3, 0.3),
-                ],
-            );
-            walk_matches_exact(&x);
+            walk_matches_exact(&three_lags((t1, t2, t3)));
         }
+    }
+
+    /// A P3's transient with lags `(t1, t2, t3)` and coefficients 1, −0.7, 0.3.
+    fn three_lags((t1, t2, t3): (f64, f64, f64)) -> Transient {
+        transient(
+            "P3",
+            &[
+                (Param::Tp1, t1),
+                (Param::Tp2, t2),
+                (Param::Tp3, t3),
+                (Param::X1, 1.0),
+                (Param::X2, -0.7),
+                (Param::X3, 0.3),
+            ],
+        )
     }
 
     #[test]
