@@ -93,6 +93,12 @@ pub struct Transform {
 }
 
 impl Transform {
+    /// Whether a handle at `at` is on the canvas (one off it is neither drawn nor offered
+    /// to a screen reader), or is being dragged as `id` (the drag follows the pointer out).
+    pub fn holds_handle(&self, ui: &Ui, at: Pos2, id: egui::Id) -> bool {
+        self.rect.contains(at) || ui.ctx().is_being_dragged(id)
+    }
+
     /// The canvas's rect on screen.
     pub fn rect(&self) -> Rect {
         self.rect
@@ -177,7 +183,7 @@ pub fn show(
     let size = ui.available_size().max(Vec2::splat(120.0));
     let (rect, background) = ui.allocate_exact_size(size, Sense::click_and_drag());
     let name = P::PlaneName.get(look.lang);
-    background.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
+    crate::app::look::name_canvas(&background, name);
     let view = state
         .view
         .and_then(View::sane)
@@ -484,6 +490,9 @@ fn handle(
         let at = t.to_screen(root.re, im);
         let rect = Rect::from_center_size(at, Vec2::splat(2.0 * HANDLE_RADIUS));
         let widget_id = ui.scope_id().with(("root", id, k));
+        if !t.holds_handle(ui, at, widget_id) {
+            continue;
+        }
         let response = ui.interact(rect, widget_id, Sense::click_and_drag());
         let text = label.clone();
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, &text));
