@@ -265,6 +265,7 @@ fn layout_problems(h: &Harness<'_, DegrauApp>) -> Vec<String> {
             }
         }
     }
+    problems.extend(words_on_plots(h, &canvases));
     for plot in all
         .iter()
         .filter(|w| w.role == egui::accesskit::Role::Canvas)
@@ -275,6 +276,54 @@ fn layout_problems(h: &Harness<'_, DegrauApp>) -> Vec<String> {
                 "the plot {:?} is shown at {:?} (under 220 points)",
                 plot.name, plot.shown
             ));
+        }
+    }
+    problems
+}
+
+/// The texts painted on a plot (captions, status, marker labels, the s-plane's ticks): each
+/// whole inside what it is clipped to, none over another.
+fn words_on_plots(h: &Harness<'_, DegrauApp>, canvases: &[egui::Rect]) -> Vec<String> {
+    fn walk(
+        shape: &egui::Shape,
+        clip: egui::Rect,
+        out: &mut Vec<(String, egui::Rect, egui::Rect)>,
+    ) {
+        match shape {
+            egui::Shape::Text(t) if !t.galley.text().trim().is_empty() => out.push((
+                t.galley.text().to_string(),
+                t.galley.rect.translate(t.pos.to_vec2()),
+                clip,
+            )),
+            egui::Shape::Vec(v) => v.iter().for_each(|s| walk(s, clip, out)),
+            _ => {}
+        }
+    }
+    let mut texts = Vec::new();
+    for c in &h.output().shapes {
+        walk(&c.shape, c.clip_rect, &mut texts);
+    }
+    let on_plot = |r: &egui::Rect| canvases.iter().position(|c| c.contains(r.center()));
+    let texts: Vec<_> = texts
+        .into_iter()
+        .filter_map(|(t, r, clip)| on_plot(&r).map(|k| (t, r, clip, k)))
+        .collect();
+    let mut problems = Vec::new();
+    for (t, r, clip, _) in &texts {
+        if !clip.expand(1.0).contains_rect(*r) {
+            problems.push(format!(
+                "the text {t:?} on a plot at {r:?} is cut by its edge {clip:?}"
+            ));
+        }
+    }
+    for (i, (ta, ra, _, ka)) in texts.iter().enumerate() {
+        for (tb, rb, _, kb) in &texts[i + 1..] {
+            let cut = ra.intersect(*rb);
+            if ka == kb && cut.width() > 1.0 && cut.height() > 1.0 {
+                problems.push(format!(
+                    "on a plot, {ta:?} at {ra:?} is over {tb:?} at {rb:?}"
+                ));
+            }
         }
     }
     problems
@@ -374,5 +423,19 @@ fn every_mode_fits_every_classroom_size() {
         "{} layout problems:\n{}",
         problems.len(),
         problems.join("\n")
+    );
+}
+/// At 1000×650 the step plot's controls are one line scrolled sideways: its scroll bar must
+/// not take the clicks on the line (it took the lower half of each toggle).
+#[test]
+fn the_one_line_markers_bar_takes_a_click_at_1000_by_650() {
+    let mut h = at_scale(1.0, [1000.0, 650.0]);
+    let before = h.state().saved.design.markers.rise;
+    h.get_by_label("Rise").click();
+    h.run_steps(2);
+    assert_ne!(
+        h.state().saved.design.markers.rise,
+        before,
+        "the Rise toggle took the click"
     );
 }

@@ -147,6 +147,26 @@ pub fn name_canvas(response: &eframe::egui::Response, name: &str) {
     });
 }
 
+/// One line of widgets scrolled sideways when it does not fit, with room under it for the
+/// scroll bar (a floating bar over the line took the clicks on its lower half).
+pub fn one_line<R>(
+    ui: &mut eframe::egui::Ui,
+    id: &str,
+    add: impl FnOnce(&mut eframe::egui::Ui) -> R,
+) -> R {
+    eframe::egui::ScrollArea::horizontal()
+        .id_salt(id)
+        .show(ui, |ui| {
+            let inner = ui.horizontal(add).inner;
+            // The line's middle (where a click lands) is kept clear of the bar.
+            let bar = ui.spacing().scroll;
+            let zone = bar.bar_width + bar.bar_inner_margin + bar.bar_outer_margin;
+            ui.add_space((zone - 0.5 * ui.spacing().interact_size.y + 1.0).max(0.0));
+            inner
+        })
+        .inner
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

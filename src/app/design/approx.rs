@@ -228,28 +228,24 @@ const PLOT_AXIS: f32 = 12.0;
 fn chooser(ui: &mut Ui, view: &ApproxView, look: &Look) -> Vec<ApproxCommand> {
     let lang = look.lang;
     let mut out = Vec::new();
-    egui::ScrollArea::horizontal()
-        .id_salt("approximation methods")
-        .show(ui, |ui| {
-            ui.horizontal(|ui| {
-                ui.label(RichText::new(format!("{}:", P::Heading.get(lang))).strong());
-                if ui
-                    .selectable_label(view.choice.is_none(), P::NoMethod.get(lang))
-                    .clicked()
-                {
-                    out.push(ApproxCommand::Choose(None));
-                }
-                for kind in kinds() {
-                    let chosen = view.choice.is_some_and(|c| same_kind(&c, &kind));
-                    let response = ui
-                        .selectable_label(chosen, button_name(&kind, lang))
-                        .on_hover_text(words::kind_name(&kind, lang));
-                    if response.clicked() && !chosen {
-                        out.push(ApproxCommand::Choose(Some(kind)));
-                    }
-                }
-            });
-        });
+    crate::app::look::one_line(ui, "approximation methods", |ui| {
+        ui.label(RichText::new(format!("{}:", P::Heading.get(lang))).strong());
+        if ui
+            .selectable_label(view.choice.is_none(), P::NoMethod.get(lang))
+            .clicked()
+        {
+            out.push(ApproxCommand::Choose(None));
+        }
+        for kind in kinds() {
+            let chosen = view.choice.is_some_and(|c| same_kind(&c, &kind));
+            let response = ui
+                .selectable_label(chosen, button_name(&kind, lang))
+                .on_hover_text(words::kind_name(&kind, lang));
+            if response.clicked() && !chosen {
+                out.push(ApproxCommand::Choose(Some(kind)));
+            }
+        }
+    });
     out
 }
 

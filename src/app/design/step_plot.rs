@@ -67,61 +67,66 @@ pub fn controls(ui: &mut Ui, kept: &Kept, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let (markers, options) = (kept.markers, kept.options);
     let mut out = Vec::new();
-    // One line, scrolled sideways in a narrow window: wrapped, it took the plot's height.
-    egui::ScrollArea::horizontal()
-        .id_salt("step plot controls")
-        .show(ui, |ui| {
-            ui.horizontal(|ui| {
-                ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
-                ui.label(P::MarkersLabel.get(lang));
-                let mut m = markers;
-                let toggles: [(&mut bool, P, Metric); 5] = [
-                    (&mut m.rise, P::Rise, Metric::RiseTime),
-                    (&mut m.peak, P::Peak, Metric::Overshoot),
-                    (&mut m.settling, P::Settling, Metric::SettlingTime),
-                    (&mut m.steady_state, P::SteadyState, Metric::SteadyState),
-                    (&mut m.undershoot, P::Undershoot, Metric::Undershoot),
-                ];
-                for (flag, name, metric) in toggles {
-                    ui.checkbox(flag, name.get(lang))
-                        .on_hover_text(metric.definition(&options, lang));
-                }
-                ui.checkbox(&mut m.ghost, P::Previous.get(lang))
-                    .on_hover_text(P::PreviousHelp.get(lang));
-                if m != markers {
-                    out.push(Command::SetMarkers(m));
-                }
-                ui.separator();
-                let mut o = options;
-                let band = |t: f64| format!("{} ±{} %", P::Band.get(lang), pct(t, lang));
-                egui::ComboBox::from_id_salt("settling band")
-                    .selected_text(band(o.settling_threshold))
-                    .show_ui(ui, |ui| {
-                        for t in [0.02, 0.05] {
-                            ui.selectable_value(&mut o.settling_threshold, t, band(t));
-                        }
-                    })
-                    .response
-                    .on_hover_text(P::BandHelp.get(lang));
-                let rise = |(a, b): (f64, f64)| {
-                    format!("{} {}–{} %", P::Rise.get(lang), pct(a, lang), pct(b, lang))
-                };
-                egui::ComboBox::from_id_salt("rise limits")
-                    .selected_text(rise(o.rise_limits))
-                    .show_ui(ui, |ui| {
-                        for limits in [(0.1, 0.9), (0.05, 0.95)] {
-                            ui.selectable_value(&mut o.rise_limits, limits, rise(limits));
-                        }
-                    })
-                    .response
-                    .on_hover_text(P::RiseHelp.get(lang));
-                if o != options {
-                    out.push(Command::SetOptions(o));
+    let bar = |ui: &mut Ui| {
+        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
+        ui.label(P::MarkersLabel.get(lang));
+        let mut m = markers;
+        let toggles: [(&mut bool, P, Metric); 5] = [
+            (&mut m.rise, P::Rise, Metric::RiseTime),
+            (&mut m.peak, P::Peak, Metric::Overshoot),
+            (&mut m.settling, P::Settling, Metric::SettlingTime),
+            (&mut m.steady_state, P::SteadyState, Metric::SteadyState),
+            (&mut m.undershoot, P::Undershoot, Metric::Undershoot),
+        ];
+        for (flag, name, metric) in toggles {
+            ui.checkbox(flag, name.get(lang))
+                .on_hover_text(metric.definition(&options, lang));
+        }
+        ui.checkbox(&mut m.ghost, P::Previous.get(lang))
+            .on_hover_text(P::PreviousHelp.get(lang));
+        if m != markers {
+            out.push(Command::SetMarkers(m));
+        }
+        ui.separator();
+        let mut o = options;
+        let band = |t: f64| format!("{} ±{} %", P::Band.get(lang), pct(t, lang));
+        egui::ComboBox::from_id_salt("settling band")
+            .selected_text(band(o.settling_threshold))
+            .show_ui(ui, |ui| {
+                for t in [0.02, 0.05] {
+                    ui.selectable_value(&mut o.settling_threshold, t, band(t));
                 }
             })
-        });
+            .response
+            .on_hover_text(P::BandHelp.get(lang));
+        let rise = |(a, b): (f64, f64)| {
+            format!("{} {}–{} %", P::Rise.get(lang), pct(a, lang), pct(b, lang))
+        };
+        egui::ComboBox::from_id_salt("rise limits")
+            .selected_text(rise(o.rise_limits))
+            .show_ui(ui, |ui| {
+                for limits in [(0.1, 0.9), (0.05, 0.95)] {
+                    ui.selectable_value(&mut o.rise_limits, limits, rise(limits));
+                }
+            })
+            .response
+            .on_hover_text(P::RiseHelp.get(lang));
+        if o != options {
+            out.push(Command::SetOptions(o));
+        }
+    };
+    // Wrapped when the plot has height to spare; else one line scrolled sideways (wrapped
+    // in a short window, it took the plot's height).
+    if ui.available_height() > super::PLOT_MIN + WRAPPED_ROOM {
+        ui.horizontal_wrapped(bar);
+    } else {
+        crate::app::look::one_line(ui, "step plot controls", bar);
+    }
     out
 }
+
+/// Height the wrapped controls may take above the plot (its title and x axis included).
+const WRAPPED_ROOM: f32 = 160.0;
 
 /// The y range the current curves span (the step's start, 0, included), with a margin; the
 /// ghost is not a current curve and never widens it.
@@ -489,8 +494,9 @@ pub fn draw_step_markers_in(
         );
         if labelled {
             plot.text(
-                Text::new(name, PlotPoint::new(tp, y), format!("  {} %", num(os)))
-                    .anchor(egui::Align2::LEFT_BOTTOM)
+                // Beside the peak, not above it: above, the plot's top edge cut it.
+                Text::new(name, PlotPoint::new(tp, y), format!("   {} %", num(os)))
+                    .anchor(egui::Align2::LEFT_CENTER)
                     .color(color),
             );
         }

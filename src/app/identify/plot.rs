@@ -200,7 +200,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                 );
             }
         });
-    crate::app::look::name_canvas(&response.response, Phrase::MeasuredAndModel.get(lang));
+    crate::app::look::name_canvas(&response.response, Phrase::PlotName.get(lang));
     let transform = response.transform;
     if !session.is_fitting() {
         // The line first, so that a model handle on top of it wins the pointer.
