@@ -414,6 +414,12 @@ fn every_mode_fits_every_classroom_size() {
     let mut problems = Vec::new();
     let mut design = design_with_every_panel();
     problems.extend(problems_everywhere(&mut design, "Design", 4));
+    // An unstable system says so on the step plot, whole.
+    let mut saved = Saved::default();
+    saved.design.system.poles[0].re = 1.0;
+    let mut unstable = harness(DegrauApp::new(saved), [1600.0, 900.0]);
+    assert!(unstable.state().system().has_rhp_pole());
+    problems.extend(problems_everywhere(&mut unstable, "Design, unstable", 2));
     let mut identify = identify_with_a_diagnosis();
     problems.extend(problems_everywhere(&mut identify, "Identify", 1));
     identify.state_mut().saved.mode = degrau::app::Mode::LeastSquares;

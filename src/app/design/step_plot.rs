@@ -359,6 +359,15 @@ fn plot_title(analysis: &Analysis, lang: crate::text::Lang) -> String {
     )
 }
 
+/// `text` laid out in lines no wider than most of the plot (one line ran out of both
+/// sides of a small plot).
+fn wrapped(plot: &egui_plot::PlotUi<'_>, text: String, color: egui::Color32) -> egui::WidgetText {
+    let width = 0.9 * plot.transform().frame().width();
+    let job = egui::text::LayoutJob::simple(text, FontId::proportional(PLOT_TEXT), color, width);
+    let galley = plot.ctx().fonts_mut(|f| f.layout_job(job));
+    egui::WidgetText::Galley(galley)
+}
+
 fn draw_markers(
     plot: &mut egui_plot::PlotUi<'_>,
     analysis: &Analysis,
@@ -372,11 +381,13 @@ fn draw_markers(
     let (lang, color) = (look.lang, look.palette.marker);
     if info.steady_state.is_none() {
         let y_end = analysis.curve.last().map_or(0.0, |p| p[1]);
+        let status = crate::text::Localize::text(&response.behaviour(), lang);
+        let status = wrapped(plot, status, look.palette.error);
         plot.text(
             Text::new(
                 P::DoesNotSettle.get(lang),
                 PlotPoint::new(0.5 * analysis.horizon, 0.5 * y_end),
-                crate::text::Localize::text(&response.behaviour(), lang),
+                status,
             )
             .color(look.palette.error),
         );
