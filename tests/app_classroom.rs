@@ -329,20 +329,39 @@ fn words_on_plots(h: &Harness<'_, DegrauApp>, canvases: &[egui::Rect]) -> Vec<St
     problems
 }
 
+/// Shows `h` as a window of `size` pixels at the presentation size `zoom` in `lang`: the
+/// harness takes its size in points, so it is given the pixels over the zoom drawn at, until
+/// the zoom (capped by the window) holds still.
+fn present(h: &mut Harness<'_, DegrauApp>, size: [f32; 2], zoom: f32, lang: Lang) {
+    h.state_mut().saved.scale = zoom;
+    h.state_mut().saved.lang = lang;
+    for _ in 0..4 {
+        let drawn = h.ctx.zoom_factor();
+        h.set_size(egui::vec2(size[0], size[1]) / drawn);
+        h.run_steps(3);
+    }
+    let window = h.ctx.content_rect().size() * h.ctx.zoom_factor();
+    assert!(
+        (window - egui::vec2(size[0], size[1])).length() < 2.0,
+        "the harness shows a window of {window:?} pixels for {size:?} at {zoom}×"
+    );
+}
+
 /// The problems of `h`'s mode at every size, zoom and language, each line saying where.
 fn problems_everywhere(h: &mut Harness<'_, DegrauApp>, mode: &str, canvases: usize) -> Vec<String> {
     let mut out = Vec::new();
     for size in SIZES {
         for zoom in ZOOMS {
             for lang in Lang::ALL {
-                h.set_size(egui::vec2(size[0], size[1]));
-                h.state_mut().saved.scale = zoom;
-                h.state_mut().saved.lang = lang;
-                h.run_steps(5);
+                present(h, size, zoom, lang);
+                let window = h.ctx.content_rect().size();
                 let at = format!(
-                    "{mode}, {}×{} at {zoom}×, {}",
+                    "{mode}, {}×{} at {zoom}× (drawn at {:.2}×, {:.0}×{:.0} points), {}",
                     size[0],
                     size[1],
+                    h.ctx.zoom_factor(),
+                    window.x,
+                    window.y,
                     lang.name()
                 );
                 let mut problems = layout_problems(h);

@@ -13,8 +13,8 @@ pub const SCALE_RANGE: std::ops::RangeInclusive<f32> = 1.0..=2.0;
 
 /// The smallest window (points at the presentation size) every mode is laid out for: the
 /// presentation size is capped so the window keeps at least this much, its menu and its
-/// plots (a 1000×650 window stays at 1×; 1600×900 goes up to 1.4×).
-pub const LAYOUT_MIN: [f32; 2] = [1000.0, 640.0];
+/// plots (a 1000×650 window stays at 1×; 1600×900 goes up to 1.38×).
+pub const LAYOUT_MIN: [f32; 2] = [1000.0, 650.0];
 
 /// The zoom to draw at: the presentation size asked for, capped so a window of
 /// `window` points at 1× keeps [`LAYOUT_MIN`] (never below 1×).
@@ -199,9 +199,9 @@ mod tests {
     #[test]
     fn the_zoom_keeps_the_smallest_layout() {
         assert_eq!(fitted_zoom(1.6, [1000.0, 650.0]), 1.0);
-        assert!((fitted_zoom(1.6, [1600.0, 900.0]) - 900.0 / 640.0).abs() < 1e-6);
+        assert!((fitted_zoom(1.6, [1600.0, 900.0]) - 900.0 / 650.0).abs() < 1e-6);
         assert_eq!(fitted_zoom(1.2, [1600.0, 900.0]), 1.2);
-        assert_eq!(fitted_zoom(2.0, [2400.0, 1400.0]), 2.0);
+        assert_eq!(fitted_zoom(2.0, [2400.0, 1300.0]), 2.0);
         assert_eq!(fitted_zoom(1.6, [0.0, 0.0]), 1.0);
     }
 
