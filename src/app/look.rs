@@ -11,6 +11,19 @@ use crate::text::Lang;
 /// The smallest and largest presentation size (a factor on text, markers and lines).
 pub const SCALE_RANGE: std::ops::RangeInclusive<f32> = 1.0..=2.0;
 
+/// The smallest window (points at the presentation size) every mode is laid out for: the
+/// presentation size is capped so the window keeps at least this much, its menu and its
+/// plots (a 1000×650 window stays at 1×; 1600×900 goes up to 1.38×).
+pub const LAYOUT_MIN: [f32; 2] = [1000.0, 650.0];
+
+/// The zoom to draw at: the presentation size asked for, capped so a window of
+/// `window` points at 1× keeps [`LAYOUT_MIN`] (never below 1×).
+pub fn fitted_zoom(scale: f32, window: [f32; 2]) -> f32 {
+    let room = (window[0] / LAYOUT_MIN[0]).min(window[1] / LAYOUT_MIN[1]);
+    let room = if room.is_finite() { room } else { 1.0 };
+    clamp_scale(scale.min(room))
+}
+
 /// Every colour the app draws with, for one theme.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Palette {
@@ -127,6 +140,33 @@ pub fn clamp_scale(scale: f32) -> f32 {
     }
 }
 
+/// Names a plot or canvas for a screen reader (and the layout tests): a canvas `name`.
+pub fn name_canvas(response: &eframe::egui::Response, name: &str) {
+    response.widget_info(|| {
+        eframe::egui::WidgetInfo::labeled(eframe::egui::accesskit::Role::Canvas, true, name)
+    });
+}
+
+/// One line of widgets scrolled sideways when it does not fit, with room under it for the
+/// scroll bar (a floating bar over the line took the clicks on its lower half).
+pub fn one_line<R>(
+    ui: &mut eframe::egui::Ui,
+    id: &str,
+    add: impl FnOnce(&mut eframe::egui::Ui) -> R,
+) -> R {
+    eframe::egui::ScrollArea::horizontal()
+        .id_salt(id)
+        .show(ui, |ui| {
+            let inner = ui.horizontal(add).inner;
+            // The line's middle (where a click lands) is kept clear of the bar.
+            let bar = ui.spacing().scroll;
+            let zone = bar.bar_width + bar.bar_inner_margin + bar.bar_outer_margin;
+            ui.add_space((zone - 0.5 * ui.spacing().interact_size.y + 1.0).max(0.0));
+            inner
+        })
+        .inner
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -154,6 +194,15 @@ mod tests {
         let (dr, dg, db) = (r1 - r2, g1 - g2, b1 - b2);
         ((2.0 + mean / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - mean) / 256.0) * db * db)
             .sqrt()
+    }
+
+    #[test]
+    fn the_zoom_keeps_the_smallest_layout() {
+        assert_eq!(fitted_zoom(1.6, [1000.0, 650.0]), 1.0);
+        assert!((fitted_zoom(1.6, [1600.0, 900.0]) - 900.0 / 650.0).abs() < 1e-6);
+        assert_eq!(fitted_zoom(1.2, [1600.0, 900.0]), 1.2);
+        assert_eq!(fitted_zoom(2.0, [2400.0, 1300.0]), 2.0);
+        assert_eq!(fitted_zoom(1.6, [0.0, 0.0]), 1.0);
     }
 
     #[test]

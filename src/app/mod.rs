@@ -391,10 +391,13 @@ impl DegrauApp {
             self.dirty = true;
         }
         self.saved.scale = clamp_scale(self.saved.scale);
-        if (ctx.zoom_factor() - self.saved.scale).abs() > 1e-3 {
-            ctx.set_zoom_factor(self.saved.scale);
+        // A small window keeps its menu and plots: the zoom is capped to what it holds.
+        let window = ctx.content_rect().size() * zoom;
+        let fitted = look::fitted_zoom(self.saved.scale, [window.x, window.y]);
+        if (zoom - fitted).abs() > 1e-3 {
+            ctx.set_zoom_factor(fitted);
         }
-        self.zoom_set = self.saved.scale;
+        self.zoom_set = fitted;
     }
 
     /// Applies the frame's commands, in order, and asks for the next frame to show them.
@@ -611,8 +614,15 @@ impl DegrauApp {
         {
             out.push(Command::SetScale(scale - step));
         }
-        ui.label(format!("{}×", lang.num(scale as f64, 2)))
-            .on_hover_text(T::PresentationSize.get(lang));
+        // The size drawn at: less than the one asked for when the window is too small.
+        let capped = self.zoom_set < scale - 1e-3;
+        let hint = if capped {
+            T::SizeCapped
+        } else {
+            T::PresentationSize
+        };
+        ui.label(format!("{}×", lang.num(self.zoom_set as f64, 2)))
+            .on_hover_text(hint.get(lang));
         if ui
             .add_enabled(scale < *SCALE_RANGE.end() - 1e-3, egui::Button::new("A+"))
             .on_hover_text(T::Larger.get(lang))

@@ -37,6 +37,10 @@ crate::phrases! {
         Smaller => ("Smaller text and lines", "Texto e linhas menores"),
         Larger => ("Larger text and lines (for a projector)", "Texto e linhas maiores (para projetor)"),
         Language => ("Language", "Idioma"),
+        SizeCapped => (
+            "Presentation size limited so this window keeps its menu and plots: enlarge the window for more",
+            "Tamanho de apresentação limitado para a janela manter o menu e os gráficos: aumente a janela para mais"
+        ),
         Dismiss => ("Dismiss", "Dispensar"),
         NoHome => (
             "There is no home directory to keep the session in: it will not be saved.",

@@ -68,6 +68,10 @@ crate::phrases! {
         Mirror => ("mirror", "espelho"),
         PlaneName => ("s-plane", "plano s"),
         PlotName => ("step response", "resposta ao degrau"),
+        MetricsFolded => (
+            "Step metrics (here while an approximation is shown in a small window)",
+            "Métricas do degrau (aqui enquanto uma aproximação é mostrada numa janela pequena)"
+        ),
         AddRealPoleHere => ("Add real pole here", "Acrescentar polo real aqui"),
         AddPolePairHere => ("Add complex pole pair here", "Acrescentar par de polos complexos aqui"),
         AddRealZeroHere => ("Add real zero here", "Acrescentar zero real aqui"),

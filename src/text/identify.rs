@@ -163,6 +163,7 @@ crate::phrases! {
             "A janela e o filtro escolhidos não deixam nada para mostrar."
         ),
         MeasuredAndModel => ("Measured output and model", "Saída medida e modelo"),
+        PlotName => ("plot of the measured output", "gráfico da saída medida"),
         Measured => ("measured", "medido"),
         StepAt => ("step at t0 = {} s", "degrau em t0 = {} s"),
         Evidence => ("evidence", "evidência"),

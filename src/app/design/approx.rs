@@ -170,10 +170,22 @@ fn same_kind(a: &Approximation, b: &Approximation) -> bool {
         }
 }
 
-/// Draws the approximation view as a panel above the metrics; the commands it asks for.
-pub fn panel(ui: &mut Ui, view: &ApproxView, analysis: &Analysis, look: &Look) -> Vec<Command> {
+/// Draws a view folded into the approximation's words (the metrics table), with its commands.
+pub type Folded<'a> = &'a mut dyn FnMut(&mut Ui) -> Vec<Command>;
+
+/// Draws the approximation view as a panel at the bottom of the whole width; the commands
+/// it asks for.
+///
+/// `metrics`, when given, draws the metrics table folded at the end of the words (a window
+/// too short for both panels).
+pub fn panel(
+    ui: &mut Ui,
+    view: &ApproxView,
+    analysis: &Analysis,
+    look: &Look,
+    metrics: Option<Folded<'_>>,
+) -> Vec<Command> {
     let open = view.choice.is_some();
-    let full = ui.available_rect_before_wrap().height();
     let id = if open {
         "approximation"
     } else {
@@ -181,29 +193,42 @@ pub fn panel(ui: &mut Ui, view: &ApproxView, analysis: &Analysis, look: &Look) -
     };
     let mut panel = egui::Panel::bottom(id).resizable(open);
     if open {
-        // As the metrics panel: the plots above keep at least their smallest height.
-        let max = (full - super::PLOT_MIN - 80.0).max(160.0);
-        panel = panel
-            .default_size(340.0f32.min(max))
-            .size_range(160.0..=max);
+        // Its plots at their smallest size; more when the window is tall enough.
+        let need = open_height(ui);
+        let full = ui.available_rect_before_wrap().height();
+        let max = (full - super::PLOT_MIN - 160.0).max(need);
+        panel = panel.default_size(need).size_range(need..=max);
     }
     panel
         .show(ui, |ui| {
-            let out = chooser(ui, view, look);
+            let mut out: Vec<Command> = chooser(ui, view, look)
+                .into_iter()
+                .map(Command::Approx)
+                .collect();
             if open {
-                body(ui, view, analysis, look);
+                out.extend(body(ui, view, analysis, look, metrics));
             }
-            out.into_iter().map(Command::Approx).collect()
+            out
         })
         .inner
 }
 
-/// The line of method buttons and the order fields of the chosen one.
+/// The open panel's smallest height: one line of method buttons over plots of the smallest
+/// size, with the panel's margins.
+fn open_height(ui: &Ui) -> f32 {
+    let spacing = ui.spacing();
+    let chooser = spacing.interact_size.y + spacing.scroll.bar_width + spacing.item_spacing.y;
+    chooser + 2.0 * spacing.item_spacing.y + super::PLOT_MIN + PLOT_AXIS + 20.0
+}
+
+/// Points egui_plot takes under a plot's area for its x axis (ticks and title).
+const PLOT_AXIS: f32 = 12.0;
+
+/// The line of method buttons (one line: the chosen one's settings are beside its words).
 fn chooser(ui: &mut Ui, view: &ApproxView, look: &Look) -> Vec<ApproxCommand> {
     let lang = look.lang;
     let mut out = Vec::new();
-    ui.horizontal_wrapped(|ui| {
-        ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
+    crate::app::look::one_line(ui, "approximation methods", |ui| {
         ui.label(RichText::new(format!("{}:", P::Heading.get(lang))).strong());
         if ui
             .selectable_label(view.choice.is_none(), P::NoMethod.get(lang))
@@ -220,24 +245,33 @@ fn chooser(ui: &mut Ui, view: &ApproxView, look: &Look) -> Vec<ApproxCommand> {
                 out.push(ApproxCommand::Choose(Some(kind)));
             }
         }
-        if let Some(choice) = view.choice {
-            ui.separator();
-            if let Some(changed) = order_fields(ui, choice, lang) {
-                out.push(ApproxCommand::Choose(Some(changed)));
-            }
-            ui.separator();
-            let mut show = view.show_table;
-            if ui.checkbox(&mut show, P::CompareAll.get(lang)).changed() {
-                out.push(ApproxCommand::ShowTable(show));
-            }
-            if let Some(rows) = &view.table
-                && ui
-                    .button(P::CopyTable.get(lang))
-                    .on_hover_text(P::CopyTableHelp.get(lang))
-                    .clicked()
-            {
-                ui.ctx().copy_text(words::comparison_table(rows, lang));
-            }
+    });
+    out
+}
+
+/// The chosen method's order fields, the switch of the table of every method and its copy.
+fn settings(
+    ui: &mut Ui,
+    view: &ApproxView,
+    choice: Approximation,
+    lang: Lang,
+) -> Vec<ApproxCommand> {
+    let mut out = Vec::new();
+    ui.horizontal_wrapped(|ui| {
+        if let Some(changed) = order_fields(ui, choice, lang) {
+            out.push(ApproxCommand::Choose(Some(changed)));
+        }
+        let mut show = view.show_table;
+        if ui.checkbox(&mut show, P::CompareAll.get(lang)).changed() {
+            out.push(ApproxCommand::ShowTable(show));
+        }
+        if let Some(rows) = &view.table
+            && ui
+                .button(P::CopyTable.get(lang))
+                .on_hover_text(P::CopyTableHelp.get(lang))
+                .clicked()
+        {
+            ui.ctx().copy_text(words::comparison_table(rows, lang));
         }
     });
     out
@@ -321,8 +355,14 @@ fn order_fields(ui: &mut Ui, choice: Approximation, lang: Lang) -> Option<Approx
     }
 }
 
-/// The overlay, the s-plane and the words, side by side.
-fn body(ui: &mut Ui, view: &ApproxView, analysis: &Analysis, look: &Look) {
+/// The overlay, the s-plane and the words, side by side; the commands of the words' column.
+fn body(
+    ui: &mut Ui,
+    view: &ApproxView,
+    analysis: &Analysis,
+    look: &Look,
+    metrics: Option<Folded<'_>>,
+) -> Vec<Command> {
     let lang = look.lang;
     let outcome = match &view.outcome {
         Some(Ok(a)) => Ok(a),
@@ -335,36 +375,67 @@ fn body(ui: &mut Ui, view: &ApproxView, analysis: &Analysis, look: &Look) {
             .unwrap_or_else(|| crate::text::design::Design::NoSystemShort.get(lang).into())),
     };
     let size = ui.available_size();
+    let mut out = Vec::new();
     ui.horizontal_top(|ui| {
-        let plot_width = (size.x * 0.4).max(200.0);
-        let plane_side = size.y.min(size.x * 0.2).max(120.0);
-        if let (Ok(_), Some(scene)) = (&outcome, &view.scene) {
-            ui.allocate_ui(Vec2::new(plot_width, size.y), |ui| overlay(ui, scene, look));
-            ui.allocate_ui(Vec2::new(plane_side, size.y), |ui| plane(ui, scene, look));
+        let scene = view.scene.as_ref().filter(|_| outcome.is_ok());
+        if let Some(scene) = scene {
+            let side = size.y.min(size.x * 0.25).max(super::PLOT_MIN);
+            let width = (size.x * 0.4).max(super::PLOT_MIN);
+            overlay(ui, scene, look, Vec2::new(width, size.y));
+            plane(ui, scene, look, side);
         }
         ui.vertical(|ui| {
-            egui::ScrollArea::vertical()
+            if let Some(choice) = view.choice {
+                out = settings(ui, view, choice, lang)
+                    .into_iter()
+                    .map(Command::Approx)
+                    .collect();
+            }
+            egui::ScrollArea::both()
                 .id_salt("approximation words")
-                .show(ui, |ui| match outcome {
-                    Ok(a) => details(ui, view, a, look),
-                    Err(reason) => {
-                        ui.add(
-                            egui::Label::new(
-                                RichText::new(format!("{} {reason}", P::NoApproximation.get(lang)))
+                .auto_shrink(false)
+                .show(ui, |ui| {
+                    match outcome {
+                        Ok(a) => {
+                            if scene.is_some() {
+                                ui.label(RichText::new(P::PlaneCaption.get(lang)).weak().small());
+                            }
+                            details(ui, view, a, look);
+                        }
+                        Err(reason) => {
+                            ui.add(
+                                egui::Label::new(
+                                    RichText::new(format!(
+                                        "{} {reason}",
+                                        P::NoApproximation.get(lang)
+                                    ))
                                     .color(look.palette.error),
-                            )
-                            .wrap(),
-                        );
+                                )
+                                .wrap(),
+                            );
+                        }
+                    }
+                    if let Some(metrics) = metrics {
+                        ui.separator();
+                        let folded = egui::CollapsingHeader::new(
+                            crate::text::design::Design::MetricsFolded.get(lang),
+                        )
+                        .id_salt("metrics folded")
+                        .show(ui, |ui| metrics(ui));
+                        out.extend(folded.body_returned.unwrap_or_default());
                     }
                 });
         });
     });
+    out
 }
 
-/// The two responses on one plot.
-fn overlay(ui: &mut Ui, scene: &Scene, look: &Look) {
+/// The two responses on one plot of `size`.
+fn overlay(ui: &mut Ui, scene: &Scene, look: &Look, size: Vec2) {
     let lang = look.lang;
     let response = Plot::new("approximation overlay")
+        .width(size.x)
+        .height(size.y)
         .legend(Legend::default().position(egui_plot::Corner::RightBottom))
         .x_axis_label("t (s)")
         .x_axis_formatter(move |m, r| lang.localize_number(&crate::app::grid::tick_label(m, r)))
@@ -383,17 +454,14 @@ fn overlay(ui: &mut Ui, scene: &Scene, look: &Look) {
             );
         });
     let name = P::PlotName.get(lang);
-    response
-        .response
-        .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
+    crate::app::look::name_canvas(&response.response, name);
 }
 
 /// The model's poles (×) and zeros (o) over the original's, faint.
-fn plane(ui: &mut Ui, scene: &Scene, look: &Look) {
-    let side = ui.available_width().min(ui.available_height()).max(100.0);
+fn plane(ui: &mut Ui, scene: &Scene, look: &Look, side: f32) {
     let (rect, response) = ui.allocate_exact_size(Vec2::splat(side), Sense::hover());
     let name = P::PlaneName.get(look.lang);
-    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
+    crate::app::look::name_canvas(&response, name);
     let all: Vec<C64> = [
         &scene.model_poles,
         &scene.model_zeros,
@@ -460,7 +528,6 @@ fn plane(ui: &mut Ui, scene: &Scene, look: &Look) {
     for &r in &scene.model_zeros {
         circle(at(r), p.zero);
     }
-    ui.label(RichText::new(P::PlaneCaption.get(look.lang)).weak().small());
 }
 
 /// The formula, the measures, the error table and, when asked, the table of every method.

@@ -229,11 +229,11 @@ pub fn handles(
         let at = t.to_screen(pole.re, pole.im);
         let name = format!("{} {}", P::ClosedLoopPole.get(lang), branch + 1);
         let rect = Rect::from_center_size(at, Vec2::splat(2.0 * GRAB));
-        let response = ui.interact(
-            rect,
-            ui.scope_id().with(("closed-loop pole", branch)),
-            Sense::drag(),
-        );
+        let widget_id = ui.scope_id().with(("closed-loop pole", branch));
+        if !t.holds_handle(ui, at, widget_id) {
+            continue;
+        }
+        let response = ui.interact(rect, widget_id, Sense::drag());
         let label = name.clone();
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, &label));
         if response.dragged()

@@ -31,6 +31,13 @@ use crate::text::design::Design as P;
 /// the plots never vanish.
 pub const PLOT_MIN: f32 = 220.0;
 
+/// Smallest width of a panel holding a plot: the plot and the panel's margins.
+const PANEL_MIN: f32 = PLOT_MIN + 20.0;
+
+/// Below this height (points under the menu) an approximation shown takes the metrics
+/// table into its words, so the four plots keep their smallest size.
+const TALL: f32 = 760.0;
+
 /// What one frame of the Design mode drew and asks for.
 #[must_use = "the commands must be applied"]
 pub struct Shown {
@@ -45,8 +52,23 @@ pub struct Shown {
 pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
     let mut commands = Vec::new();
     let full = ui.available_rect_before_wrap();
+    // The approximation takes the whole width at the bottom: its plots and its words side by
+    // side (under the system panel its words were one letter wide).
+    // With an approximation shown in a short window the metrics table folds into the
+    // approximation's words (whose error table has the same metrics), so the four plots
+    // keep their smallest size.
+    let fold = session.approx.choice.is_some() && full.height() < TALL;
+    let mut metrics = |ui: &mut Ui| metrics_table::show(ui, session, kept, look);
+    let folded: Option<approx::Folded<'_>> = if fold { Some(&mut metrics) } else { None };
+    commands.extend(approx::panel(
+        ui,
+        &session.approx,
+        &session.analysis,
+        look,
+        folded,
+    ));
     // The right panel takes at most what leaves room for the two plots.
-    let side_max = (full.width() - 2.0 * PLOT_MIN).max(180.0);
+    let side_max = (full.width() - 2.0 * PANEL_MIN).max(180.0);
     commands.extend(
         egui::Panel::right("system")
             .resizable(true)
@@ -64,32 +86,25 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
             })
             .inner,
     );
-    let bottom_max = (full.height() - PLOT_MIN - 80.0).max(90.0);
-    commands.extend(
-        egui::Panel::bottom("metrics")
-            .resizable(true)
-            .default_size(200.0f32.min(bottom_max))
-            .size_range(90.0..=bottom_max)
-            .show(ui, |ui| {
-                egui::ScrollArea::both()
-                    .show(ui, |ui| metrics_table::show(ui, session, kept, look))
-                    .inner
-            })
-            .inner,
-    );
-    commands.extend(approx::panel(ui, &session.approx, &session.analysis, look));
+    if !fold {
+        commands.extend(metrics_panel(ui, session, kept, look));
+    }
     let rest = ui.available_rect_before_wrap().width();
     // The s-plane takes at most half: the step plot is what a class looks at.
-    let left_max = (rest - PLOT_MIN).min(0.5 * rest).max(PLOT_MIN);
+    let left_max = (rest - PANEL_MIN).min(0.5 * rest).max(PANEL_MIN);
     commands.extend(
         egui::Panel::left("s-plane")
             .resizable(true)
-            .default_size((rest * 0.45).clamp(PLOT_MIN, left_max))
-            .size_range(PLOT_MIN..=left_max)
+            .default_size((rest * 0.45).clamp(PANEL_MIN, left_max))
+            .size_range(PANEL_MIN..=left_max)
             .show(ui, |ui| splane_panel(ui, session, kept, look))
             .inner,
     );
+    // A thinner margin than egui's 8 points: the step plot keeps its smallest height under
+    // an approximation in a 1000×650 window.
+    let frame = egui::Frame::central_panel(ui.style()).inner_margin(egui::Margin::symmetric(8, 4));
     let (more, plot_rect) = egui::CentralPanel::default()
+        .frame(frame)
         .show(ui, |ui| plot_panel(ui, session, kept, look))
         .inner;
     commands.extend(more);
@@ -99,6 +114,22 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
         // outside the area it takes.
         plot_rect: Some(plot_rect.expand(PNG_MARGIN)),
     }
+}
+
+/// The metrics table at the bottom, resizable.
+fn metrics_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
+    let full = ui.available_rect_before_wrap().height();
+    let bottom_max = (full - PLOT_MIN - 80.0).max(90.0);
+    egui::Panel::bottom("metrics")
+        .resizable(true)
+        .default_size(200.0f32.min(bottom_max))
+        .size_range(90.0..=bottom_max)
+        .show(ui, |ui| {
+            egui::ScrollArea::both()
+                .show(ui, |ui| metrics_table::show(ui, session, kept, look))
+                .inner
+        })
+        .inner
 }
 
 /// Points kept around the step plot's area in its PNG.

@@ -93,6 +93,12 @@ pub struct Transform {
 }
 
 impl Transform {
+    /// Whether a handle at `at` is on the canvas (one off it is neither drawn nor offered
+    /// to a screen reader), or is being dragged as `id` (the drag follows the pointer out).
+    pub fn holds_handle(&self, ui: &Ui, at: Pos2, id: egui::Id) -> bool {
+        self.rect.contains(at) || ui.ctx().is_being_dragged(id)
+    }
+
     /// The canvas's rect on screen.
     pub fn rect(&self) -> Rect {
         self.rect
@@ -177,7 +183,7 @@ pub fn show(
     let size = ui.available_size().max(Vec2::splat(120.0));
     let (rect, background) = ui.allocate_exact_size(size, Sense::click_and_drag());
     let name = P::PlaneName.get(look.lang);
-    background.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
+    crate::app::look::name_canvas(&background, name);
     let view = state
         .view
         .and_then(View::sane)
@@ -251,11 +257,22 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
     );
     painter.rect_filled(stable, 0.0, palette.stable_region);
 
+    // The caption's place is taken first: a tick or a damping label that would run into it,
+    // or out of the canvas, is left out.
+    let font = FontId::proportional(CANVAS_TEXT);
+    let mut labels = CanvasLabels::new(rect);
+    let caption = labels.reserve(
+        painter,
+        rect.right_top() + Vec2::new(-6.0, 4.0),
+        Align2::RIGHT_TOP,
+        P::PlaneCaption.get(lang),
+        &font,
+        palette.weak_text,
+    );
     let step = t.grid_step();
     let (re0, im1) = t.to_plane(rect.left_top());
     let (re1, im0) = t.to_plane(rect.right_bottom());
     let grid = Stroke::new(0.5, palette.grid);
-    let font = FontId::proportional(CANVAS_TEXT);
     for re in crate::app::grid::multiples(re0, re1, step) {
         let x = t.to_screen(re, 0.0).x;
         painter.line_segment(
@@ -264,11 +281,12 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
         );
         if re != 0.0 {
             let y = origin.y.clamp(rect.top(), rect.bottom() - 14.0);
-            painter.text(
+            labels.put(
+                painter,
                 Pos2::new(x + 2.0, y + 2.0),
                 Align2::LEFT_TOP,
-                lang.num(re, 6),
-                font.clone(),
+                &lang.num(re, 6),
+                &font,
                 palette.weak_text,
             );
         }
@@ -281,17 +299,18 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
         );
         if im != 0.0 {
             let x = origin.x.clamp(rect.left(), rect.right() - 30.0);
-            painter.text(
+            labels.put(
+                painter,
                 Pos2::new(x + 3.0, y),
                 Align2::LEFT_CENTER,
-                format!("{}j", lang.num(im, 6)),
-                font.clone(),
+                &format!("{}j", lang.num(im, 6)),
+                &font,
                 palette.weak_text,
             );
         }
     }
     if damping_grid {
-        paint_damping_grid(painter, t, step, look);
+        paint_damping_grid(painter, t, step, look, &mut labels);
     }
     let axis = Stroke::new(1.2, palette.axis);
     painter.line_segment(
@@ -308,17 +327,73 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
         ],
         axis,
     );
-    painter.text(
-        rect.right_top() + Vec2::new(-6.0, 4.0),
-        Align2::RIGHT_TOP,
-        P::PlaneCaption.get(lang),
-        font,
-        palette.weak_text,
-    );
+    if let Some((at, galley)) = caption {
+        painter.galley(at, galley, palette.weak_text);
+    }
+}
+
+/// The texts painted on a canvas so far: a new one is painted only whole inside the canvas
+/// and clear of the others (the caption ran into the "4j" tick).
+struct CanvasLabels {
+    canvas: Rect,
+    taken: Vec<Rect>,
+}
+
+/// A text laid out and where its top left goes.
+type Placed = (Pos2, std::sync::Arc<egui::Galley>);
+
+impl CanvasLabels {
+    fn new(canvas: Rect) -> Self {
+        Self {
+            canvas,
+            taken: Vec::new(),
+        }
+    }
+
+    /// Takes the place of `text` anchored at `at` if it is free; the text to paint there.
+    fn reserve(
+        &mut self,
+        painter: &egui::Painter,
+        at: Pos2,
+        anchor: Align2,
+        text: &str,
+        font: &FontId,
+        color: egui::Color32,
+    ) -> Option<Placed> {
+        let galley = painter.layout_no_wrap(text.to_owned(), font.clone(), color);
+        let rect = anchor.anchor_size(at, galley.size());
+        let free =
+            self.canvas.contains_rect(rect) && !self.taken.iter().any(|r| r.intersects(rect));
+        free.then(|| {
+            self.taken.push(rect);
+            (rect.min, galley)
+        })
+    }
+
+    /// Paints `text` anchored at `at` if its place is free.
+    fn put(
+        &mut self,
+        painter: &egui::Painter,
+        at: Pos2,
+        anchor: Align2,
+        text: &str,
+        font: &FontId,
+        color: egui::Color32,
+    ) {
+        if let Some((min, galley)) = self.reserve(painter, at, anchor, text, font, color) {
+            painter.galley(min, galley, color);
+        }
+    }
 }
 
 /// Constant-ζ rays from the origin into the left half plane and constant-ωn circles.
-fn paint_damping_grid(painter: &egui::Painter, t: &Transform, step: f64, look: &Look) {
+fn paint_damping_grid(
+    painter: &egui::Painter,
+    t: &Transform,
+    step: f64,
+    look: &Look,
+    labels: &mut CanvasLabels,
+) {
     let (palette, lang) = (&look.palette, look.lang);
     let stroke = Stroke::new(0.7, palette.damping);
     let font = FontId::proportional(CANVAS_TEXT - 1.0);
@@ -333,11 +408,12 @@ fn paint_damping_grid(painter: &egui::Painter, t: &Transform, step: f64, look: &
         // Label where the ray crosses a circle of two grid steps.
         let r = 2.5 * step;
         let at = t.to_screen(-r * zeta, r * angle.sin());
-        painter.text(
+        labels.put(
+            painter,
             at,
             Align2::RIGHT_BOTTOM,
-            format!("ζ={}", lang.num(zeta, 2)),
-            font.clone(),
+            &format!("ζ={}", lang.num(zeta, 2)),
+            &font,
             palette.damping,
         );
     }
@@ -353,11 +429,12 @@ fn paint_damping_grid(painter: &egui::Painter, t: &Transform, step: f64, look: &
             .collect();
         painter.add(Shape::line(points, stroke));
         let label_at = origin + Vec2::new(-radius * 0.72, -radius * 0.69);
-        painter.text(
+        labels.put(
+            painter,
             label_at,
             Align2::RIGHT_BOTTOM,
-            format!("ωn={}", lang.num(wn, 6)),
-            font.clone(),
+            &format!("ωn={}", lang.num(wn, 6)),
+            &font,
             palette.damping,
         );
     }
@@ -484,6 +561,9 @@ fn handle(
         let at = t.to_screen(root.re, im);
         let rect = Rect::from_center_size(at, Vec2::splat(2.0 * HANDLE_RADIUS));
         let widget_id = ui.scope_id().with(("root", id, k));
+        if !t.holds_handle(ui, at, widget_id) {
+            continue;
+        }
         let response = ui.interact(rect, widget_id, Sense::click_and_drag());
         let text = label.clone();
         response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, &text));

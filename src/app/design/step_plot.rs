@@ -67,8 +67,7 @@ pub fn controls(ui: &mut Ui, kept: &Kept, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let (markers, options) = (kept.markers, kept.options);
     let mut out = Vec::new();
-    ui.horizontal_wrapped(|ui| {
-        // A label moves to the next line whole rather than wrap letter by letter.
+    let bar = |ui: &mut Ui| {
         ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Extend);
         ui.label(P::MarkersLabel.get(lang));
         let mut m = markers;
@@ -115,9 +114,19 @@ pub fn controls(ui: &mut Ui, kept: &Kept, look: &Look) -> Vec<Command> {
         if o != options {
             out.push(Command::SetOptions(o));
         }
-    });
+    };
+    // Wrapped when the plot has height to spare; else one line scrolled sideways (wrapped
+    // in a short window, it took the plot's height).
+    if ui.available_height() > super::PLOT_MIN + WRAPPED_ROOM {
+        ui.horizontal_wrapped(bar);
+    } else {
+        crate::app::look::one_line(ui, "step plot controls", bar);
+    }
     out
 }
+
+/// Height the wrapped controls may take above the plot (its title and x axis included).
+const WRAPPED_ROOM: f32 = 160.0;
 
 /// The y range the current curves span (the step's start, 0, included), with a margin; the
 /// ghost is not a current curve and never widens it.
@@ -331,9 +340,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
             ui.data_mut(|d| d.insert_temp(navigated_id, now));
         }
         let name = P::PlotName.get(lang);
-        response
-            .response
-            .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, name));
+        crate::app::look::name_canvas(&response.response, name);
     });
     scoped.response.rect
 }
@@ -352,6 +359,15 @@ fn plot_title(analysis: &Analysis, lang: crate::text::Lang) -> String {
     )
 }
 
+/// `text` laid out in lines no wider than most of the plot (one line ran out of both
+/// sides of a small plot).
+fn wrapped(plot: &egui_plot::PlotUi<'_>, text: String, color: egui::Color32) -> egui::WidgetText {
+    let width = 0.9 * plot.transform().frame().width();
+    let job = egui::text::LayoutJob::simple(text, FontId::proportional(PLOT_TEXT), color, width);
+    let galley = plot.ctx().fonts_mut(|f| f.layout_job(job));
+    egui::WidgetText::Galley(galley)
+}
+
 fn draw_markers(
     plot: &mut egui_plot::PlotUi<'_>,
     analysis: &Analysis,
@@ -365,11 +381,13 @@ fn draw_markers(
     let (lang, color) = (look.lang, look.palette.marker);
     if info.steady_state.is_none() {
         let y_end = analysis.curve.last().map_or(0.0, |p| p[1]);
+        let status = crate::text::Localize::text(&response.behaviour(), lang);
+        let status = wrapped(plot, status, look.palette.error);
         plot.text(
             Text::new(
                 P::DoesNotSettle.get(lang),
                 PlotPoint::new(0.5 * analysis.horizon, 0.5 * y_end),
-                crate::text::Localize::text(&response.behaviour(), lang),
+                status,
             )
             .color(look.palette.error),
         );
@@ -487,8 +505,9 @@ pub fn draw_step_markers_in(
         );
         if labelled {
             plot.text(
-                Text::new(name, PlotPoint::new(tp, y), format!("  {} %", num(os)))
-                    .anchor(egui::Align2::LEFT_BOTTOM)
+                // Beside the peak, not above it: above, the plot's top edge cut it.
+                Text::new(name, PlotPoint::new(tp, y), format!("   {} %", num(os)))
+                    .anchor(egui::Align2::LEFT_CENTER)
                     .color(color),
             );
         }

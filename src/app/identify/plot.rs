@@ -97,14 +97,18 @@ fn marker_controls(ui: &mut Ui, markers: MeasuredMarkers, look: &Look, out: &mut
     });
 }
 
+/// The main plot's share of the height left by the input plot (its area keeps 220 points
+/// in a 1156×650 window, 1600×900 at 1.38×).
+const MAIN_SHARE: f32 = 0.625;
+
 /// The heights of the main, input and residual plots in `available` px (with three titles
 /// of `title` px above them): the input plot gets about 18 % (within [`INPUT_HEIGHT`]), the
-/// main plot about 62 % of the rest, never less than [`MIN_PLOT_HEIGHT`].
+/// main plot [`MAIN_SHARE`] of the rest, never less than [`MIN_PLOT_HEIGHT`].
 pub fn heights(available: f32, title: f32) -> (f32, f32, f32) {
     let room = (available - 3.0 * title).max(0.0);
     let input = (0.18 * room).clamp(INPUT_HEIGHT.0, INPUT_HEIGHT.1);
     let rest = (room - input).max(0.0);
-    let main = (0.62 * rest).max(MIN_PLOT_HEIGHT);
+    let main = (MAIN_SHARE * rest).max(MIN_PLOT_HEIGHT);
     let residual = (rest - main).max(MIN_RESIDUAL_HEIGHT);
     (main, input, residual)
 }
@@ -200,6 +204,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                 );
             }
         });
+    crate::app::look::name_canvas(&response.response, Phrase::PlotName.get(lang));
     let transform = response.transform;
     if !session.is_fitting() {
         // The line first, so that a model handle on top of it wins the pointer.
@@ -725,6 +730,7 @@ mod tests {
         let (main, input, residual) = heights(1000.0, 20.0);
         let rest = 940.0 - input;
         assert!((input - 0.18 * 940.0).abs() < 1e-3);
-        assert!((main - 0.62 * rest).abs() < 1e-3 && (residual - 0.38 * rest).abs() < 1e-3);
+        assert!((main - MAIN_SHARE * rest).abs() < 1e-3);
+        assert!((residual - (1.0 - MAIN_SHARE) * rest).abs() < 1e-3);
     }
 }

@@ -120,7 +120,7 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
     let (lang, palette) = (look.lang, &look.palette);
     let Some(s) = &session.samples else { return };
     ui.label(Phrase::AdvisorPlot.get(lang));
-    words::time_plot("advisor plot", ui.available_height()).show(ui, |plot| {
+    let shown = words::time_plot("advisor plot", ui.available_height()).show(ui, |plot| {
         let points = words::pairs(&s.time, &s.y);
         plot.line(
             Line::new(Phrase::Measured.get(lang), points.clone())
@@ -132,4 +132,5 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
                 .radius(2.5),
         );
     });
+    crate::app::look::name_canvas(&shown.response, Phrase::AdvisorPlot.get(lang));
 }

@@ -101,7 +101,7 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
     ui.label(Phrase::ExamplePlot.get(lang));
     let k: Vec<f64> = (0..EXAMPLE_Y.len()).map(|k| k as f64).collect();
     let colours = [palette.compare, palette.main, palette.model];
-    Plot::new("example plot")
+    let shown = Plot::new("example plot")
         .height(ui.available_height().max(160.0))
         .x_axis_label("k")
         .legend(egui_plot::Legend::default().position(egui_plot::Corner::LeftTop))
@@ -135,4 +135,5 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
                 );
             }
         });
+    crate::app::look::name_canvas(&shown.response, Phrase::ExamplePlot.get(lang));
 }

@@ -124,7 +124,7 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
         return;
     };
     let first = a.regression.first;
-    Plot::new("rls plot")
+    let shown = Plot::new("rls plot")
         .height(ui.available_height().max(160.0))
         .x_axis_label("k")
         .y_grid_spacer(crate::app::grid::one_two_five())
@@ -152,4 +152,5 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
                 }
             }
         });
+    crate::app::look::name_canvas(&shown.response, Phrase::RlsPlot.get(lang));
 }
