@@ -130,11 +130,18 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     let evidence = session.evidence_interval();
 
     ui.label(Phrase::MeasuredAndModel.get(lang));
+    // After a diagnosis the legend lists the regions too: smaller words, in the corner the
+    // samples leave most empty.
+    let many = session.diagnosis.is_some();
     let response = base_plot(main_plot_id(), main_height)
         .legend(
             Legend::default()
-                .position(egui_plot::Corner::RightBottom)
-                .text_style(TextStyle::Body),
+                .position(emptiest_corner(&plots.measured, &frame))
+                .text_style(if many {
+                    TextStyle::Small
+                } else {
+                    TextStyle::Body
+                }),
         )
         .y_axis_label("y")
         .show(ui, |plot| {
@@ -712,9 +719,70 @@ pub(super) fn paint_handle(
     );
 }
 
+/// The corner of the plot's `frame` whose third (in time and in y) holds the fewest of the
+/// `samples`: where the legend covers least of them (the right-hand ones first, the bottom
+/// before the top, on a tie).
+fn emptiest_corner(samples: &[[f64; 2]], frame: &Frozen) -> egui_plot::Corner {
+    use egui_plot::Corner;
+    let share = |v: f64, (lo, hi): (f64, f64)| (v - lo) / (hi - lo);
+    let count = |right: bool, top: bool| {
+        samples
+            .iter()
+            .filter(|p| {
+                let (x, y) = (share(p[0], frame.t), share(p[1], frame.y));
+                let across = if right {
+                    x >= 2.0 / 3.0
+                } else {
+                    x <= 1.0 / 3.0
+                };
+                let up = if top { y >= 2.0 / 3.0 } else { y <= 1.0 / 3.0 };
+                across && up
+            })
+            .count()
+    };
+    [
+        (Corner::RightBottom, count(true, false)),
+        (Corner::RightTop, count(true, true)),
+        (Corner::LeftBottom, count(false, false)),
+        (Corner::LeftTop, count(false, true)),
+    ]
+    .into_iter()
+    .min_by_key(|(_, n)| *n)
+    .map_or(Corner::RightBottom, |(c, _)| c)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_legend_goes_where_the_samples_leave_room() {
+        use egui_plot::Corner;
+        let frame = Frozen {
+            t: (0.0, 100.0),
+            y: (0.0, 10.0),
+        };
+        // A rise from 1 to 9 after t = 20: empty below on the right.
+        let rise: Vec<[f64; 2]> = (0..100)
+            .map(|k| {
+                let t = k as f64;
+                [
+                    t,
+                    if t < 20.0 {
+                        1.0
+                    } else {
+                        9.0 - 8.0 * (-(t - 20.0) / 8.0).exp()
+                    },
+                ]
+            })
+            .collect();
+        assert_eq!(emptiest_corner(&rise, &frame), Corner::RightBottom);
+        // The same fall: empty above on the right (the bottom-right corner would cover it).
+        let fall: Vec<[f64; 2]> = rise.iter().map(|p| [p[0], 10.0 - p[1]]).collect();
+        assert_eq!(emptiest_corner(&fall, &frame), Corner::RightTop);
+        // No samples: the usual corner.
+        assert_eq!(emptiest_corner(&[], &frame), Corner::RightBottom);
+    }
 
     #[test]
     fn the_main_plot_keeps_its_height() {
