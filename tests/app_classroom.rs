@@ -120,6 +120,8 @@ fn in_portuguese_the_metrics_table_reads_in_portuguese() {
     h.get_by_label("Polos");
     let (_, y) = ticks(&h, Lang::Pt);
     assert!(y.len() >= 2, "{y:?}");
+    // ... and in G(s)'s coefficient fields, written again in the new language.
+    assert_eq!(h.get_by_label("num").value().as_deref(), Some("0,5"));
 }
 
 const TCLAB: &str = concat!(

@@ -90,8 +90,9 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
 struct CoefficientBuffer {
     num: String,
     den: String,
-    /// The coefficients the texts were written from.
+    /// The coefficients the texts were written from, and in which language's numbers.
     source: Option<(Vec<f64>, Vec<f64>)>,
+    written_in: Option<Lang>,
     editing: bool,
     /// The texts were just committed: they stay as the student typed them (not rewritten
     /// as the system's monic coefficients) until the system changes otherwise.
@@ -136,8 +137,12 @@ fn coefficient_fields(ui: &mut Ui, session: &Session, system: &System, lang: Lan
         .as_ref()
         .ok()
         .map(|tf| (tf.num(), tf.den()));
-    if !buffer.editing && buffer.source != current {
-        if buffer.typed {
+    // Written again when the system changes, or the language (0.5 reads 0,5 in Portuguese);
+    // what the student typed stays as typed until the system changes otherwise.
+    let relanguaged = buffer.written_in.is_some_and(|l| l != lang) && !buffer.typed;
+    if !buffer.editing && (buffer.source != current || relanguaged) {
+        buffer.written_in = Some(lang);
+        if buffer.typed && buffer.source != current {
             buffer.typed = false;
         } else if let Some((num, den)) = &current {
             let list = |c: &[f64]| {
