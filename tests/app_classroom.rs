@@ -473,3 +473,52 @@ fn the_one_line_markers_bar_takes_a_click_at_1000_by_650() {
         "the Rise toggle took the click"
     );
 }
+
+/// In Portuguese every number painted on a plot takes the decimal comma: the Identify
+/// mode's three plots as well as the step plot (their ticks read "0.5" before; the
+/// least-squares plots share the same axes, `grid::app_axes`).
+#[test]
+fn in_portuguese_no_plot_paints_a_decimal_point() {
+    // A small output (0 to 0.04): every plot's ticks have decimals.
+    let dir = std::env::temp_dir().join(format!("degrau-classroom-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let file = dir.join("small.csv");
+    let mut text = String::from("t,u,y\n");
+    for k in 0..200 {
+        let t = 0.1 * k as f64;
+        let (u, y) = if t < 2.0 {
+            (0.0, 0.0)
+        } else {
+            (1.0, 0.04 * (1.0 - (-(t - 2.0) / 3.0).exp()))
+        };
+        text.push_str(&format!("{t},{u},{y}\n"));
+    }
+    std::fs::write(&file, text).expect("write");
+    for mode in [degrau::app::Mode::Identify] {
+        let app = DegrauApp::new(Saved {
+            mode,
+            lang: Lang::Pt,
+            ident: degrau::app::identify::IdentSettings {
+                path: file.display().to_string(),
+                time_col: "t".into(),
+                y_col: "y".into(),
+                u_col: "u".into(),
+                ..Default::default()
+            },
+            ..Saved::default()
+        });
+        let h = harness(app, [1600.0, 900.0]);
+        let pointed: Vec<String> = kit::painted_texts(&h)
+            .into_iter()
+            .map(|(t, _)| t.trim().replace('\u{2212}', "-"))
+            .filter(|t| t.contains('.') && t.parse::<f64>().is_ok())
+            .collect();
+        assert!(pointed.is_empty(), "{mode:?}: {pointed:?}");
+        let commas = kit::painted_texts(&h)
+            .into_iter()
+            .filter(|(t, _)| t.trim().replace(',', ".").parse::<f64>().is_ok() && t.contains(','))
+            .count();
+        assert!(commas > 0, "{mode:?}: no decimal tick at all");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

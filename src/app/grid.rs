@@ -100,6 +100,14 @@ fn marks(input: GridInput) -> Vec<GridMark> {
     out
 }
 
+/// `plot` with the app's axes: 1-2-5 grid steps on y and tick labels with the decimals their
+/// steps need, in `lang`'s numbers (0,5 in Portuguese) on both axes.
+pub fn app_axes(plot: egui_plot::Plot<'_>, lang: crate::text::Lang) -> egui_plot::Plot<'_> {
+    plot.y_grid_spacer(one_two_five())
+        .x_axis_formatter(move |m, r| lang.localize_number(&tick_label(m, r)))
+        .y_axis_formatter(move |m, r| lang.localize_number(&tick_label(m, r)))
+}
+
 /// A tick label with as many decimals as its step needs (0.5 → "0.5", not egui_plot's "0").
 pub fn tick_label(mark: GridMark, _range: &RangeInclusive<f64>) -> String {
     let decimals = (-mark.step_size.log10() - 1e-9).ceil().max(0.0) as usize;

@@ -433,13 +433,11 @@ fn body(
 /// The two responses on one plot of `size`.
 fn overlay(ui: &mut Ui, scene: &Scene, look: &Look, size: Vec2) {
     let lang = look.lang;
-    let response = Plot::new("approximation overlay")
+    let response = crate::app::grid::app_axes(Plot::new("approximation overlay"), lang)
         .width(size.x)
         .height(size.y)
         .legend(Legend::default().position(egui_plot::Corner::RightBottom))
         .x_axis_label("t (s)")
-        .x_axis_formatter(move |m, r| lang.localize_number(&crate::app::grid::tick_label(m, r)))
-        .y_axis_formatter(move |m, r| lang.localize_number(&crate::app::grid::tick_label(m, r)))
         .allow_scroll(false)
         .show(ui, |plot| {
             plot.line(

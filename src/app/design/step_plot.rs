@@ -250,17 +250,14 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::R
                 .background_alpha(0.75)
                 .text_style(egui::TextStyle::Body)
         });
-        let mut plot = Plot::new("step response");
+        let mut plot = crate::app::grid::app_axes(Plot::new("step response"), lang)
+            .x_grid_spacer(crate::app::grid::one_two_five());
         if let Some(legend) = legend {
             plot = plot.legend(legend);
         }
         let response = plot
             .x_axis_label("t (s)")
             .y_axis_label("y(t)")
-            .x_grid_spacer(crate::app::grid::one_two_five())
-            .y_grid_spacer(crate::app::grid::one_two_five())
-            .x_axis_formatter(move |m, r| lang.localize_number(&crate::app::grid::tick_label(m, r)))
-            .y_axis_formatter(move |m, r| lang.localize_number(&crate::app::grid::tick_label(m, r)))
             .label_formatter(hover)
             .default_x_bounds(0.0, t_hi)
             .default_y_bounds(y_lo, y_hi)

@@ -133,7 +133,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     // After a diagnosis the legend lists the regions too: smaller words, in the corner the
     // samples leave most empty.
     let many = session.diagnosis.is_some();
-    let response = base_plot(main_plot_id(), main_height)
+    let response = base_plot(main_plot_id(), main_height, lang)
         .legend(
             Legend::default()
                 .position(emptiest_corner(&plots.measured, &frame))
@@ -240,7 +240,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     super::test_causes::marks(ui, session, &transform, look);
 
     ui.label(Phrase::InputPlot.get(lang));
-    let input_response = base_plot(input_plot_id(), input_height)
+    let input_response = base_plot(input_plot_id(), input_height, lang)
         .y_axis_label("u")
         .show(ui, |plot| {
             let (lo, hi) = super::session::padded_by(input.range, 0.08);
@@ -256,7 +256,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
     }
 
     ui.label(Phrase::Residuals.get(lang));
-    let residual = base_plot(residual_plot_id(), residual_height)
+    let residual = base_plot(residual_plot_id(), residual_height, lang)
         .y_axis_label("y − ŷ")
         .show(ui, |plot| {
             let (lo, hi) = plots.residual_range;
@@ -285,13 +285,11 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
 
 /// A plot with the app's axes, held where the session says (no pan or zoom of its own, no
 /// pointer coordinates: the values read are the curves').
-fn base_plot(id: Id, height: f32) -> Plot<'static> {
-    Plot::new(id)
+fn base_plot(id: Id, height: f32, lang: crate::text::Lang) -> Plot<'static> {
+    crate::app::grid::app_axes(Plot::new(id), lang)
         .id(id)
         .height(height)
         .x_axis_label("t (s)")
-        .y_grid_spacer(crate::app::grid::one_two_five())
-        .y_axis_formatter(crate::app::grid::tick_label)
         .allow_drag(false)
         .allow_zoom(false)
         .allow_scroll(false)

@@ -120,7 +120,7 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
     let (lang, palette) = (look.lang, &look.palette);
     let Some(s) = &session.samples else { return };
     ui.label(Phrase::AdvisorPlot.get(lang));
-    let shown = words::time_plot("advisor plot", ui.available_height()).show(ui, |plot| {
+    let shown = words::time_plot("advisor plot", ui.available_height(), lang).show(ui, |plot| {
         let points = words::pairs(&s.time, &s.y);
         plot.line(
             Line::new(Phrase::Measured.get(lang), points.clone())

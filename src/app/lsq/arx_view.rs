@@ -299,7 +299,7 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
     let Some(s) = &session.samples else { return };
     ui.label(Phrase::ArxPlot.get(lang));
     let fit = session.arx_fit().map(|r| &r.fit);
-    let shown = words::time_plot("arx plot", ui.available_height()).show(ui, |plot| {
+    let shown = words::time_plot("arx plot", ui.available_height(), lang).show(ui, |plot| {
         plot.points(
             Points::new(Phrase::Measured.get(lang), words::pairs(&s.time, &s.y))
                 .color(palette.data)

@@ -202,7 +202,7 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
     let r = &d.record;
     let height = (ui.available_height() - 60.0) / 2.0;
     ui.label(Phrase::PrbsInput.get(lang));
-    words::time_plot("prbs input", height * 0.7).show(ui, |plot| {
+    words::time_plot("prbs input", height * 0.7, lang).show(ui, |plot| {
         plot.line(
             Line::new("u", words::pairs(&r.time, &r.u))
                 .color(palette.main)
@@ -210,7 +210,7 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
         );
     });
     ui.label(Phrase::PrbsOutput.get(lang));
-    words::time_plot("prbs output", height * 1.3).show(ui, |plot| {
+    words::time_plot("prbs output", height * 1.3, lang).show(ui, |plot| {
         plot.line(
             Line::new("y", words::pairs(&r.time, &r.y))
                 .color(palette.data)

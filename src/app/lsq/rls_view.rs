@@ -124,11 +124,9 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
         return;
     };
     let first = a.regression.first;
-    let shown = Plot::new("rls plot")
+    let shown = crate::app::grid::app_axes(Plot::new("rls plot"), lang)
         .height(ui.available_height().max(160.0))
         .x_axis_label("k")
-        .y_grid_spacer(crate::app::grid::one_two_five())
-        .y_axis_formatter(crate::app::grid::tick_label)
         .legend(egui_plot::Legend::default().position(egui_plot::Corner::RightBottom))
         .include_x(first as f64)
         .include_x((first + a.rows()) as f64)

@@ -196,7 +196,7 @@ pub fn plot(ui: &mut Ui, session: &Session, look: &Look) {
     let Some(s) = &session.samples else { return };
     ui.label(Phrase::ValidationPlot.get(lang));
     let v = session.validation.as_ref();
-    let shown = words::time_plot("validation plot", ui.available_height()).show(ui, |plot| {
+    let shown = words::time_plot("validation plot", ui.available_height(), lang).show(ui, |plot| {
         plot.points(
             Points::new(Phrase::Measured.get(lang), words::pairs(&s.time, &s.y))
                 .color(palette.data)

@@ -65,12 +65,10 @@ pub fn pairs(x: &[f64], y: &[f64]) -> Vec<[f64; 2]> {
 }
 
 /// A plot against time with its legend, `height` px tall (at least 160).
-pub fn time_plot(id: &str, height: f32) -> Plot<'static> {
-    Plot::new(id)
+pub fn time_plot(id: &str, height: f32, lang: Lang) -> Plot<'static> {
+    crate::app::grid::app_axes(Plot::new(id), lang)
         .height(height.max(160.0))
         .x_axis_label("t (s)")
-        .y_grid_spacer(crate::app::grid::one_two_five())
-        .y_axis_formatter(crate::app::grid::tick_label)
         .legend(
             Legend::default()
                 .position(egui_plot::Corner::RightBottom)
