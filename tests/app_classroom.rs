@@ -494,31 +494,30 @@ fn in_portuguese_no_plot_paints_a_decimal_point() {
         text.push_str(&format!("{t},{u},{y}\n"));
     }
     std::fs::write(&file, text).expect("write");
-    for mode in [degrau::app::Mode::Identify] {
-        let app = DegrauApp::new(Saved {
-            mode,
-            lang: Lang::Pt,
-            ident: degrau::app::identify::IdentSettings {
-                path: file.display().to_string(),
-                time_col: "t".into(),
-                y_col: "y".into(),
-                u_col: "u".into(),
-                ..Default::default()
-            },
-            ..Saved::default()
-        });
-        let h = harness(app, [1600.0, 900.0]);
-        let pointed: Vec<String> = kit::painted_texts(&h)
-            .into_iter()
-            .map(|(t, _)| t.trim().replace('\u{2212}', "-"))
-            .filter(|t| t.contains('.') && t.parse::<f64>().is_ok())
-            .collect();
-        assert!(pointed.is_empty(), "{mode:?}: {pointed:?}");
-        let commas = kit::painted_texts(&h)
-            .into_iter()
-            .filter(|(t, _)| t.trim().replace(',', ".").parse::<f64>().is_ok() && t.contains(','))
-            .count();
-        assert!(commas > 0, "{mode:?}: no decimal tick at all");
-    }
+    let mode = degrau::app::Mode::Identify;
+    let app = DegrauApp::new(Saved {
+        mode,
+        lang: Lang::Pt,
+        ident: degrau::app::identify::IdentSettings {
+            path: file.display().to_string(),
+            time_col: "t".into(),
+            y_col: "y".into(),
+            u_col: "u".into(),
+            ..Default::default()
+        },
+        ..Saved::default()
+    });
+    let h = harness(app, [1600.0, 900.0]);
+    let pointed: Vec<String> = kit::painted_texts(&h)
+        .into_iter()
+        .map(|(t, _)| t.trim().replace('\u{2212}', "-"))
+        .filter(|t| t.contains('.') && t.parse::<f64>().is_ok())
+        .collect();
+    assert!(pointed.is_empty(), "{mode:?}: {pointed:?}");
+    let commas = kit::painted_texts(&h)
+        .into_iter()
+        .filter(|(t, _)| t.trim().replace(',', ".").parse::<f64>().is_ok() && t.contains(','))
+        .count();
+    assert!(commas > 0, "{mode:?}: no decimal tick at all");
     std::fs::remove_dir_all(&dir).ok();
 }
