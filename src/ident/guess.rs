@@ -203,13 +203,24 @@ const RAMP_RATIO: f64 = 0.9;
 /// way before the rise, a zero (P2Z); an output still climbing at the end as fast as on
 /// average, an integrator (P1DI). "Beyond the noise" is beyond the largest of N Gaussian
 /// samples, √(2 ln N)·σ (σ from the first differences), and at least [`SHAPE_SHARE`] of
-/// the change.
+/// the change. A record of several changes is read on its first change's stretch.
 pub fn suggested_structure(data: &FitData) -> Structure {
     let code = suggested_code(data);
     Structure::parse(code).unwrap_or_else(|_| Structure::parse("P1D").expect("P1D is a code"))
 }
 
 fn suggested_code(data: &FitData) -> &'static str {
+    // A staircase is judged on its first change's stretch: the later levels are no
+    // overshoot of the first.
+    let first;
+    let data = match data.input.changes.get(1) {
+        Some(next) => {
+            let keep: Vec<bool> = data.times.iter().map(|&t| t < next.t).collect();
+            first = data.keeping(&keep);
+            &first
+        }
+        None => data,
+    };
     let f = features(data, None);
     let span = (f.y_final - f.y0).abs();
     let n = data.y.len().max(2) as f64;
@@ -797,6 +808,35 @@ mod tests {
             *x += noise * effect * (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos();
         }
         FitData { times, y, input }
+    }
+
+    #[test]
+    fn a_staircase_is_judged_on_its_first_change() {
+        // A P1D heater stepped 0 → 5 → 1 → 4: the record's last level is near its first,
+        // so the whole record read as one step would show a huge "overshoot".
+        let s = Structure::parse("P1D").unwrap();
+        let mut v = Values::default();
+        for (p, x) in [
+            (Param::Kp, 0.8),
+            (Param::Tp1, 8.0),
+            (Param::Td, 1.0),
+            (Param::Y0, 30.0),
+        ] {
+            v.set(p, x);
+        }
+        let times: Vec<f64> = (0..800).map(|k| 0.25 * k as f64).collect();
+        let level = |t: f64| match t {
+            t if t < 10.0 => 0.0,
+            t if t < 60.0 => 5.0,
+            t if t < 110.0 => 1.0,
+            _ => 0.5,
+        };
+        let u: Vec<f64> = times.iter().map(|&t| level(t)).collect();
+        let input = Excitation::measured(&times, &u, None, super::super::excitation::Hold::Zoh)
+            .expect("changes");
+        let y = Model::new(s, v).simulate(&input, &times).unwrap();
+        let data = FitData { times, y, input };
+        assert_eq!(suggested_structure(&data).code(), "P1D");
     }
 
     #[test]
