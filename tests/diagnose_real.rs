@@ -8,6 +8,8 @@
 //!
 //! Run with `cargo test --test diagnose_real -- --nocapture` to see the figures.
 
+mod records;
+
 use std::path::PathBuf;
 
 use degrau::ident::data::{LoadOptions, load_file};
@@ -241,4 +243,23 @@ fn level_shifts(data: &FitData) -> Vec<f64> {
             (settled - before) / c.du
         })
         .collect()
+}
+
+/// The structure each real record of the repo suggests when it is opened without `--model`
+/// (issue 23, item 11): the underdamped RLC circuit and the pendulum (an APRBS through a
+/// lightly damped pair) P2DU; every heater, with its quantised, coloured or spiky noise,
+/// steps on samples or between them, one change or several, at rest or not, P1D (before,
+/// APMonitor's first change, held under half its time constant, read as a ramp, and the
+/// enclosure's motion before its step and TCLab's dropouts as an inverse response's dip).
+#[test]
+fn each_real_record_suggests_the_structure_its_shape_shows() {
+    for (name, time, output, input, ts, skip, initial) in records::RECORDS {
+        let options = LoadOptions::from_text(time, output, input, ts, skip);
+        let test = load_file(records::path(name), &options).expect("the record loads");
+        let experiment = Experiment::new(&test, None, None, initial).expect("a step");
+        let data = experiment.fit_data(&test).expect("fit data");
+        let code = degrau::ident::guess::suggested_structure(&data).code();
+        let ringing = name.starts_with("rlc_") || name.starts_with("pendulum_");
+        assert_eq!(code, if ringing { "P2DU" } else { "P1D" }, "{name}");
+    }
 }

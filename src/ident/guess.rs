@@ -210,32 +210,30 @@ pub fn suggested_structure(data: &FitData) -> Structure {
 }
 
 fn suggested_code(data: &FitData) -> &'static str {
-    // A staircase is judged on its first change's stretch: the later levels are no
-    // overshoot of the first.
-    let first;
-    let data = match data.input.changes.get(1) {
-        Some(next) => {
-            let keep: Vec<bool> = data.times.iter().map(|&t| t < next.t).collect();
-            first = data.keeping(&keep);
-            &first
-        }
-        None => data,
+    // A staircase is judged on its first change's stretch (the later levels are no
+    // overshoot of the first), with single wild samples taken out (a dropout is no dip).
+    let keep: Vec<bool> = match data.input.changes.get(1) {
+        Some(next) => data.times.iter().map(|&t| t < next.t).collect(),
+        None => vec![true; data.times.len()],
     };
+    let mut data = data.keeping(&keep);
+    let noise = noise_scale(&data);
+    data.y = super::stats::running_median3(&data.y);
+    let data = &data;
     let f = features(data, None);
     let span = (f.y_final - f.y0).abs();
-    let n = data.y.len().max(2) as f64;
-    let noise = super::rest::difference_noise(&data.y) * (2.0 * n.ln()).sqrt();
-    let beyond = |share: f64| span > 0.0 && share > SHAPE_SHARE.max(noise / span);
-    let after = data.times.last().copied().unwrap_or(0.0) - data.input.t0();
-    let mean_slope = (f.y_final - f.y0) / after;
-    let ramps = after > 0.0 && f.final_slope * mean_slope > 0.0 && {
-        f.final_slope.abs() >= RAMP_RATIO * mean_slope.abs()
-    };
-    if ramps {
+    let band = noise * super::stats::largest_of_gaussians(data.y.len());
+    let beyond = |share: f64| span > 0.0 && share > SHAPE_SHARE.max(band / span);
+    if ramps(data, &f) {
         "P1DI"
-    } else if f.t_dip.is_some() && beyond(f.undershoot) {
+    } else if f.t_dip.is_some()
+        && beyond(f.undershoot)
+        && !super::rest::rest_before(data).is_not_at_rest()
+    {
         "P2Z"
-    } else if f.t_peak.is_some_and(|t| t < 0.9 * after)
+    } else if f
+        .t_peak
+        .is_some_and(|t| t < 0.9 * (data.times.last().copied().unwrap_or(0.0) - data.input.t0()))
         && f.overshoot_decay.is_some()
         && beyond(f.overshoot)
     {
@@ -244,6 +242,56 @@ fn suggested_code(data: &FitData) -> &'static str {
         "P1D"
     }
 }
+
+/// The output noise's standard deviation for judging a shape: the larger of the white
+/// noise read from the first differences and the robust scale of the last fifth about its
+/// straight line (where coloured noise, which the differences under-read, wanders as far as
+/// it goes).
+fn noise_scale(data: &FitData) -> f64 {
+    let n = data.y.len();
+    let from = n - n / 5;
+    let (t, y) = (&data.times[from..], &data.y[from..]);
+    let tail = if t.len() >= 5 {
+        let b = slope(t, y);
+        let (mt, my) = (mean(t), mean(y));
+        let about: Vec<f64> = t
+            .iter()
+            .zip(y)
+            .map(|(t, y)| y - my - b * (t - mt))
+            .collect();
+        super::stats::robust_scale(&about)
+    } else {
+        0.0
+    };
+    super::rest::difference_noise(&data.y).max(tail)
+}
+
+/// Whether the curve ramps as an integrator does: over the last fifth of the stretch since
+/// the change it still climbs at least [`RAMP_RATIO`] of its mean slope, and as fast as
+/// over the fifth before (within [`RAMP_STEADY`]). A lag cut before it
+/// settles (a heater stepped again after a fraction of its time constant) still slows down
+/// from one fifth to the next, e^{−T/(5τ)}.
+fn ramps(data: &FitData, f: &CurveFeatures) -> bool {
+    let t0 = data.input.t0();
+    let after = data.times.last().copied().unwrap_or(t0) - t0;
+    let from = |share: f64| data.times.partition_point(|&t| t < t0 + share * after);
+    let (a, b) = (from(0.6), from(0.8));
+    let n = data.times.len();
+    if !(after > 0.0 && b - a >= 3 && n - b >= 3) {
+        return false;
+    }
+    let (before, last) = (
+        slope(&data.times[a..b], &data.y[a..b]),
+        slope(&data.times[b..], &data.y[b..]),
+    );
+    let mean_slope = (f.y_final - f.y0) / after;
+    last * mean_slope > 0.0
+        && last.abs() >= RAMP_RATIO * mean_slope.abs()
+        && (before - last).abs() <= RAMP_STEADY * last.abs()
+}
+
+/// How far the last fifth's slope may differ from the fifth's before for a ramp.
+const RAMP_STEADY: f64 = 0.05;
 
 /// First instant at which the normalised curve reaches `level`, interpolated.
 fn first_crossing(e: &[(f64, f64)], level: f64) -> Option<f64> {
@@ -792,7 +840,9 @@ mod tests {
     }
 
     /// A step record of `code` (values `params`) far from zero, from 10 s of rest on 0.25 s
-    /// samples to 120 s, with Gaussian noise of `noise` of the effect.
+    /// samples to 120 s, the step between two samples, with Gaussian noise of `noise` of
+    /// the effect: white for `noise` ≤ 0.01, else AR(1) with ρ = 0.8 and quantised to a
+    /// tenth of it.
     fn shaped(code: &str, params: &[(Param, f64)], noise: f64) -> FitData {
         let s = Structure::parse(code).unwrap();
         let mut v = Values::default();
@@ -803,16 +853,28 @@ mod tests {
         let mut y = Model::new(s, v).simulate(&input, &times).unwrap();
         let effect = 5.0 * v.get(Param::Kp).abs();
         let mut rng = super::super::fit::Lcg(3);
+        let coloured = noise > 0.01;
+        let (rho, quantum) = if coloured {
+            (0.8_f64, 0.1 * noise * effect)
+        } else {
+            (0.0, 0.0)
+        };
+        let mut e = 0.0;
         for x in y.iter_mut() {
             let (a, b) = (rng.unit().max(1e-300), rng.unit());
-            *x += noise * effect * (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos();
+            let white = (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos();
+            e = rho * e + (1.0 - rho * rho).sqrt() * white;
+            *x += noise * effect * e;
+            if quantum > 0.0 {
+                *x = quantum * (*x / quantum).round();
+            }
         }
         FitData { times, y, input }
     }
 
     #[test]
     fn a_staircase_is_judged_on_its_first_change() {
-        // A P1D heater stepped 0 → 5 → 1 → 4: the record's last level is near its first,
+        // A P1D heater stepped 0 → 5 → 1 → 0.5: the record's last level is near its first,
         // so the whole record read as one step would show a huge "overshoot".
         let s = Structure::parse("P1D").unwrap();
         let mut v = Values::default();
@@ -843,7 +905,8 @@ mod tests {
     fn the_suggested_structure_follows_the_shape() {
         let code = |d: &FitData| suggested_structure(d).code();
         for noise in [0.002, 0.02] {
-            // A first-order heater, with and without a dead time, even at 2 % noise.
+            // A first-order heater, with and without a dead time, even at 2 % coloured and
+            // quantised noise.
             let heater = shaped(
                 "P1D",
                 &[(Param::Kp, 0.8), (Param::Tp1, 20.0), (Param::Td, 2.0)],

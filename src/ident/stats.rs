@@ -151,6 +151,24 @@ pub fn lag_one(v: &[f64]) -> f64 {
     if c0 > 0.0 { c1 / c0 } else { 0.0 }
 }
 
+/// About how many standard deviations the largest of `n` Gaussian samples reaches:
+/// √(2 ln n) (at least that of two samples). What a sample's excursion must pass to be more
+/// than noise.
+pub fn largest_of_gaussians(n: usize) -> f64 {
+    (2.0 * (n.max(2) as f64).ln()).sqrt()
+}
+
+/// The running median of three (the ends kept): a single wild sample (a spike, a dropout)
+/// is removed, a monotone curve kept as it is.
+pub fn running_median3(y: &[f64]) -> Vec<f64> {
+    let mut out = y.to_vec();
+    for k in 1..y.len().saturating_sub(1) {
+        let (a, b, c) = (y[k - 1], y[k], y[k + 1]);
+        out[k] = a.max(b).min(a.min(b).max(c));
+    }
+    out
+}
+
 /// The factor by which intervals computed as if N residuals were independent widen for
 /// residuals with lag-one autocorrelation `rho` (an AR(1) coefficient, clamped to
 /// [0, 0.99]): √((1 + ρ)/(1 − ρ)), since the variance of a mean of AR(1) samples is that
@@ -163,6 +181,16 @@ pub fn ar1_widening(rho: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_running_median_removes_a_spike_and_keeps_a_monotone_curve() {
+        assert_eq!(
+            running_median3(&[0.0, 1.0, 9.0, 3.0, 4.0]),
+            [0.0, 1.0, 3.0, 4.0, 4.0]
+        );
+        let rising = [0.0, 0.5, 0.7, 2.0, 2.1];
+        assert_eq!(running_median3(&rising), rising);
+    }
 
     #[test]
     fn normal_quantiles_match_tables() {

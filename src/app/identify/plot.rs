@@ -194,7 +194,7 @@ fn plots(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
                     plot,
                     info,
                     &plots.measured,
-                    (setup.t0(), plots.noise_band),
+                    (setup.t0(), plots.noise_band, plots.overshoot_is_noise()),
                     session.markers,
                     look,
                 );
@@ -304,7 +304,7 @@ fn draw_markers(
     plot: &mut PlotUi<'_>,
     info: &StepInfo,
     measured: &[[f64; 2]],
-    (t0, noise_band): (f64, f64),
+    (t0, noise_band, overshoot_is_noise): (f64, f64, bool),
     markers: MeasuredMarkers,
     look: &Look,
 ) {
@@ -368,10 +368,7 @@ fn draw_markers(
     if markers.peak
         && let (Some(tp), Some(os)) = (info.peak_time, info.overshoot)
     {
-        // Read off raw samples, an excursion the noise explains is no overshoot: a heater
-        // that does not overshoot read 13.7 % or 16.9 % as the model changed.
-        let excess = os / 100.0 * delta.abs();
-        let name = if excess <= noise_band {
+        let name = if overshoot_is_noise {
             Phrase::OvershootWithinNoise.with(lang, &[lang.num(noise_band, 3)])
         } else {
             format!("{} {} %", Metric::Overshoot.name(lang), lang.num(os, 4))

@@ -257,6 +257,19 @@ pub struct Plots {
     pub residual_range: (f64, f64),
 }
 
+impl Plots {
+    /// Whether the measured overshoot is within what the noise explains ([`Plots::noise_band`]):
+    /// read off raw samples, a heater that does not overshoot read 13.7 % or 16.9 % as the
+    /// model changed.
+    pub fn overshoot_is_noise(&self) -> bool {
+        let Some(info) = &self.info else { return false };
+        let (Some(os), Some(y_final)) = (info.overshoot, info.steady_state) else {
+            return false;
+        };
+        os / 100.0 * (y_final - info.initial_value).abs() <= self.noise_band
+    }
+}
+
 /// The plot's axes at the moment a handle was grabbed: held until it is let go.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frozen {
@@ -1403,7 +1416,7 @@ fn plots_for(data: &FitData, model: Option<Model>, y0: f64) -> Plots {
     // (robust to the step itself) whatever the model shown: a poor guess's residuals would
     // call a real overshoot noise.
     let sigma = crate::ident::rest::difference_noise(&data.y);
-    let noise_band = sigma * (2.0 * (data.y.len().max(2) as f64).ln()).sqrt();
+    let noise_band = sigma * crate::ident::stats::largest_of_gaussians(data.y.len());
     let y_range = padded(range_of(measured.iter().chain(&curve).map(|p| p[1])));
     let residual_range = padded(range_of(
         residuals.iter().map(|p| p[1]).chain(std::iter::once(0.0)),

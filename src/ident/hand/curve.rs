@@ -84,7 +84,7 @@ impl Curve {
     pub fn new(times: &[f64], y: &[f64], t0: f64, y0: f64, y_final: f64) -> Self {
         let start = times.partition_point(|&t| t < t0);
         let times = times[start..].to_vec();
-        let despiked = running_median3(&y[start..times.len() + start]);
+        let despiked = crate::ident::stats::running_median3(&y[start..times.len() + start]);
         let noise = noise_level(&despiked, y);
         let mut curve = Curve {
             smooth: despiked.clone(),
@@ -202,16 +202,6 @@ pub(crate) fn final_drift(curve: &Curve, change: f64) -> Option<f64> {
     Some(line.slope * (last - curve.times[from]) / change)
 }
 
-/// The running median of three (the ends kept).
-fn running_median3(y: &[f64]) -> Vec<f64> {
-    let mut out = y.to_vec();
-    for k in 1..y.len().saturating_sub(1) {
-        let (a, b, c) = (y[k - 1], y[k], y[k + 1]);
-        out[k] = a.max(b).min(a.min(b).max(c));
-    }
-    out
-}
-
 /// The centred running mean of `n` samples, narrower near the ends (symmetric).
 fn running_mean(y: &[f64], n: usize) -> Vec<f64> {
     let half = n / 2;
@@ -269,13 +259,7 @@ mod tests {
     }
 
     #[test]
-    fn median_removes_a_spike_and_keeps_a_monotone_curve() {
-        assert_eq!(
-            running_median3(&[0.0, 1.0, 9.0, 3.0, 4.0]),
-            [0.0, 1.0, 3.0, 4.0, 4.0]
-        );
-        let rising = [0.0, 0.5, 0.7, 2.0, 2.1];
-        assert_eq!(running_median3(&rising), rising);
+    fn the_running_mean_narrows_at_the_ends() {
         assert_eq!(
             running_mean(&[1.0, 2.0, 3.0, 10.0], 3),
             [1.0, 2.0, 5.0, 10.0]

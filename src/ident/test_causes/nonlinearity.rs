@@ -5,10 +5,10 @@
 //! [`widen_steps_for_colour`](crate::ident::per_step::widen_steps_for_colour)) and by more
 //! than the record resolves ([`RESOLVED_SHARE`]): up against down, small against large, one
 //! operating point against another. The evidence lists every change's gain with its
-//! interval. Only
-//! the changes held long enough to show their gain ([`HELD_LAGS`] time constants beyond the
-//! dead time, [`fit_held`]): a change made while the output still moves is no evidence on
-//! its own, its gain resting on the extrapolated tail of the response before it.
+//! interval. Only the changes held long enough to show their gain ([`HELD_LAGS`] time
+//! constants beyond the dead time, [`fit_held`]): a change made while the output still
+//! moves is no evidence on its own, its gain resting on the extrapolated tail of the
+//! response before it.
 //! Cost: nothing beyond the per-step fits the diagnosis already has.
 
 use crate::ident::fit::FitData;

@@ -73,7 +73,7 @@ const RUNNING_SHARE: f64 = 0.5;
 
 /// The threshold, in robust standard deviations, for `n` samples judged.
 pub fn sigmas(n: usize) -> f64 {
-    THRESHOLD.max((2.0 * (n.max(1) as f64).ln()).sqrt() + MARGIN)
+    THRESHOLD.max(crate::ident::stats::largest_of_gaussians(n) + MARGIN)
 }
 
 /// The outliers of `residuals` (of a fit on `data`) and their indices.
