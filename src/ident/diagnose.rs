@@ -906,11 +906,15 @@ fn best_pair(
 /// keys first come, the fit with the lowest cost that is not an alias, leans on no lag
 /// beyond the record, and is finite.
 ///
-/// The starts are screened first: each runs [`SCREEN_ITERATIONS`] iterations, and only the
-/// [`KEPT_PER_KEY`] lowest of each key go on to convergence (the next ones when none of
-/// those ends acceptable), of the `leaders` keys whose best screened fit has the lowest BIC. Starts in the same basin agree long before they converge, and
-/// one that is far behind after the screen does not overtake the leaders. A screened fit
-/// that is already `enough` for the caller is returned alone, before any goes on.
+/// The starts are screened first: each key's first runs [`SCREEN_ITERATIONS`] iterations,
+/// its others [`PRE_SCREEN_ITERATIONS`], of which the [`PRE_SCREEN_KEPT`] lowest go on to
+/// the whole screen; then only the [`KEPT_PER_KEY`] lowest of each key go on to convergence,
+/// of the `leaders` keys whose best screened fit has the lowest BIC. When none of those ends
+/// acceptable the next ones go on, until one ends where a rejected one ended
+/// ([`same_optimum`]: the key's starts share that basin). Starts in the same basin agree
+/// long before they converge, and one that is far behind after the screen does not
+/// overtake the leaders. A screened fit that is already `enough` for the caller is
+/// returned alone, before any goes on.
 fn best_fits<K: Copy + PartialEq + Sync + Send>(
     data: &FitData,
     current: &FitReport,
@@ -927,6 +931,14 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         max_iterations: SCREEN_ITERATIONS,
         screen: true,
         ..full
+    };
+    let pre_screen = FitOptions {
+        max_iterations: PRE_SCREEN_ITERATIONS,
+        ..screen
+    };
+    let screen_rest = FitOptions {
+        max_iterations: SCREEN_ITERATIONS - PRE_SCREEN_ITERATIONS,
+        ..screen
     };
     let fit_with = |options: &FitOptions, s: Structure, g: Values| {
         if tracker.cancelled() {
@@ -945,9 +957,24 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         let picked: Vec<usize> = (0..jobs.len())
             .filter(|&i| first_of_key[i] == round)
             .collect();
-        let fits = super::parallel::map(&picked, |&i| fit_with(&screen, jobs[i].1, jobs[i].2));
+        let first = if round { &screen } else { &pre_screen };
+        let fits = super::parallel::map(&picked, |&i| fit_with(first, jobs[i].1, jobs[i].2));
         for (&i, r) in picked.iter().zip(fits) {
             screened[i] = r;
+        }
+        if !round {
+            // The other starts: a short screen, and only each key's leading few go on to
+            // the whole screen.
+            let going_on = pre_screen_leaders(jobs, &screened, &picked);
+            let fits = super::parallel::map(&going_on, |&i| {
+                let r = screened[i].as_ref()?;
+                fit_with(&screen_rest, r.model.structure, r.model.values)
+            });
+            for (&i, r) in going_on.iter().zip(fits) {
+                if r.is_some() {
+                    screened[i] = r;
+                }
+            }
         }
         let witness = picked.iter().find_map(|&i| {
             screened[i]
@@ -989,6 +1016,7 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         order[leaders..].iter().for_each(|&i| queues[i].clear());
     }
     let mut best: Vec<Option<FitReport>> = vec![None; keys.len()];
+    let mut rejected: Vec<Vec<f64>> = vec![Vec::new(); keys.len()];
     loop {
         let round: Vec<(usize, FitReport)> = queues
             .iter_mut()
@@ -1013,9 +1041,16 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
             }
         });
         for ((i, _), r) in round.iter().zip(finished) {
-            let Some(r) = r.filter(|r| acceptable(r)) else {
+            let Some(r) = r else { continue };
+            if !acceptable(&r) {
+                // A start that ends where a rejected one ended: the key's starts share one
+                // basin, and the rest of its queue would end there too.
+                if rejected[*i].iter().any(|&b| same_optimum(b, bic(&r))) {
+                    queues[*i].clear();
+                }
+                rejected[*i].push(bic(&r));
                 continue;
-            };
+            }
             if best[*i].as_ref().is_none_or(|b| r.ln_mse < b.ln_mse) {
                 best[*i] = Some(r);
             }
@@ -1026,6 +1061,52 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         .filter_map(|(k, r)| Some((k, r?)))
         .collect()
 }
+
+/// Of the starts `picked` (all but each key's first), those of each key whose short screen
+/// ([`PRE_SCREEN_ITERATIONS`]) ended unfinished with the lowest costs, [`PRE_SCREEN_KEPT`]
+/// per key: they go on to the whole screen.
+fn pre_screen_leaders<K: Copy + PartialEq>(
+    jobs: &[(K, Structure, Values)],
+    screened: &[Option<FitReport>],
+    picked: &[usize],
+) -> Vec<usize> {
+    let unfinished = |i: usize| {
+        screened[i]
+            .as_ref()
+            .filter(|r| r.termination == Termination::IterationLimit)
+            .map(|r| r.ln_mse)
+    };
+    let mut going_on = Vec::new();
+    for (k, &i) in picked.iter().enumerate() {
+        let Some(cost) = unfinished(i) else { continue };
+        let ahead = picked[..k]
+            .iter()
+            .chain(&picked[k + 1..])
+            .filter(|&&j| jobs[j].0 == jobs[i].0)
+            .filter(|&&j| unfinished(j).is_some_and(|c| c < cost || (c == cost && j < i)))
+            .count();
+        if ahead < PRE_SCREEN_KEPT {
+            going_on.push(i);
+        }
+    }
+    going_on
+}
+
+/// Iterations of the short screen of a key's later starts ([`best_fits`]): a start far
+/// behind its key's others after these is not taken further.
+const PRE_SCREEN_ITERATIONS: usize = 3;
+/// A key's later starts that go on from the short screen to the whole one.
+const PRE_SCREEN_KEPT: usize = 2;
+
+/// Whether two converged fits of one structure, of BICs `a` and `b`, are the same optimum:
+/// BICs within [`SAME_OPTIMUM`] (a tenth of a unit of N·ln MSE: far below any difference the
+/// loop judges by, far above what two converged runs into one basin differ by).
+fn same_optimum(a: f64, b: f64) -> bool {
+    (a - b).abs() <= SAME_OPTIMUM
+}
+
+/// See [`same_optimum`].
+const SAME_OPTIMUM: f64 = 0.1;
 
 /// Pairs of extensions taken on to convergence after the screen (those whose best screened
 /// fit has the lowest BIC): the pair search only needs its winner.

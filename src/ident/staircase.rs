@@ -83,19 +83,34 @@ impl Staircase {
             return true;
         };
         let mut rng = Lcg(0x5EED_57A1);
-        (0..REPLICATES)
-            .filter_map(|_| {
+        let nulls: Vec<FitData> = (0..REPLICATES)
+            .map(|_| {
                 let y = clean
                     .iter()
                     .map(|c| self.round(c + self.noise * gaussian(&mut rng)))
                     .collect();
-                let null = FitData { y, ..data.clone() };
-                let model = |r: &FitReport| (r.model.structure, r.model.values);
-                let (s, v) = model(current);
-                let under = fit(&null, s, v, &options, &mut ()).ok()?;
-                let (s, v) = model(candidate);
-                let extended = fit(&null, s, v, &options, &mut ()).ok()?;
-                Some(judged_change(&null, &under, &extended))
+                FitData { y, ..data.clone() }
+            })
+            .collect();
+        // Each replicate's two fits, independent: spread over the cores.
+        let jobs: Vec<(usize, &FitReport)> = (0..REPLICATES)
+            .flat_map(|k| [(k, current), (k, candidate)])
+            .collect();
+        let fits = super::parallel::map(&jobs, |&(k, r)| {
+            fit(
+                &nulls[k],
+                r.model.structure,
+                r.model.values,
+                &options,
+                &mut (),
+            )
+            .ok()
+        });
+        fits.chunks(2)
+            .zip(&nulls)
+            .filter_map(|(pair, null)| match pair {
+                [Some(under), Some(extended)] => Some(judged_change(null, under, extended)),
+                _ => None,
             })
             .all(|null| real < null - BIC_THRESHOLD)
     }
