@@ -976,12 +976,16 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
                 }
             }
         }
-        let witness = picked.iter().find_map(|&i| {
-            screened[i]
-                .as_ref()
-                .filter(|r| enough(jobs[i].0, r))
-                .map(|r| (jobs[i].0, r.clone()))
-        });
+        // A screened fit that looks enough is confirmed once fitted to the end (with its
+        // intervals, which a screen does not compute).
+        let witness = picked
+            .iter()
+            .filter(|&&i| screened[i].as_ref().is_some_and(|r| enough(jobs[i].0, r)))
+            .find_map(|&i| {
+                let r = screened[i].as_ref()?;
+                let done = fit_with(&full, r.model.structure, r.model.values)?;
+                enough(jobs[i].0, &done).then_some((jobs[i].0, done))
+            });
         if let Some(found) = witness {
             return vec![found];
         }
@@ -1033,12 +1037,10 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         if round.is_empty() {
             break;
         }
+        // Each goes on from where its screen left it (one that converged there is only
+        // polished, and given its intervals).
         let finished = super::parallel::map(&round, |(_, r)| {
-            if r.termination == Termination::IterationLimit {
-                fit_with(&full, r.model.structure, r.model.values)
-            } else {
-                Some(r.clone())
-            }
+            fit_with(&full, r.model.structure, r.model.values)
         });
         for ((i, _), r) in round.iter().zip(finished) {
             let Some(r) = r else { continue };

@@ -144,9 +144,10 @@ pub struct FitOptions {
     pub max_iterations: usize,
     /// Seed of the spread-out starts (fits are reproducible).
     pub seed: u64,
-    /// A screen ranks starts: a run it stops at `max_iterations` goes on later or is
-    /// dropped, so it is not checked for an alias (the check costs 16 evaluations of the
-    /// model per sample interval), and its report carries no alias warning.
+    /// A screen: a fit whose cost and values alone are read (the starts a search ranks,
+    /// which go on later from their values or are dropped; a refit a test only compares).
+    /// It is not polished, and its report carries no intervals (each costs a Jacobian) and
+    /// no alias warning (the check costs 16 evaluations of the model per sample interval).
     pub screen: bool,
 }
 
@@ -605,7 +606,7 @@ fn fit_on(
     }
     if cancelled || observer.cancelled() {
         run.termination = Termination::Cancelled;
-    } else if options.method == Method::LevenbergMarquardt && !refined {
+    } else if options.method == Method::LevenbergMarquardt && !refined && !options.screen {
         ending.polish(&mut run);
     }
     ending.report(run, options, starts.len(), &problem)
@@ -1468,7 +1469,11 @@ impl Problem {
             });
         }
         let mut kp_correlations = Vec::new();
-        let intervals = self.intervals(&run.x, run.sse, &mut warnings, &mut kp_correlations);
+        let intervals = if options.screen {
+            vec![None; p]
+        } else {
+            self.intervals(&run.x, run.sse, &mut warnings, &mut kp_correlations)
+        };
         for (i, &param) in self.params.iter().enumerate() {
             for bound in [self.lower[i], self.upper[i]] {
                 let tolerance = 1e-6 * (bound.abs() + self.typical[i]);
@@ -1489,8 +1494,7 @@ impl Problem {
                 zeta: model.get(Param::Zeta),
             });
         }
-        let unfinished = run.termination == Termination::IterationLimit;
-        if !(options.screen && unfinished)
+        if !options.screen
             && let Some(alias) = checked.alias(&run.x)
         {
             warnings.push(alias);

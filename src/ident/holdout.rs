@@ -69,6 +69,7 @@ fn held_errors(
 ) -> Option<Vec<f64>> {
     let options = FitOptions {
         starts: 1,
+        screen: true,
         ..FitOptions::default()
     };
     let refit = search_fit(

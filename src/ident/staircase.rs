@@ -77,6 +77,7 @@ impl Staircase {
         }
         let options = FitOptions {
             starts: 1,
+            screen: true,
             ..FitOptions::default()
         };
         let Ok(clean) = current.model.simulate(&data.input, &data.times) else {

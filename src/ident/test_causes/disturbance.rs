@@ -58,6 +58,7 @@ pub fn detect(
     }
     let options = FitOptions {
         starts: 1,
+        screen: true,
         ..FitOptions::default()
     };
     // The refits at each cut are independent: spread over the cores, kept in order.

@@ -203,7 +203,7 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
         return None;
     }
     let options = FitOptions {
-        starts: 4,
+        starts: 2,
         ..FitOptions::default()
     };
     let mut structure = fitted.model.structure;
