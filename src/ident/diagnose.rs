@@ -478,6 +478,14 @@ pub fn analyse(report: &FitReport, data: &FitData) -> Option<ResidualAnalysis> {
     Some(residuals::analyse(&data.times, &r, None, bounds))
 }
 
+/// The whiteness test of a fit's residuals on its data ([`residuals::whiteness`]).
+fn whiteness(report: &FitReport, data: &FitData) -> Option<residuals::Whiteness> {
+    report
+        .residuals(data)
+        .ok()
+        .map(|r| residuals::whiteness(&r))
+}
+
 /// Runs the loop from `start`, fitted from its automatic guess; Y0 is held at
 /// `start_values`' Y0 when the structure holds it (e.g. 0 for a model that starts at zero).
 pub fn diagnose(
@@ -564,7 +572,9 @@ fn run_loop(
             break;
         }
         tracker.extension(k + 1);
-        let Some(step) = next_step_with(&handled.data, &current, &allowed, tracker) else {
+        // The first step's extensions may have been fitted by the test causes' handling.
+        let known = handled.start_extensions.as_ref().filter(|_| k == 0);
+        let Some(step) = next_step_with(&handled.data, &current, &allowed, known, tracker) else {
             return (current, steps, true);
         };
         current = step.step.fit.clone();
@@ -652,7 +662,7 @@ fn refit_without(data: &FitData, current: &FitReport, s: Structure) -> Option<Fi
 /// tried ([`best_pair`]: P1 → P2Z, P1 → P2D, …), and a pair that pays is one step naming
 /// both causes.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
-    next_step_with(data, current, &EXTENSIONS, &Tracker::none()).map(|c| c.step)
+    next_step_with(data, current, &EXTENSIONS, None, &Tracker::none()).map(|c| c.step)
 }
 
 /// A step of the loop with the extension it made.
@@ -661,14 +671,23 @@ struct Chosen {
     step: Step,
 }
 
-/// [`next_step`] with only the extensions `allowed`.
+/// [`next_step`] with only the extensions `allowed`, choosing among the extensions `known`
+/// when they were fitted already (of `current` on `data`).
 fn next_step_with(
     data: &FitData,
     current: &FitReport,
     allowed: &[Extension],
+    known: Option<&Extensions>,
     tracker: &Tracker,
 ) -> Option<Chosen> {
-    let candidates = candidates(data, current, allowed, tracker);
+    let candidates = match known {
+        Some(Extensions(all)) => all
+            .iter()
+            .filter(|(e, _)| allowed.contains(e))
+            .cloned()
+            .collect(),
+        None => candidates(data, current, allowed, tracker),
+    };
     let lowest = |list: Vec<&(Extension, FitReport)>| {
         list.into_iter()
             .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
@@ -817,7 +836,7 @@ const FAR_FROM_WHITE: f64 = 8.0;
 /// its RMSE above [`FAR_FROM_WHITE`] times the output's white noise.
 fn far_from_white(data: &FitData, current: &FitReport) -> bool {
     let noise = super::rest::difference_noise(&data.y);
-    current.rmse > FAR_FROM_WHITE * noise && analyse(current, data).is_some_and(|a| !a.white)
+    current.rmse > FAR_FROM_WHITE * noise && whiteness(current, data).is_some_and(|w| !w.white)
 }
 
 /// Whether `candidate` pays by the plain BIC: kept when what `current` leaves is far from
@@ -889,7 +908,7 @@ fn best_pair(
             jobs.extend(distinct.into_iter().map(|g| ((e1, e2), s, g)));
         }
     }
-    let (pair, r) = best_fits(data, current, &jobs, PAIRS_TAKEN_ON, tracker, &|_, _| false)
+    let (pair, r) = best_fits(data, current, &jobs, PAIRS_TAKEN_ON, tracker)
         .into_iter()
         .reduce(|best, next| {
             if bic(&next.1) < bic(&best.1) {
@@ -913,15 +932,13 @@ fn best_pair(
 /// acceptable the next ones go on, until one ends where a rejected one ended
 /// ([`same_optimum`]: the key's starts share that basin). Starts in the same basin agree
 /// long before they converge, and one that is far behind after the screen does not
-/// overtake the leaders. A screened fit that is already `enough` for the caller is
-/// returned alone, before any goes on.
+/// overtake the leaders.
 fn best_fits<K: Copy + PartialEq + Sync + Send>(
     data: &FitData,
     current: &FitReport,
     jobs: &[(K, Structure, Values)],
     leaders: usize,
     tracker: &Tracker,
-    enough: &(dyn Fn(K, &FitReport) -> bool + Sync),
 ) -> Vec<(K, FitReport)> {
     let full = FitOptions {
         starts: 1,
@@ -948,46 +965,29 @@ fn best_fits<K: Copy + PartialEq + Sync + Send>(
         tracker.fitted();
         r.ok().filter(|r| r.ln_mse.is_finite())
     };
-    // The first start of each key is screened first: a witness there spares the rest.
+    // Each key's first start runs the whole screen, its others a short one, all at once;
+    // then each key's leading few of those go on to the whole screen.
     let first_of_key: Vec<bool> = (0..jobs.len())
         .map(|i| !jobs[..i].iter().any(|j| j.0 == jobs[i].0))
         .collect();
-    let mut screened: Vec<Option<FitReport>> = vec![None; jobs.len()];
-    for round in [true, false] {
-        let picked: Vec<usize> = (0..jobs.len())
-            .filter(|&i| first_of_key[i] == round)
-            .collect();
-        let first = if round { &screen } else { &pre_screen };
-        let fits = super::parallel::map(&picked, |&i| fit_with(first, jobs[i].1, jobs[i].2));
-        for (&i, r) in picked.iter().zip(fits) {
+    let all: Vec<usize> = (0..jobs.len()).collect();
+    let mut screened = super::parallel::map(&all, |&i| {
+        let options = if first_of_key[i] {
+            &screen
+        } else {
+            &pre_screen
+        };
+        fit_with(options, jobs[i].1, jobs[i].2)
+    });
+    let later: Vec<usize> = all.into_iter().filter(|&i| !first_of_key[i]).collect();
+    let going_on = pre_screen_leaders(jobs, &screened, &later);
+    let fits = super::parallel::map(&going_on, |&i| {
+        let r = screened[i].as_ref()?;
+        fit_with(&screen_rest, r.model.structure, r.model.values)
+    });
+    for (&i, r) in going_on.iter().zip(fits) {
+        if r.is_some() {
             screened[i] = r;
-        }
-        if !round {
-            // The other starts: a short screen, and only each key's leading few go on to
-            // the whole screen.
-            let going_on = pre_screen_leaders(jobs, &screened, &picked);
-            let fits = super::parallel::map(&going_on, |&i| {
-                let r = screened[i].as_ref()?;
-                fit_with(&screen_rest, r.model.structure, r.model.values)
-            });
-            for (&i, r) in going_on.iter().zip(fits) {
-                if r.is_some() {
-                    screened[i] = r;
-                }
-            }
-        }
-        // A screened fit that looks enough is confirmed once fitted to the end (with its
-        // intervals, which a screen does not compute).
-        let witness = picked
-            .iter()
-            .filter(|&&i| screened[i].as_ref().is_some_and(|r| enough(jobs[i].0, r)))
-            .find_map(|&i| {
-                let r = screened[i].as_ref()?;
-                let done = fit_with(&full, r.model.structure, r.model.values)?;
-                enough(jobs[i].0, &done).then_some((jobs[i].0, done))
-            });
-        if let Some(found) = witness {
-            return vec![found];
         }
     }
     let acceptable = |r: &FitReport| !aliased(r) && !beyond_record(data, &current.model, &r.model);
@@ -1141,23 +1141,51 @@ fn gain(before: &FitReport, after: &FitReport) -> Gain {
     }
 }
 
-/// Whether some single extension of `current` explains `data` with a BIC at most `bound`.
-/// The first screened fit that already does (a witness: its alias checked, the candidates'
-/// own conditions met) answers without fitting the rest to convergence; otherwise the best
-/// extension decides, as the loop would choose it.
-pub fn extension_reaches(data: &FitData, current: &FitReport, bound: f64) -> bool {
-    let enough = |e: Extension, r: &FitReport| {
-        bic(r) <= bound
-            && kept_candidate(data, current, e, r)
-            && super::fit::alias_warning(&r.model, data).is_none()
-            && !beyond_record(data, &current.model, &r.model)
-    };
-    candidates_until(data, current, &EXTENSIONS, &Tracker::none(), &enough)
-        .into_iter()
-        .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
-        .and_then(|winner| on_every_sample(data, winner))
-        .is_some_and(|(_, r)| bic(&r) <= bound)
+/// The single extensions of one fit on one record ([`candidates`], every one allowed),
+/// fitted once, when first asked for: the disturbance test asks whether one of them explains
+/// the record as well as a disturbance would ([`StartExtensions::reach`]), and the loop's
+/// first step chooses among the same fits when the record and the start it was asked on are
+/// still the loop's ([`Extensions`]).
+pub struct StartExtensions<'a> {
+    data: &'a FitData,
+    current: &'a FitReport,
+    found: std::sync::OnceLock<Vec<(Extension, FitReport)>>,
 }
+
+impl<'a> StartExtensions<'a> {
+    pub fn new(data: &'a FitData, current: &'a FitReport) -> Self {
+        Self {
+            data,
+            current,
+            found: std::sync::OnceLock::new(),
+        }
+    }
+
+    fn get(&self) -> &[(Extension, FitReport)] {
+        self.found
+            .get_or_init(|| candidates(self.data, self.current, &EXTENSIONS, &Tracker::none()))
+    }
+
+    /// Whether the best of the extensions explains the record with a BIC at most `bound`
+    /// (refitted on every sample when found on a long record's reduction).
+    pub fn reach(&self, bound: f64) -> bool {
+        self.get()
+            .iter()
+            .min_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)))
+            .cloned()
+            .and_then(|winner| on_every_sample(self.data, winner))
+            .is_some_and(|(_, r)| bic(&r) <= bound)
+    }
+
+    /// The extensions fitted, if any were asked for.
+    pub fn fitted(self) -> Option<Extensions> {
+        self.found.into_inner().map(Extensions)
+    }
+}
+
+/// The single extensions of the loop's start, fitted before the loop ([`StartExtensions`]).
+#[derive(Debug, Clone)]
+pub struct Extensions(Vec<(Extension, FitReport)>);
 
 /// Every extension of `current` that can be fitted, with its refit (on the record's
 /// reduction for a long record, [`search_fit`]); aliased fits, lags beyond the record and
@@ -1168,17 +1196,6 @@ fn candidates(
     allowed: &[Extension],
     tracker: &Tracker,
 ) -> Vec<(Extension, FitReport)> {
-    candidates_until(data, current, allowed, tracker, &|_, _| false)
-}
-
-/// [`candidates`], or only the first screened fit that is `enough` (see [`best_fits`]).
-fn candidates_until(
-    data: &FitData,
-    current: &FitReport,
-    allowed: &[Extension],
-    tracker: &Tracker,
-    enough: &(dyn Fn(Extension, &FitReport) -> bool + Sync),
-) -> Vec<(Extension, FitReport)> {
     let jobs: Vec<(Extension, Structure, Values)> = allowed
         .iter()
         .filter_map(|&e| Some((e, e.apply(current.model.structure)?)))
@@ -1188,7 +1205,7 @@ fn candidates_until(
                 .map(move |g| (e, s, g))
         })
         .collect();
-    best_fits(data, current, &jobs, usize::MAX, tracker, enough)
+    best_fits(data, current, &jobs, usize::MAX, tracker)
         .into_iter()
         .filter(|(e, r)| kept_candidate(data, current, *e, r))
         .collect()
@@ -1463,7 +1480,10 @@ fn explain(
     extended: &FitReport,
 ) -> (Evidence, Option<(f64, f64)>) {
     let r = current.residuals(data).unwrap_or_default();
-    let analysis = analyse(current, data);
+    // The residual analysis (correlations at every lag: the costliest statistic here) only
+    // for the causes whose evidence reads it.
+    let analysis = std::cell::OnceCell::new();
+    let analysis = || analysis.get_or_init(|| analyse(current, data));
     let v = extended.model.values;
     let t0 = data.input.t0();
     let t_first = data.times.first().copied().unwrap_or(t0);
@@ -1471,7 +1491,7 @@ fn explain(
     // The effect of the input's largest excursion from u0 (the step's, for one step).
     let effect = (extended.model.get(Param::Kp) * data.input.du_scale()).abs();
     let region = |kind: residuals::RegionKind| {
-        analysis
+        analysis()
             .as_ref()
             .and_then(|a| a.regions.iter().find(|g| g.kind == kind).cloned())
     };
@@ -1498,7 +1518,7 @@ fn explain(
             )
         }
         Cause::Oscillation => {
-            let period = analysis.as_ref().and_then(|a| a.dominant_period);
+            let period = analysis().as_ref().and_then(|a| a.dominant_period);
             let transient = region(residuals::RegionKind::Transient).map(|g| (g.start, g.end));
             (
                 Evidence::Oscillation {
@@ -1588,7 +1608,7 @@ fn explain(
 
 /// Why the final model is adequate (or why the loop stopped), with the whiteness statistics.
 fn verdict(data: &FitData, report: &FitReport, adequate: bool) -> Verdict {
-    let analysis = analyse(report, data);
+    let analysis = whiteness(report, data);
     let white = analysis.as_ref().is_some_and(|a| a.white);
     Verdict {
         structure: None,

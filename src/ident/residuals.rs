@@ -284,7 +284,59 @@ fn analyse_as_given(
     let (times, e) = (&times[..n], &residuals[..n]);
 
     let regions = regions(times, e, boundaries);
+    let Whiteness {
+        autocorrelation,
+        band99,
+        outside_band,
+        runs,
+        white,
+    } = whiteness_as_given(e);
+    let max_lag = autocorrelation.len().saturating_sub(1);
+    let input_correlation = input.map(|u| input_correlation(e, u, max_lag));
+    let dominant_period =
+        dominant_period(e, band99, sampling_period(times).unwrap_or(1.0), max_lag);
+    let std = sample_std(e);
 
+    ResidualAnalysis {
+        regions,
+        autocorrelation,
+        band99,
+        outside_band,
+        runs,
+        input_correlation,
+        dominant_period,
+        white,
+        std,
+    }
+}
+
+/// The whiteness test of [`ResidualAnalysis`] alone (its fields of the same names): the
+/// autocorrelation to min(N/4, 50) lags against its 99 % band, and the runs test. Without
+/// the regions and the period search (up to N × N/2 multiply-adds), for a verdict that
+/// only asks whether the residuals are white.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Whiteness {
+    pub autocorrelation: Vec<f64>,
+    pub band99: f64,
+    pub outside_band: Vec<usize>,
+    pub runs: RunsTest,
+    pub white: bool,
+}
+
+/// [`Whiteness`] of the residuals `e` (of any size: scaled by a power of two first, as
+/// [`analyse`] does, so that no square overflows).
+pub fn whiteness(e: &[f64]) -> Whiteness {
+    let unit = power_of_two_near(e.iter().fold(0.0f64, |m, x| m.max(x.abs())));
+    if unit == 1.0 {
+        return whiteness_as_given(e);
+    }
+    let scaled: Vec<f64> = e.iter().map(|e| e / unit).collect();
+    whiteness_as_given(&scaled)
+}
+
+/// [`whiteness`] of residuals already of a size whose squares do not overflow.
+fn whiteness_as_given(e: &[f64]) -> Whiteness {
+    let n = e.len();
     let max_lag = if n >= 4 { (n / 4).min(50) } else { 0 };
     let autocorrelation = autocorrelation(e, max_lag);
     let band99 = if n > 0 {
@@ -300,23 +352,13 @@ fn analyse_as_given(
         .map(|(k, _)| k)
         .collect();
     let runs = runs_test(e);
-    let input_correlation = input.map(|u| input_correlation(e, u, max_lag));
-    let dominant_period =
-        dominant_period(e, band99, sampling_period(times).unwrap_or(1.0), max_lag);
-    let allowed = allowed_outside(max_lag);
-    let white = outside_band.len() <= allowed && runs.z.abs() < z99();
-    let std = sample_std(e);
-
-    ResidualAnalysis {
-        regions,
+    let white = outside_band.len() <= allowed_outside(max_lag) && runs.z.abs() < z99();
+    Whiteness {
         autocorrelation,
         band99,
         outside_band,
         runs,
-        input_correlation,
-        dominant_period,
         white,
-        std,
     }
 }
 

@@ -19,7 +19,7 @@
 //! input, and not a drift.
 
 use super::{DisturbanceShape, Handling, TestCause, TestCauseKind, TestEvidence};
-use crate::ident::diagnose::{BIC_THRESHOLD, extension_reaches};
+use crate::ident::diagnose::{BIC_THRESHOLD, StartExtensions};
 use crate::ident::drift_evidence::{Z_DRIFT, settled_slope_before};
 use crate::ident::fit::{FitData, FitOptions, FitReport, search_fit};
 use crate::ident::models::{Model, Param};
@@ -53,7 +53,24 @@ pub fn detect(
     current: &FitReport,
     residuals: &[f64],
 ) -> Option<(TestCause, Vec<usize>)> {
-    if let Some(found) = judge(data, current, residuals) {
+    detect_with(
+        data,
+        current,
+        residuals,
+        &StartExtensions::new(data, current),
+    )
+}
+
+/// [`detect`], asking `extensions` (of `current` on `data`) whether a structural extension
+/// explains the record as well as the disturbance, so that the loop's first step can choose
+/// among the same fits.
+pub fn detect_with(
+    data: &FitData,
+    current: &FitReport,
+    residuals: &[f64],
+    extensions: &StartExtensions,
+) -> Option<(TestCause, Vec<usize>)> {
+    if let Some(found) = judge(data, current, residuals, extensions) {
         return Some(found);
     }
     let options = FitOptions {
@@ -83,7 +100,8 @@ pub fn detect(
     .flatten()
     .min_by(|a, b| a.0.sse.total_cmp(&b.0.sse))?;
     let (found, refit) = best;
-    (!explained_by_structure(data, &refit, found.sse)).then_some((found.cause, found.samples))
+    (!explained_by_structure(data, &refit, found.sse, extensions))
+        .then_some((found.cause, found.samples))
 }
 
 /// Cuts spread over the span after the last input change, as fractions of it.
@@ -166,9 +184,11 @@ fn judge(
     data: &FitData,
     current: &FitReport,
     residuals: &[f64],
+    extensions: &StartExtensions,
 ) -> Option<(TestCause, Vec<usize>)> {
     let found = look(data, current, residuals)?;
-    (!explained_by_structure(data, current, found.sse)).then_some((found.cause, found.samples))
+    (!explained_by_structure(data, current, found.sse, extensions))
+        .then_some((found.cause, found.samples))
 }
 
 /// The test of the module doc but its last clause (no structural extension explains the
@@ -266,17 +286,23 @@ fn correlation(r: &[f64], fitted: &[f64]) -> f64 {
     (1.0 + rho) / (1.0 - rho)
 }
 
-/// Whether a structural extension of `current` (a drift, an integrator, a zero, a pole, …:
-/// the best of the diagnosis's candidates) explains the record at least as well as the
-/// disturbance (`sse`: the record's sum of squares with it, three more parameters: its
+/// Whether a structural extension of the whole record's fit (a drift, an integrator, a
+/// zero, a pole, …: the best of the diagnosis's candidates, `extensions`) explains the
+/// record at least as well as the disturbance that `current` (that fit, or its refit before
+/// a cut) leaves (`sse`: the record's sum of squares with it, three more parameters: its
 /// instant and the step's two levels or the hinge's level and slope), by the BIC. What the
 /// model lacks leaves a pattern in the settled tail too (a slow zero's decay, a drift's
 /// line), and it is the model's to name.
-fn explained_by_structure(data: &FitData, current: &FitReport, sse: f64) -> bool {
+fn explained_by_structure(
+    data: &FitData,
+    current: &FitReport,
+    sse: f64,
+    extensions: &StartExtensions,
+) -> bool {
     let n = data.y.len() as f64;
     let p = current.params.len() as f64 + 3.0;
     let disturbance = n * (sse / n).ln() + p * n.ln();
-    extension_reaches(data, current, disturbance + BIC_THRESHOLD)
+    extensions.reach(disturbance + BIC_THRESHOLD)
 }
 
 /// How long the model's response takes to settle (s): its exact 2 % settling time (MATLAB's

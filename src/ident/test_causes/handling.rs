@@ -12,7 +12,7 @@ use super::{
     imperfect_step, nonlinearity, not_at_rest, outliers, quantisation, sampling, saturation,
     small_step, steps_held,
 };
-use crate::ident::diagnose::bic;
+use crate::ident::diagnose::{Extensions, StartExtensions, bic};
 use crate::ident::drift_evidence::{read_drift, read_drift_after};
 use crate::ident::fit::{FitData, FitOptions, FitReport, fit, within_span};
 use crate::ident::guess::auto_guess;
@@ -35,6 +35,8 @@ pub struct Handled {
     pub start: FitReport,
     /// The causes found, in the order found.
     pub causes: Vec<TestCause>,
+    /// The single extensions of `start` on `data`, when a test fitted them ([`StartExtensions`]).
+    pub start_extensions: Option<Extensions>,
 }
 
 /// The samples of the record still in, as indices into the original record.
@@ -90,13 +92,22 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
         handled = data.keeping(&kept.keep);
         current = refit(&handled, &current).unwrap_or(current);
     }
-    if let Ok(r) = current.residuals(&handled)
-        && let Some((cause, samples)) = disturbance::detect(&handled, &current, &r)
-    {
-        causes.push(cause);
-        kept.drop(&samples);
-        handled = data.keeping(&kept.keep);
-        current = refit(&handled, &current).unwrap_or(current);
+    let mut start_extensions = None;
+    if let Ok(r) = current.residuals(&handled) {
+        let extensions = StartExtensions::new(&handled, &current);
+        let found = disturbance::detect_with(&handled, &current, &r, &extensions);
+        let fitted = extensions.fitted();
+        match found {
+            Some((cause, samples)) => {
+                causes.push(cause);
+                kept.drop(&samples);
+                handled = data.keeping(&kept.keep);
+                current = refit(&handled, &current).unwrap_or(current);
+            }
+            // The record and the start are the loop's: its first step chooses among the
+            // extensions the test fitted.
+            None => start_extensions = fitted,
+        }
     }
     let robust_data = (!outlier_samples.is_empty()).then(|| {
         let mut keep = kept.keep.clone();
@@ -109,6 +120,7 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
         robust_data,
         start: current,
         causes,
+        start_extensions,
     };
     on_first_step_when_nonlinear(&mut handled);
     handled
@@ -338,6 +350,7 @@ fn on_first_step_when_nonlinear(handled: &mut Handled) {
         handled.robust_data = handled.robust_data.take().and_then(|d| window_data(&d, 0));
         handled.data = window;
         handled.start = first;
+        handled.start_extensions = None;
         cause.handling = super::Handling::Excluded { start, end };
     }
     handled.causes.push(cause);
