@@ -887,26 +887,35 @@ fn best_pair(
     tracker: &Tracker,
 ) -> Option<((Extension, Extension), FitReport)> {
     let paired: Vec<Extension> = PAIRED.into_iter().filter(|e| allowed.contains(e)).collect();
+    let pairs: Vec<((Extension, Extension), Structure)> = paired
+        .iter()
+        .enumerate()
+        .flat_map(|(i, &e1)| paired[i + 1..].iter().map(move |&e2| (e1, e2)))
+        .filter_map(|(e1, e2)| {
+            let s = e1
+                .apply(current.model.structure)
+                .and_then(|s| e2.apply(s))?;
+            Some(((e1, e2), s))
+        })
+        .collect();
+    // The pairs' automatic guesses (a regression each) on every core; both members' fresh
+    // starts begin with the pair's own guess (no pair holds a free offset: one Y0).
+    let held = held_y0(current, Extension::Delay);
+    let guesses = super::parallel::map(&pairs, |&(_, s)| extended_guess(data, s, held));
     let mut jobs = Vec::new();
-    for (i, &e1) in paired.iter().enumerate() {
-        for &e2 in &paired[i + 1..] {
-            let Some(s) = e1.apply(current.model.structure).and_then(|s| e2.apply(s)) else {
-                continue;
-            };
-            let mut starts = fresh_starts(data, current, e1, s);
-            starts.extend(fresh_starts(data, current, e2, s));
-            starts.extend(warm_starts(data, current, e1));
-            starts.extend(warm_starts(data, current, e2));
-            // Both members' fresh starts begin with the pair's own automatic guess: one run
-            // of a start is enough.
-            let mut distinct: Vec<Values> = Vec::with_capacity(starts.len());
-            starts.into_iter().for_each(|g| {
-                if !distinct.contains(&g) {
-                    distinct.push(g);
-                }
-            });
-            jobs.extend(distinct.into_iter().map(|g| ((e1, e2), s, g)));
-        }
+    for (&((e1, e2), s), &auto) in pairs.iter().zip(&guesses) {
+        let mut starts = fresh_starts_from(data, auto, e1, held);
+        starts.extend(fresh_starts_from(data, auto, e2, held));
+        starts.extend(warm_starts(data, current, e1));
+        starts.extend(warm_starts(data, current, e2));
+        // One run of a start is enough.
+        let mut distinct: Vec<Values> = Vec::with_capacity(starts.len());
+        starts.into_iter().for_each(|g| {
+            if !distinct.contains(&g) {
+                distinct.push(g);
+            }
+        });
+        jobs.extend(distinct.into_iter().map(|g| ((e1, e2), s, g)));
     }
     let (pair, r) = best_fits(data, current, &jobs, PAIRS_TAKEN_ON, tracker)
         .into_iter()
@@ -1196,14 +1205,16 @@ fn candidates(
     allowed: &[Extension],
     tracker: &Tracker,
 ) -> Vec<(Extension, FitReport)> {
-    let jobs: Vec<(Extension, Structure, Values)> = allowed
+    let extended: Vec<(Extension, Structure)> = allowed
         .iter()
         .filter_map(|&e| Some((e, e.apply(current.model.structure)?)))
-        .flat_map(|(e, s)| {
-            starts(data, current, e, s)
-                .into_iter()
-                .map(move |g| (e, s, g))
-        })
+        .collect();
+    // The starts (each an automatic guess: a regression) on every core.
+    let starts = super::parallel::map(&extended, |&(e, s)| starts(data, current, e, s));
+    let jobs: Vec<(Extension, Structure, Values)> = extended
+        .iter()
+        .zip(starts)
+        .flat_map(|(&(e, s), starts)| starts.into_iter().map(move |g| (e, s, g)))
         .collect();
     best_fits(data, current, &jobs, usize::MAX, tracker)
         .into_iter()
@@ -1371,11 +1382,33 @@ fn fresh_starts(
     extension: Extension,
     s: Structure,
 ) -> Vec<Values> {
-    let held_y0 = (extension != Extension::FreeOffset).then(|| current.model.get(Param::Y0));
+    let held_y0 = held_y0(current, extension);
+    fresh_starts_from(data, extended_guess(data, s, held_y0), extension, held_y0)
+}
+
+/// The Y0 an extension's fresh starts hold: the current one, unless the offset is the
+/// extension.
+fn held_y0(current: &FitReport, extension: Extension) -> Option<f64> {
+    (extension != Extension::FreeOffset).then(|| current.model.get(Param::Y0))
+}
+
+/// The automatic guess of the extended structure `s` with Y0 held at `held_y0` (the
+/// costliest part of a fresh start: a regression over a grid of lags).
+fn extended_guess(data: &FitData, s: Structure, held_y0: Option<f64>) -> Values {
     let mut auto = auto_guess(data, s, held_y0);
     if let Some(y0) = held_y0 {
         auto.set(Param::Y0, y0);
     }
+    auto
+}
+
+/// [`fresh_starts`] from the extended structure's guess `auto`.
+fn fresh_starts_from(
+    data: &FitData,
+    auto: Values,
+    extension: Extension,
+    held_y0: Option<f64>,
+) -> Vec<Values> {
     if extension != Extension::Zero {
         return vec![auto];
     }
