@@ -215,7 +215,7 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
         return None;
     }
     let options = FitOptions {
-        starts: 2,
+        starts: 1,
         ..FitOptions::default()
     };
     let mut structure = fitted.model.structure;
