@@ -1107,7 +1107,7 @@ fn pre_screen_leaders<K: Copy + PartialEq>(
 /// behind its key's others after these is not taken further.
 const PRE_SCREEN_ITERATIONS: usize = 3;
 /// A key's later starts that go on from the short screen to the whole one.
-const PRE_SCREEN_KEPT: usize = 2;
+const PRE_SCREEN_KEPT: usize = 1;
 
 /// Whether two converged fits of one structure, of BICs `a` and `b`, are the same optimum:
 /// BICs within [`SAME_OPTIMUM`] (a tenth of a unit of N·ln MSE: far below any difference the
@@ -1123,7 +1123,7 @@ const SAME_OPTIMUM: f64 = 0.1;
 /// fit has the lowest BIC): the pair search only needs its winner.
 const PAIRS_TAKEN_ON: usize = 2;
 /// Iterations every start of a candidate runs before the leaders are picked ([`best_fits`]).
-const SCREEN_ITERATIONS: usize = 8;
+const SCREEN_ITERATIONS: usize = 6;
 /// Screened starts of each candidate taken on to convergence at a time ([`best_fits`]): the
 /// leader alone, since starts in the same basin agree after the screen; the next one goes
 /// on only when the leader ends unacceptable (an alias, a lag beyond the record).
