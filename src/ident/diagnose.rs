@@ -24,7 +24,7 @@ use serde::{Deserialize, Serialize};
 use super::drift_evidence::read_drift;
 use super::fit::{FitData, FitError, FitOptions, FitReport, Termination, fit, search_fit};
 use super::guess::{auto_guess, features};
-use super::holdout::validates;
+use super::holdout::Validation;
 use super::models::{Model, Param, Structure, Values};
 use super::residuals::{self, ResidualAnalysis};
 use super::staircase::Staircase;
@@ -695,6 +695,8 @@ fn next_step_with(
     };
     let leader = lowest(candidates.iter().collect());
     let far = far_from_white(data, current);
+    // Every candidate of the step is validated against the same current model.
+    let validation = Validation::new(data, current);
     // The corrected BIC judges first: of the extensions that pay by it, the lowest BIC; only
     // when none does, and what is left is far from white, the lowest BIC by the plain one.
     // Of those, the lowest BIC that also predicts the part of the record it was not
@@ -708,7 +710,7 @@ fn next_step_with(
     prefer_pole_to_dead_time(&mut paying);
     let paying = paying
         .into_iter()
-        .find(|(_, c)| validates(data, current, c))
+        .find(|(_, c)| validation.keeps(c))
         .cloned();
     let leader_extension = leader.as_ref().map(|(e, _)| *e);
     // The leader pays by the plain BIC but not by the corrected one: its residuals are
@@ -723,17 +725,13 @@ fn next_step_with(
     // still short of a pole), and an operating point that is really off leaves residuals
     // biased everywhere, which pay by both.
     let single = paying
-        .or_else(|| {
-            leader
-                .clone()
-                .filter(|(_, c)| far && validates(data, current, c))
-        })
+        .or_else(|| leader.clone().filter(|(_, c)| far && validation.keeps(c)))
         .and_then(|w| on_every_sample(data, w))
         .filter(|(e, c)| {
             pays(data, current, c)
                 || (far && *e != Extension::FreeOffset && plainly_pays(current, c))
         });
-    let single = single.map(|w| look_ahead(data, current, allowed, w, tracker));
+    let single = single.map(|w| look_ahead(data, current, allowed, w, &validation, tracker));
     let (extension, paired, candidate) = match single {
         Some(chosen) => chosen,
         None => {
@@ -741,7 +739,7 @@ fn next_step_with(
                 return None;
             }
             let ((mut e1, mut e2), c) = best_pair(data, current, allowed, tracker)?;
-            if !pays(data, current, &c) || !validates(data, current, &c) {
+            if !pays(data, current, &c) || !validation.keeps(&c) {
                 return None;
             }
             // The pair's member that did best alone is named first.
@@ -808,6 +806,7 @@ fn look_ahead(
     current: &FitReport,
     allowed: &[Extension],
     (e, c): (Extension, FitReport),
+    validation: &Validation,
     tracker: &Tracker,
 ) -> (Extension, Option<Cause>, FitReport) {
     if !STAND_INS.contains(&e) || !far_from_white(data, current) {
@@ -817,7 +816,7 @@ fn look_ahead(
         return (e, None, c);
     };
     let better = judged_change(data, &c, &pair) < -BIC_THRESHOLD;
-    if !better || !validates(data, current, &pair) {
+    if !better || !validation.keeps(&pair) {
         return (e, None, c);
     }
     if e == e2 {

@@ -85,40 +85,86 @@ fn held_errors(
     tail.iter().all(|e| e.is_finite()).then_some(tail)
 }
 
-/// Both models refitted on the estimation part and compared on the held-out one; `None`
-/// when the record is too short to split or a refit fails (no evidence either way).
-pub fn hold_out(data: &FitData, current: &FitReport, candidate: &FitReport) -> Option<HoldOut> {
-    let at = split(data)?;
-    let keep: Vec<bool> = data.times.iter().map(|&t| t < at).collect();
-    let estimation = data.keeping(&keep);
-    let held = data.times.partition_point(|&t| t < at);
-    // The two refits are independent: one on each core.
-    let mut both = super::parallel::map(&[current, candidate], |r| {
-        held_errors(&estimation, data, held, r)
-    });
-    let b = both.pop().flatten()?;
-    let a = both.pop().flatten()?;
-    let ms = |v: &[f64]| {
-        // In units of the largest error, so that errors of 1e200 do not overflow a square.
-        let unit = v.iter().fold(0.0f64, |m, e| m.max(e.abs()));
-        if unit == 0.0 {
-            return 0.0;
-        }
-        let mean = v.iter().map(|e| (e / unit).powi(2)).sum::<f64>() / v.len() as f64;
-        mean * unit * unit
-    };
-    Some(HoldOut {
-        current: ms(&a),
-        candidate: ms(&b),
-        noise: difference_noise(&data.y).powi(2),
-        samples: a.len(),
-    })
+/// The hold-out of one current model on one record: the split, and the current model's
+/// refit and prediction errors, made once, for every candidate a step compares with it.
+pub struct Validation<'a> {
+    data: &'a FitData,
+    current: &'a FitReport,
+    base: std::sync::OnceLock<Option<Base>>,
 }
 
-/// Whether `candidate` may replace `current` by the hold-out: true when it predicts the
-/// held-out part about as well or better, or when the record cannot be split.
-pub fn validates(data: &FitData, current: &FitReport, candidate: &FitReport) -> bool {
-    hold_out(data, current, candidate).is_none_or(|h| h.keeps_candidate())
+/// What [`Validation`] keeps of the current model's hold-out.
+struct Base {
+    estimation: FitData,
+    held: usize,
+    current: Vec<f64>,
+}
+
+impl<'a> Validation<'a> {
+    pub fn new(data: &'a FitData, current: &'a FitReport) -> Self {
+        Self {
+            data,
+            current,
+            base: std::sync::OnceLock::new(),
+        }
+    }
+
+    /// Both models refitted on the estimation part and compared on the held-out one;
+    /// `None` when the record is too short to split or a refit fails (no evidence either
+    /// way). The first call makes the two refits at once, one on each core.
+    pub fn hold_out(&self, candidate: &FitReport) -> Option<HoldOut> {
+        let mut fresh = None;
+        let base = self.base.get_or_init(|| {
+            let at = split(self.data)?;
+            let keep: Vec<bool> = self.data.times.iter().map(|&t| t < at).collect();
+            let estimation = self.data.keeping(&keep);
+            let held = self.data.times.partition_point(|&t| t < at);
+            let mut both = super::parallel::map(&[self.current, candidate], |r| {
+                held_errors(&estimation, self.data, held, r)
+            });
+            fresh = Some(both.pop().flatten());
+            let current = both.pop().flatten()?;
+            Some(Base {
+                estimation,
+                held,
+                current,
+            })
+        });
+        let base = base.as_ref()?;
+        let candidate = match fresh {
+            Some(errors) => errors?,
+            None => held_errors(&base.estimation, self.data, base.held, candidate)?,
+        };
+        Some(HoldOut {
+            current: mean_square(&base.current),
+            candidate: mean_square(&candidate),
+            noise: difference_noise(&self.data.y).powi(2),
+            samples: base.current.len(),
+        })
+    }
+
+    /// Whether `candidate` may replace the current model by the hold-out: true when it
+    /// predicts the held-out part about as well or better, or when the record cannot be
+    /// split.
+    pub fn keeps(&self, candidate: &FitReport) -> bool {
+        self.hold_out(candidate).is_none_or(|h| h.keeps_candidate())
+    }
+}
+
+/// The mean of the squares of `v`, in units of its largest value, so that errors of 1e200
+/// do not overflow a square.
+fn mean_square(v: &[f64]) -> f64 {
+    let unit = v.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    if unit == 0.0 {
+        return 0.0;
+    }
+    let mean = v.iter().map(|e| (e / unit).powi(2)).sum::<f64>() / v.len() as f64;
+    mean * unit * unit
+}
+
+/// [`Validation::hold_out`] of one candidate.
+pub fn hold_out(data: &FitData, current: &FitReport, candidate: &FitReport) -> Option<HoldOut> {
+    Validation::new(data, current).hold_out(candidate)
 }
 
 #[cfg(test)]
