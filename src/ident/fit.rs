@@ -515,7 +515,9 @@ fn fit_on(
     let mut problem = Problem::new(data, structure, guess)?;
     problem.root_weights = weights.map(|w| w.iter().map(|w| w.sqrt()).collect());
     let x0 = problem.clamp(problem.fixed.vector(&problem.params));
-    if !problem.sse(&x0, None).is_ok_and(f64::is_finite) {
+    // A screen's start is checked by its own first evaluation (a start that cannot be
+    // evaluated ends with no finite cost, which a screen drops); any other fit says why.
+    if !options.screen && !problem.sse(&x0, None).is_ok_and(f64::is_finite) {
         return Err(match problem.model(&x0).transfer_function() {
             Err(e) => FitError::BadGuess(e),
             Ok(_) => FitError::NonFiniteCost,
