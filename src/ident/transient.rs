@@ -28,8 +28,11 @@ pub(crate) struct Transient {
 /// The free-response basis of G's poles (no integrator).
 #[derive(Debug, Clone)]
 enum Modes {
-    /// Real poles: their centre c and offsets pᵢ − c, for the divided differences.
+    /// Real poles: themselves (for the closed form: a slow pole read back as c + (p − c)
+    /// beside fast ones would lose the digits of c), and their centre c and offsets pᵢ − c,
+    /// for the divided differences.
     Real {
+        poles: Vec<f64>,
         center: f64,
         offsets: Vec<C64>,
         radius: f64,
@@ -71,6 +74,7 @@ impl Transient {
             let offsets: Vec<C64> = poles.iter().map(|p| C64::new(p - center, 0.0)).collect();
             let radius = offsets.iter().map(|d| d.norm()).fold(0.0, f64::max);
             Modes::Real {
+                poles,
                 center,
                 offsets,
                 radius,
@@ -84,10 +88,12 @@ impl Transient {
 
     fn value(&self, tau: f64) -> f64 {
         match &self.modes {
+            Modes::Real { poles, .. } if closed_form_holds(poles) => self.closed_form(poles, tau),
             Modes::Real {
                 center,
                 offsets,
                 radius,
+                ..
             } => self.combine(&real_basis(*center, offsets, *radius, tau)),
             Modes::Pair {
                 sigma,
@@ -107,21 +113,31 @@ impl Transient {
     }
 }
 
-/// The least gap between two of three poles, as a share of the largest's size, for the
-/// second divided difference in closed form: its subtraction then loses at most a few
-/// digits at any instant. Closer poles are walked ([`Walk`]).
+/// The least gap between the two farthest of three poles, as a share of the largest's
+/// size, for the second divided difference in closed form: taken over that pair (it is
+/// symmetric in its poles), its subtraction then loses at most a few digits at any instant.
+/// Three poles all closer are walked ([`Walk`]).
 const APART: f64 = 0.05;
 
-/// Whether the real poles c + dᵢ are evaluated in closed form: one or two always, three
-/// when every two are [`APART`].
-fn closed_form_holds(center: f64, offsets: &[C64]) -> bool {
-    let poles: Vec<f64> = offsets.iter().map(|d| center + d.re).collect();
+/// Whether the real poles are evaluated in closed form: one or two always, three when the
+/// two farthest are [`APART`].
+fn closed_form_holds(poles: &[f64]) -> bool {
     let size = poles.iter().fold(0.0_f64, |m, p| m.max(p.abs()));
     match poles.len() {
         0..=2 => true,
-        3 => (0..3).all(|i| ((i + 1)..3).all(|j| (poles[i] - poles[j]).abs() >= APART * size)),
+        3 => farthest(&poles).2 >= APART * size,
         _ => false,
     }
+}
+
+/// Of three poles, the indices of the two farthest apart, and their gap.
+fn farthest(poles: &[f64]) -> (usize, usize, f64) {
+    [(0, 1), (0, 2), (1, 2)]
+        .into_iter()
+        .map(|(i, j)| (i, j, (poles[i] - poles[j]).abs()))
+        .fold((0, 2, f64::NEG_INFINITY), |best, c| {
+            if c.2 > best.2 { c } else { best }
+        })
 }
 
 /// The first divided difference f[p, q] = (e^{qτ} − e^{pτ})/(q − p) without cancellation
@@ -167,18 +183,16 @@ impl Transient {
             // One or two poles, or three well apart: the basis in closed form at each
             // instant (see [`Transient::closed_form`]): a few exponentials cost less than a
             // walk's matrices.
-            Modes::Real {
-                center, offsets, ..
-            } if closed_form_holds(*center, offsets) => {
-                let poles: Vec<f64> = offsets.iter().map(|d| center + d.re).collect();
+            Modes::Real { poles, .. } if closed_form_holds(poles) => {
                 for (o, &t) in out.iter_mut().zip(times) {
-                    *o += self.closed_form(&poles, t - origin);
+                    *o += self.closed_form(poles, t - origin);
                 }
             }
             Modes::Real {
                 center,
                 offsets,
                 radius,
+                ..
             } => {
                 let mut walk = Walk::new(*center, offsets, *radius);
                 for (o, &t) in out.iter_mut().zip(times) {
@@ -195,8 +209,8 @@ impl Transient {
 
     /// x(τ) = X1·f[p_m] + X2·f[p_{m−1}, p_m] + X3·f[p1, p2, p3], the divided differences of
     /// f(p) = e^{pτ} over the poles as listed (X1 on the last): first differences by
-    /// [`pair`], the second as their difference over p3 − p1 (poles well apart,
-    /// [`closed_form_holds`]).
+    /// [`pair`], the second, symmetric in its poles, as f[a, b, c] = (f[b, c] − f[a, b])/(c − a)
+    /// with a and c the two farthest apart ([`closed_form_holds`]).
     fn closed_form(&self, poles: &[f64], tau: f64) -> f64 {
         let x = &self.coefficients;
         match *poles {
@@ -205,9 +219,12 @@ impl Transient {
                 let (f, _, eq) = pair(p, q, tau);
                 x[0] * eq + x[1] * f
             }
-            [p1, p2, p3] => {
-                let ((f12, _, _), (f23, _, e3)) = (pair(p1, p2, tau), pair(p2, p3, tau));
-                x[0] * e3 + x[1] * f23 + x[2] * (f23 - f12) / (p3 - p1)
+            [_, p2, p3] => {
+                let (f23, _, e3) = pair(p2, p3, tau);
+                let (i, k, _) = farthest(poles);
+                let (a, b, c) = (poles[i], poles[3 - i - k], poles[k]);
+                let second = (pair(b, c, tau).0 - pair(a, b, tau).0) / (c - a);
+                x[0] * e3 + x[1] * f23 + x[2] * second
             }
             _ => f64::NAN,
         }
@@ -227,6 +244,11 @@ impl Transient {
 /// is e^{p_m τ}, the earlier ones the higher divided differences.
 fn real_basis(center: f64, offsets: &[C64], radius: f64, tau: f64) -> Vec<C64> {
     let e = (center * tau).exp();
+    if e == 0.0 {
+        // Poles all close (farther ones are in closed form, [`closed_form_holds`]): every
+        // mode has decayed with e^{cτ}, and exp(τN) may overflow, 0·∞.
+        return vec![C64::new(0.0, 0.0); offsets.len()];
+    }
     let mut row = divided::exp_last_row(offsets, radius, tau);
     row.iter_mut().for_each(|r| *r *= e);
     row
@@ -320,14 +342,84 @@ mod tests {
             let scale = x.coefficients.iter().map(|c| c.abs()).sum::<f64>();
             for (k, (&t, w)) in times.iter().zip(&walked).enumerate() {
                 assert!(w.is_finite(), "k {k}: {w}");
-                let exact = x.value(t + 1.5);
+                let value = x.value(t + 1.5);
+                assert!((w - value).abs() <= 1e-12 * scale, "k {k}: {w} vs {value}");
                 // The Newton evaluation multiplies e^{cτ} by exp(τN): past radius·τ ≈ 709 the
                 // product is 0·∞ for poles far apart, where the closed form still holds.
+                let exact = newton(x, t + 1.5);
                 if exact.is_finite() {
                     assert!((w - exact).abs() <= 1e-12 * scale, "k {k}: {w} vs {exact}");
                 }
             }
         }
+    }
+
+    /// x(τ) by the Newton basis e^{cτ}·(last row of exp(τN)) for real poles, whatever their
+    /// gaps: the reference the closed form is checked against.
+    fn newton(x: &Transient, tau: f64) -> f64 {
+        match &x.modes {
+            Modes::Real {
+                center,
+                offsets,
+                radius,
+                ..
+            } => {
+                let e = (center * tau).exp();
+                let row = divided::exp_last_row(offsets, *radius, tau);
+                x.coefficients
+                    .iter()
+                    .zip(row.iter().rev())
+                    .map(|(c, r)| c * (r * e).re)
+                    .sum()
+            }
+            Modes::Pair { .. } => x.value(tau),
+        }
+    }
+
+    #[test]
+    fn two_close_lags_and_a_slow_one_hold_their_slow_mode_to_the_end() {
+        // Poles −5, −4.9 and −0.001 (lags 0.2 s, 0.204 s, 1000 s): the Newton basis overflows
+        // once radius·τ passes ≈ 709 (0·∞ = NaN from τ ≈ 280 s); the closed form over the
+        // farthest pair holds, and long after the fast modes have died x(τ) is the slow mode's
+        // share alone, in partial fractions: X1·e₃ + X2·e₃/(p₃ − p₂) + X3·e₃/((p₃ − p₁)(p₃ − p₂)).
+        let (p1, p2, p3) = (-5.0, -4.9, -0.001);
+        let (x1, x2, x3) = (1.0, -0.7, 0.3);
+        let x = transient(
+            "P3",
+            &[
+                (Param::Tp1, -1.0 / p1),
+                (Param::Tp2, -1.0 / p2),
+                (Param::Tp3, -1.0 / p3),
+                (Param::X1, x1),
+                (Param::X2, x2),
+                (Param::X3, x3),
+            ],
+        );
+        for tau in [280.0, 400.0, 2000.0] {
+            let e3 = (p3 * tau).exp();
+            let slow = x1 * e3 + x2 * e3 / (p3 - p2) + x3 * e3 / ((p3 - p1) * (p3 - p2));
+            let value = x.value(tau);
+            assert!(
+                (value - slow).abs() <= 1e-13 * slow.abs(),
+                "τ {tau}: {value} vs {slow}"
+            );
+            let mut walked = [0.0];
+            x.add_to(&[tau], 0.0, &mut walked);
+            assert!((walked[0] - slow).abs() <= 1e-13 * slow.abs(), "τ {tau}");
+        }
+        assert!(
+            newton(&x, 400.0).is_nan(),
+            "the Newton basis overflows here"
+        );
+        // Where the Newton basis is finite, the two agree, fast modes included.
+        for tau in [0.0, 0.05, 0.3, 1.0, 3.0, 20.0, 100.0] {
+            let (value, exact) = (x.value(tau), newton(&x, tau));
+            assert!(
+                (value - exact).abs() <= 1e-13,
+                "τ {tau}: {value} vs {exact}"
+            );
+        }
+        walk_matches_exact(&x);
     }
 
     #[test]
@@ -392,13 +484,10 @@ mod tests {
         while tried < 40 {
             let lag = |rng: &mut crate::ident::fit::Lcg| 0.2 * 500f64.powf(rng.unit());
             let x = three_lags((lag(&mut rng), lag(&mut rng), lag(&mut rng)));
-            let Modes::Real {
-                center, offsets, ..
-            } = &x.modes
-            else {
+            let Modes::Real { poles, .. } = &x.modes else {
                 panic!("real poles")
             };
-            if closed_form_holds(*center, offsets) {
+            if closed_form_holds(poles) {
                 walk_matches_exact(&x);
                 tried += 1;
             }
