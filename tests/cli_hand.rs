@@ -164,9 +164,11 @@ fn refusals_are_said_in_words() {
 #[test]
 fn every_method_reads_the_same_at_1e300_and_1e_minus_300() {
     // Issue 22, item 7: the table printed fit % NaN at 1e±300.
-    let unit = json(&[&scaled_step("hand", 1.0)]);
+    // Each test writes its own files: tests run at once, and one writing a file another
+    // reads made the other fail now and then.
+    let unit = json(&[&scaled_step("hand_scales", 1.0)]);
     for k in [1e300, 1e-300] {
-        let path = scaled_step("hand", k);
+        let path = scaled_step("hand_scales", k);
         let scaled = json(&[&path]);
         let pairs = unit["methods"].as_array().unwrap().iter();
         for (u, s) in pairs.zip(scaled["methods"].as_array().unwrap()) {
@@ -200,7 +202,7 @@ fn every_method_reads_the_same_at_1e300_and_1e_minus_300() {
 #[test]
 fn a_tangent_outside_the_record_is_refused() {
     // Issue 22, item 8: --tangent-at 1e9 was placed at the record's end (θ = −6236 s).
-    let path = scaled_step("hand", 1.0);
+    let path = scaled_step("hand_tangent_outside", 1.0);
     for (t, lang, words) in [
         ("1e9", "en", "outside the response"),
         ("1e9", "pt", "fora da resposta"),
@@ -233,7 +235,7 @@ fn the_table_prints_the_dead_time_the_model_uses() {
     // Issue 22, item 8: a construction meeting y0 before the step printed θ < 0 while the
     // warning said the model uses θ = 0. A late tangent on the concave part, and the three
     // points on this clean first-order curve, both put the start before the step.
-    let path = scaled_step("hand", 1.0);
+    let path = scaled_step("hand_dead_time", 1.0);
     for method in [
         vec!["--method", "tangent", "--tangent-at", "25"],
         vec!["--method", "three-point"],

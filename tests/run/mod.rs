@@ -52,7 +52,9 @@ pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
 }
 
 /// [`STEP`] (the notes' first-order step test) with u and y multiplied by `k`, written as
-/// `{name}_{k}.csv` in the tests' temporary directory; its path.
+/// `{name}_{k}.csv` in the tests' temporary directory; its path. Written whole to a file of
+/// this thread's, then renamed into place: tests run at once, and a test reading the file
+/// while another rewrote it read it cut short (`cli_hand` failed now and then).
 pub fn scaled_step(name: &str, k: f64) -> String {
     let mut out = String::new();
     for line in std::fs::read_to_string(STEP).unwrap().lines() {
@@ -65,6 +67,12 @@ pub fn scaled_step(name: &str, k: f64) -> String {
         }
     }
     let path = format!("{}/{name}_{k:e}.csv", env!("CARGO_TARGET_TMPDIR"));
-    std::fs::write(&path, out).unwrap();
+    let own = format!(
+        "{path}.{}.{:?}.part",
+        std::process::id(),
+        std::thread::current().id()
+    );
+    std::fs::write(&own, out).unwrap();
+    std::fs::rename(&own, &path).unwrap();
     path
 }
