@@ -125,7 +125,7 @@ fn closed_form_holds(poles: &[f64]) -> bool {
     let size = poles.iter().fold(0.0_f64, |m, p| m.max(p.abs()));
     match poles.len() {
         0..=2 => true,
-        3 => farthest(&poles).2 >= APART * size,
+        3 => farthest(poles).2 >= APART * size,
         _ => false,
     }
 }
