@@ -1121,7 +1121,8 @@ const SAME_OPTIMUM: f64 = 0.1;
 /// Pairs of extensions taken on to convergence after the screen (those whose best screened
 /// fit has the lowest BIC): the pair search only needs its winner.
 const PAIRS_TAKEN_ON: usize = 2;
-/// Iterations every start of a candidate runs before the leaders are picked ([`best_fits`]).
+/// Iterations the whole screen runs before the leaders are picked ([`best_fits`]): every
+/// candidate's first start, and those of its others that lead after the short screen.
 const SCREEN_ITERATIONS: usize = 6;
 /// Screened starts of each candidate taken on to convergence at a time ([`best_fits`]): the
 /// leader alone, since starts in the same basin agree after the screen; the next one goes
