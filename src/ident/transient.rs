@@ -2,12 +2,13 @@
 //! own poles in the Newton basis of their exponentials (see [`super::models`]'s docs), and its
 //! evaluation along a record.
 //!
-//! Along a record the basis is walked rather than evaluated afresh at each instant: for real
-//! poles φ(τ + h) = e^{ch}·φ(τ)·exp(hN) (N the Opitz matrix of the offsets, so the walk is the
-//! same divided differences, only advanced: [`RowAdvance`] keeps the matrices of the clock's
-//! spacings), with a fresh exact evaluation every [`RESEED`] instants, so that rounding
-//! cannot build up. An
-//! underdamped pair is cheap in closed form at each instant.
+//! One or two real poles, and three whose two farthest are apart, are evaluated in closed
+//! form at each instant (divided differences of the exponentials by `expm1`, the second over
+//! the farthest pair). Three poles all close are walked along the record: φ(τ + h) =
+//! e^{ch}·φ(τ)·exp(hN) (N the Opitz matrix of the offsets, so the walk is the same divided
+//! differences, only advanced: [`RowAdvance`] keeps the matrices of the clock's spacings),
+//! with a fresh exact evaluation every [`RESEED`] instants, so that rounding cannot build up.
+//! An underdamped pair is cheap in closed form at each instant.
 
 use super::models::{Model, Param};
 use crate::lti::C64;
