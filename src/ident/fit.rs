@@ -761,6 +761,9 @@ enum Column {
     Gain(f64),
     /// The drift: ŷ moves by (t − t₀) per unit.
     Drift,
+    /// A coefficient of the initial transient (X1 at 0…): ŷ is linear in it, and its column
+    /// is the transient's basis function ([`Simulator::transient_basis`]).
+    Transient(usize),
 }
 
 /// The least-squares problem in the free parameters, on the record in internal units.
@@ -890,11 +893,12 @@ impl Problem {
 
     /// The residuals' derivative on one piece (`range`) into `out` along a parameter whose
     /// column is known without a simulation (see [`Column`]): r = (y − ŷ)·√w, `residuals`
-    /// the piece's residuals at the point, `base` its simulator.
+    /// the piece's residuals at the point, `base` its simulator and `basis` its initial
+    /// transient's basis on the piece (empty without one).
     fn exact_column(
         &self,
         column: Column,
-        base: &Simulator,
+        (base, basis): (&Simulator, &[Vec<f64>]),
         range: std::ops::Range<usize>,
         residuals: &[f64],
         out: &mut [f64],
@@ -909,6 +913,10 @@ impl Problem {
                 let t0 = base.drift_origin();
                 out.iter_mut().zip(times).for_each(|(c, t)| *c = t - t0);
             }
+            Column::Transient(i) => match basis.get(i) {
+                Some(phi) => out.copy_from_slice(&phi[..out.len()]),
+                None => out.iter_mut().for_each(|c| *c = 0.0),
+            },
             Column::Gain(kp) => {
                 // ŷ = y − r/√w, then its forced part.
                 let y = &self.data.y[range.clone()];
@@ -926,7 +934,7 @@ impl Problem {
                         }
                     }
                 }
-                base.forced_from(times, out);
+                base.forced_from(times, out, Some(basis));
                 out.iter_mut().for_each(|c| *c /= kp);
             }
         }
@@ -968,7 +976,8 @@ impl Problem {
                 None => &mut buffer[..],
             };
             self.piece(&s, range.clone(), out);
-            sum += out[..range.len()].iter().map(|v| v * v).sum::<f64>();
+            let piece = &out[..range.len()];
+            sum += dot(piece, piece);
         }
         sum += self.within;
         if sum.is_finite() {
@@ -997,6 +1006,9 @@ impl Problem {
                     Param::Y0 => Column::Offset,
                     Param::Drift => Column::Drift,
                     Param::Kp if x[i] != 0.0 && x[i].is_finite() => Column::Gain(x[i]),
+                    Param::X1 => Column::Transient(0),
+                    Param::X2 => Column::Transient(1),
+                    Param::X3 => Column::Transient(2),
                     _ => Column::Difference,
                 };
                 Direction { moved, h, column }
@@ -1043,6 +1055,16 @@ impl Problem {
                     &r[..len]
                 }
             };
+            // The transient's basis, once per piece: the columns of its coefficients, and
+            // the transient the gain's column takes out.
+            let basis = if directions
+                .iter()
+                .any(|d| matches!(d.column, Column::Gain(_) | Column::Transient(_)))
+            {
+                base.transient_basis(&self.data.times[range.clone()])
+            } else {
+                Vec::new()
+            };
             for (((column, s), h), d) in columns
                 .iter_mut()
                 .zip(&shifted_models)
@@ -1050,7 +1072,7 @@ impl Problem {
                 .zip(directions)
             {
                 let Some(s) = s else {
-                    self.exact_column(d.column, &base, range.clone(), r, column);
+                    self.exact_column(d.column, (&base, &basis), range.clone(), r, column);
                     continue;
                 };
                 self.piece(s, range.clone(), column);
@@ -1691,9 +1713,25 @@ impl Problem {
     }
 }
 
-/// Σ aᵢbᵢ.
+/// Σ aᵢ·bᵢ over the shorter of the two. Eight running sums, not one: a single sum is a chain
+/// of dependent additions that the compiler may not reorder (floating-point addition is not
+/// associative), and the Jacobian's products are most of a fit's arithmetic between
+/// simulations; eight independent ones fill the vector lanes, and their rounding is a
+/// pairwise sum's, no worse.
 fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
+    const LANES: usize = 8;
+    let n = a.len().min(b.len());
+    let (a, b) = (&a[..n], &b[..n]);
+    let mut sums = [0.0; LANES];
+    let ((chunks_a, tail_a), (chunks_b, tail_b)) = (a.as_chunks::<LANES>(), b.as_chunks::<LANES>());
+    let tail: f64 = tail_a.iter().zip(tail_b).map(|(x, y)| x * y).sum();
+    for (x, y) in chunks_a.iter().zip(chunks_b) {
+        for ((s, x), y) in sums.iter_mut().zip(x).zip(y) {
+            *s += x * y;
+        }
+    }
+    let [s0, s1, s2, s3, s4, s5, s6, s7] = sums;
+    ((s0 + s4) + (s1 + s5)) + ((s2 + s6) + (s3 + s7)) + tail
 }
 
 /// The fall of the sum of squares that the linearised model predicts for the step from `x`
@@ -1954,6 +1992,72 @@ mod tests {
             structure,
             v,
         )
+    }
+
+    /// The Jacobian's normal equations with every column a difference of simulations.
+    fn by_differences(problem: &Problem, x: &[f64]) -> Normal {
+        let directions: Vec<Direction> = problem
+            .coordinate_directions(x)
+            .into_iter()
+            .map(|d| Direction {
+                column: Column::Difference,
+                ..d
+            })
+            .collect();
+        problem.normal_along(x, None, &directions).unwrap()
+    }
+
+    #[test]
+    fn the_exact_columns_are_the_differences_of_simulations() {
+        // Kp, Y0, the drift and the initial transient's coefficients have their columns
+        // without a simulation; each must be the derivative a difference of simulations
+        // approximates (to its truncation, ~√ε relative), with weights and without, for two
+        // lags, three lags apart and an underdamped pair.
+        let truths: [(&str, &[(Param, f64)]); 3] = [
+            ("P2", &[(Param::Tp1, 3.0), (Param::Tp2, 0.8)]),
+            (
+                "P3",
+                &[(Param::Tp1, 3.0), (Param::Tp2, 0.8), (Param::Tp3, 0.2)],
+            ),
+            ("P2U", &[(Param::Tw, 0.7), (Param::Zeta, 0.3)]),
+        ];
+        for (code, lags) in truths {
+            let mut truth = vec![
+                (Param::Kp, 1.7),
+                (Param::Y0, 40.0),
+                (Param::Drift, -0.05),
+                (Param::X1, 2.0),
+                (Param::X2, -1.1),
+                (Param::X3, 0.6),
+            ];
+            truth.extend_from_slice(lags);
+            let (data, mut structure, _) = synthetic(code, &truth, 0.02);
+            structure.drift = true;
+            structure.transient = true;
+            let mut guess = Values::default();
+            truth.iter().for_each(|&(p, x)| guess.set(p, x * 1.1));
+            let mut problem = Problem::new(&data, structure, guess).unwrap();
+            for weights in [None, Some((0..400).map(|k| 1.0 + (k % 3) as f64).collect())] {
+                problem.root_weights = weights;
+                let x = problem.fixed.vector(&problem.params);
+                let exact = problem.normal_equations(&x, None).unwrap();
+                let differences = by_differences(&problem, &x);
+                let (a, b) = (&exact.a, &differences.a);
+                for i in 0..x.len() {
+                    for k in 0..x.len() {
+                        let scale = (a[(i, i)] * a[(k, k)]).sqrt();
+                        assert!(
+                            (a[(i, k)] - b[(i, k)]).abs() <= 1e-5 * scale,
+                            "{code} {:?}×{:?}: {} vs {}",
+                            problem.params[i],
+                            problem.params[k],
+                            a[(i, k)],
+                            b[(i, k)]
+                        );
+                    }
+                }
+            }
+        }
     }
 
     #[test]

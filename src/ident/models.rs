@@ -612,18 +612,41 @@ impl Simulator {
 
     /// The forced response (what the input drives, proportional to the gain) from the
     /// output `values` this simulator filled at `times`: Y0, the drift's line and the initial
-    /// transient are taken out in place.
-    pub fn forced_from(&self, times: &[f64], values: &mut [f64]) {
+    /// transient are taken out in place, the transient from its `basis` on `times` when
+    /// given ([`Simulator::transient_basis`]), else evaluated.
+    pub fn forced_from(&self, times: &[f64], values: &mut [f64], basis: Option<&[Vec<f64>]>) {
         let (t0, y0, drift) = (self.t0, self.y0, self.drift);
         for (v, &t) in values.iter_mut().zip(times) {
             *v -= y0 + drift * (t - t0);
         }
-        if let Some(x) = &self.transient {
-            let n = times.len().min(values.len());
-            let mut free = vec![0.0; n];
-            x.add_to(&times[..n], self.origin, &mut free);
-            values.iter_mut().zip(&free).for_each(|(v, f)| *v -= f);
+        let Some(x) = &self.transient else { return };
+        let n = times.len().min(values.len());
+        match basis.filter(|b| b.len() == x.coefficients().len()) {
+            Some(basis) => {
+                for (column, coefficient) in basis.iter().zip(x.coefficients()) {
+                    values[..n]
+                        .iter_mut()
+                        .zip(column)
+                        .for_each(|(v, phi)| *v -= coefficient * phi);
+                }
+            }
+            None => {
+                let mut free = vec![0.0; n];
+                x.add_to(&times[..n], self.origin, &mut free);
+                values.iter_mut().zip(&free).for_each(|(v, f)| *v -= f);
+            }
         }
+    }
+
+    /// The initial transient's basis at `times`: one column per coefficient (X1's first),
+    /// the output's derivative along it; none without a transient.
+    pub fn transient_basis(&self, times: &[f64]) -> Vec<Vec<f64>> {
+        let Some(x) = &self.transient else {
+            return Vec::new();
+        };
+        let mut columns = vec![vec![0.0; times.len()]; x.coefficients().len()];
+        x.basis_into(times, self.origin, &mut columns);
+        columns
     }
 
     /// The first change's instant (s), the origin of the drift's line.

@@ -3,8 +3,9 @@
 //! evaluation along a record.
 //!
 //! One or two real poles, and three whose two farthest are apart, are evaluated in closed
-//! form at each instant (divided differences of the exponentials by `expm1`, the second over
-//! the farthest pair). Three poles all close are walked along the record: φ(τ + h) =
+//! form at each instant: the divided differences of the poles' exponentials, a difference
+//! taken as it stands where its poles are far apart for the instant and by `expm1` where
+//! they are close, the second over the farthest pair. Three poles all close are walked along the record: φ(τ + h) =
 //! e^{ch}·φ(τ)·exp(hN) (N the Opitz matrix of the offsets, so the walk is the same divided
 //! differences, only advanced: [`RowAdvance`] keeps the matrices of the clock's spacings),
 //! with a fresh exact evaluation every [`RESEED`] instants, so that rounding cannot build up.
@@ -34,6 +35,9 @@ enum Modes {
     /// for the divided differences.
     Real {
         poles: Vec<f64>,
+        /// The order a, b, c of three poles with a and c the two farthest apart, when the
+        /// basis is in closed form ([`closed_form_holds`]; always for one or two poles).
+        closed: Option<[usize; 3]>,
         center: f64,
         offsets: Vec<C64>,
         radius: f64,
@@ -74,8 +78,16 @@ impl Transient {
             let center = poles.iter().sum::<f64>() / count as f64;
             let offsets: Vec<C64> = poles.iter().map(|p| C64::new(p - center, 0.0)).collect();
             let radius = offsets.iter().map(|d| d.norm()).fold(0.0, f64::max);
+            let closed = closed_form_holds(&poles).then(|| match poles.len() {
+                3 => {
+                    let (a, c, _) = farthest(&poles);
+                    [a, 3 - a - c, c]
+                }
+                _ => [0, 1, 2],
+            });
             Modes::Real {
                 poles,
+                closed,
                 center,
                 offsets,
                 radius,
@@ -87,15 +99,31 @@ impl Transient {
         })
     }
 
+    /// The coefficients X1… (output units).
+    pub(crate) fn coefficients(&self) -> &[f64] {
+        &self.coefficients
+    }
+
+    /// x(τ), from a fresh evaluation of the basis.
+    #[cfg(test)]
     fn value(&self, tau: f64) -> f64 {
+        combine(padded(&self.coefficients), self.basis(tau))
+    }
+
+    /// The basis φ₁(τ)… (X1's first; zero past the poles' count), evaluated afresh.
+    fn basis(&self, tau: f64) -> Basis {
         match &self.modes {
-            Modes::Real { poles, .. } if closed_form_holds(poles) => self.closed_form(poles, tau),
+            Modes::Real {
+                poles,
+                closed: Some(order),
+                ..
+            } => closed_basis(poles, *order, exponentials(poles, tau), tau),
             Modes::Real {
                 center,
                 offsets,
                 radius,
                 ..
-            } => self.combine(&real_basis(*center, offsets, *radius, tau)),
+            } => newton_basis(&real_basis(*center, offsets, *radius, tau)),
             Modes::Pair {
                 sigma,
                 omega_squared,
@@ -103,15 +131,46 @@ impl Transient {
             } => {
                 let e = (sigma * tau).exp();
                 let (cos, sinc) = oscillation(*omega_squared, tau);
-                let mut sum = self.coefficients[0] * e * cos;
-                sum += self.coefficients.get(1).map_or(0.0, |x| x * e * sinc);
-                if let (Some(p), Some(x)) = (third, self.coefficients.get(2)) {
-                    sum += x * (p * tau).exp();
-                }
-                sum
+                [e * cos, e * sinc, third.map_or(0.0, |p| (p * tau).exp())]
             }
         }
     }
+}
+
+/// The basis of a transient at one instant: φᵢ for Xᵢ₊₁, zero past the poles' count.
+type Basis = [f64; 3];
+
+/// Σ Xᵢ·φᵢ, the coefficients `x` padded with zeros ([`padded`]).
+#[inline(always)]
+fn combine(x: Basis, basis: Basis) -> f64 {
+    x[0] * basis[0] + x[1] * basis[1] + x[2] * basis[2]
+}
+
+/// The coefficients X1… in a basis's shape, zero past their count.
+fn padded(coefficients: &[f64]) -> Basis {
+    let mut x = [0.0; 3];
+    x.iter_mut().zip(coefficients).for_each(|(x, c)| *x = *c);
+    x
+}
+
+/// e^{pτ} of each real pole (up to three), zero past their count.
+#[inline(always)]
+fn exponentials(poles: &[f64], tau: f64) -> [f64; 3] {
+    let mut e = [0.0; 3];
+    for (e, p) in e.iter_mut().zip(poles) {
+        *e = (p * tau).exp();
+    }
+    e
+}
+
+/// The basis from e^{cτ}·(last row of exp(τN)), whose last entry is e^{p_m τ} (X1's).
+fn newton_basis(row: &[C64]) -> Basis {
+    let mut basis = [0.0; 3];
+    basis
+        .iter_mut()
+        .zip(row.iter().rev())
+        .for_each(|(b, r)| *b = r.re);
+    basis
 }
 
 /// The least gap between the two farthest of three poles, as a share of the largest's
@@ -141,23 +200,21 @@ fn farthest(poles: &[f64]) -> (usize, usize, f64) {
         })
 }
 
-/// The first divided difference f[p, q] = (e^{qτ} − e^{pτ})/(q − p) without cancellation
-/// however close the poles, with e^{pτ} and e^{qτ}: anchored on the larger exponent,
-/// e^{hτ}·(1 − e^{(l − h)τ})/(h − l) by `expm1`, so that neither factor overflows on a long
-/// record, and the other exponential from the same two (τ·e^{pτ} for equal poles).
-fn pair(p: f64, q: f64, tau: f64) -> (f64, f64, f64) {
-    let (hi, lo) = if q >= p { (q, p) } else { (p, q) };
-    let (top, fall) = ((hi * tau).exp(), ((lo - hi) * tau).exp_m1());
-    let f = if hi == lo {
+/// The first divided difference f[p, q] = (e^{qτ} − e^{pτ})/(q − p) from the two
+/// exponentials `ep` = e^{pτ} and `eq` = e^{qτ}: their difference as it stands where the
+/// poles are 1/|τ| or more apart (it then loses under two bits), else without cancellation
+/// however close the poles, anchored on the larger exponent: e^{hτ}·(1 − e^{(l − h)τ})/(h − l)
+/// by `expm1` (τ·e^{pτ} for equal poles).
+#[inline(always)]
+fn divided(p: f64, q: f64, (ep, eq): (f64, f64), tau: f64) -> f64 {
+    if ((q - p) * tau).abs() >= 1.0 {
+        return (eq - ep) / (q - p);
+    }
+    let (hi, lo, top) = if q >= p { (q, p, eq) } else { (p, q, ep) };
+    if hi == lo {
         tau * top
     } else {
-        -top * fall / (hi - lo)
-    };
-    let other = top * (1.0 + fall);
-    if q >= p {
-        (f, other, top)
-    } else {
-        (f, top, other)
+        -top * ((lo - hi) * tau).exp_m1() / (hi - lo)
     }
 }
 
@@ -180,13 +237,43 @@ impl Transient {
     /// Adds x(t − origin) to `out` at each instant of `times` (ascending; both cut to the
     /// shorter).
     pub(crate) fn add_to(&self, times: &[f64], origin: f64, out: &mut [f64]) {
+        let n = times.len().min(out.len());
+        let x = padded(&self.coefficients);
+        let out = &mut out[..n];
+        self.for_each_basis(&times[..n], origin, |k, basis| {
+            out[k] += combine(x, basis);
+        });
+    }
+
+    /// The basis φᵢ(t − origin) at each instant of `times` (ascending) into `columns[i]`,
+    /// the derivative of x along Xᵢ₊₁: as many columns as given, each cut to the instants.
+    pub(crate) fn basis_into(&self, times: &[f64], origin: f64, columns: &mut [Vec<f64>]) {
+        let n = columns.iter().fold(times.len(), |n, c| n.min(c.len()));
+        self.for_each_basis(&times[..n], origin, |k, basis| {
+            columns
+                .iter_mut()
+                .zip(basis)
+                .for_each(|(column, phi)| column[k] = phi);
+        });
+    }
+
+    /// Calls `each(k, φ(t_k − origin))` at each instant of `times` (ascending).
+    fn for_each_basis(&self, times: &[f64], origin: f64, mut each: impl FnMut(usize, Basis)) {
         match &self.modes {
             // One or two poles, or three well apart: the basis in closed form at each
-            // instant (see [`Transient::closed_form`]): a few exponentials cost less than a
-            // walk's matrices.
-            Modes::Real { poles, .. } if closed_form_holds(poles) => {
-                for (o, &t) in out.iter_mut().zip(times) {
-                    *o += self.closed_form(poles, t - origin);
+            // instant (see [`closed_basis`]): a few exponentials cost less than a walk's
+            // matrices.
+            Modes::Real {
+                poles,
+                closed: Some(order),
+                ..
+            } => {
+                for (k, &t) in times.iter().enumerate() {
+                    let tau = t - origin;
+                    each(
+                        k,
+                        closed_basis(poles, *order, exponentials(poles, tau), tau),
+                    );
                 }
             }
             Modes::Real {
@@ -196,48 +283,36 @@ impl Transient {
                 ..
             } => {
                 let mut walk = Walk::new(*center, offsets, *radius);
-                for (o, &t) in out.iter_mut().zip(times) {
-                    *o += self.combine(walk.at(t - origin));
+                for (k, &t) in times.iter().enumerate() {
+                    each(k, newton_basis(walk.at(t - origin)));
                 }
             }
             Modes::Pair { .. } => {
-                for (o, &t) in out.iter_mut().zip(times) {
-                    *o += self.value(t - origin);
+                for (k, &t) in times.iter().enumerate() {
+                    each(k, self.basis(t - origin));
                 }
             }
         }
     }
+}
 
-    /// x(τ) = X1·f[p_m] + X2·f[p_{m−1}, p_m] + X3·f[p1, p2, p3], the divided differences of
-    /// f(p) = e^{pτ} over the poles as listed (X1 on the last): first differences by
-    /// [`pair`], the second, symmetric in its poles, as f[a, b, c] = (f[b, c] − f[a, b])/(c − a)
-    /// with a and c the two farthest apart ([`closed_form_holds`]).
-    fn closed_form(&self, poles: &[f64], tau: f64) -> f64 {
-        let x = &self.coefficients;
-        match *poles {
-            [p] => x[0] * (p * tau).exp(),
-            [p, q] => {
-                let (f, _, eq) = pair(p, q, tau);
-                x[0] * eq + x[1] * f
-            }
-            [_, p2, p3] => {
-                let (f23, _, e3) = pair(p2, p3, tau);
-                let (i, k, _) = farthest(poles);
-                let (a, b, c) = (poles[i], poles[3 - i - k], poles[k]);
-                let second = (pair(b, c, tau).0 - pair(a, b, tau).0) / (c - a);
-                x[0] * e3 + x[1] * f23 + x[2] * second
-            }
-            _ => f64::NAN,
+/// The basis f[p_m], f[p_{m−1}, p_m], f[p1, p2, p3] at τ from the poles' exponentials `e`:
+/// the divided differences of f(p) = e^{pτ} over the poles as listed (X1's on the last), the
+/// first by [`divided`], the second, symmetric in its poles, as f[a, b, c] = (f[b, c] −
+/// f[a, b])/(c − a) in the `order` a, b, c that puts the two farthest apart at its ends
+/// ([`closed_form_holds`]).
+#[inline(always)]
+fn closed_basis(poles: &[f64], order: [usize; 3], e: [f64; 3], tau: f64) -> Basis {
+    let first = |i: usize, j: usize| divided(poles[i], poles[j], (e[i], e[j]), tau);
+    match poles.len() {
+        1 => [e[0], 0.0, 0.0],
+        2 => [e[1], first(0, 1), 0.0],
+        3 => {
+            let [a, b, c] = order;
+            let second = (first(b, c) - first(a, b)) / (poles[c] - poles[a]);
+            [e[2], first(1, 2), second]
         }
-    }
-
-    /// Σ Xᵢ·φᵢ from the basis e^{cτ}·(last row of exp(τN)), whose last entry is e^{p_m τ}.
-    fn combine(&self, row: &[C64]) -> f64 {
-        self.coefficients
-            .iter()
-            .zip(row.iter().rev())
-            .map(|(x, r)| x * r.re)
-            .sum()
+        _ => [f64::NAN; 3],
     }
 }
 
@@ -519,6 +594,57 @@ mod tests {
                 (Param::X3, 0.3),
             ],
         )
+    }
+
+    #[test]
+    fn the_basis_sums_to_the_transient_it_is_the_derivative_of() {
+        // x = Σ Xᵢ·φᵢ, linear in the coefficients: the basis a fit's Jacobian reads as their
+        // columns, with the coefficients, gives back what add_to adds, for every kind of
+        // modes (closed form, walked, a pair with a third pole).
+        let pair = transient(
+            "P3U",
+            &[
+                (Param::Tw, 3.0),
+                (Param::Zeta, 0.3),
+                (Param::Tp3, 2.0),
+                (Param::X1, 1.0),
+                (Param::X2, 0.5),
+                (Param::X3, -0.4),
+            ],
+        );
+        let times: Vec<f64> = (0..900)
+            .map(|k| 0.37 * k as f64 + 0.01 * (k % 7) as f64)
+            .collect();
+        for x in [
+            three_lags((30.0, 5.0, 1.0)),
+            three_lags((8.0, 8.0, 8.0)),
+            transient(
+                "P2",
+                &[
+                    (Param::Tp1, 4.0),
+                    (Param::Tp2, 4.0),
+                    (Param::X1, 2.0),
+                    (Param::X2, 1.0),
+                ],
+            ),
+            pair,
+        ] {
+            let mut added = vec![0.0; times.len()];
+            x.add_to(&times, -0.5, &mut added);
+            let mut basis = vec![vec![0.0; times.len()]; x.coefficients().len()];
+            x.basis_into(&times, -0.5, &mut basis);
+            for (k, a) in added.iter().enumerate() {
+                let sum: f64 = basis
+                    .iter()
+                    .zip(x.coefficients())
+                    .map(|(b, c)| c * b[k])
+                    .sum();
+                assert!(
+                    (sum - a).abs() <= 1e-13 * a.abs().max(1.0),
+                    "k {k}: {sum} vs {a}"
+                );
+            }
+        }
     }
 
     #[test]
