@@ -15,6 +15,7 @@
 //! than a tenth and by more than the output noise's own variance ([`HoldOut::keeps_candidate`]).
 
 use super::fit::{FitData, FitOptions, FitReport, search_fit};
+use super::models::Model;
 use super::rest::difference_noise;
 
 /// The share of the span after the first change the estimation part holds.
@@ -86,11 +87,14 @@ fn held_errors(
 }
 
 /// The hold-out of one current model on one record: the split, and the current model's
-/// refit and prediction errors, made once, for every candidate a step compares with it.
+/// refit and prediction errors, made once, for every candidate a step compares with it;
+/// each candidate's, made once however often the step asks (its paying candidates first,
+/// then its leader, which may be one of them).
 pub struct Validation<'a> {
     data: &'a FitData,
     current: &'a FitReport,
     base: std::sync::OnceLock<Option<Base>>,
+    candidates: std::sync::Mutex<Vec<(Model, Option<Vec<f64>>)>>,
 }
 
 /// What [`Validation`] keeps of the current model's hold-out.
@@ -106,6 +110,7 @@ impl<'a> Validation<'a> {
             data,
             current,
             base: std::sync::OnceLock::new(),
+            candidates: std::sync::Mutex::new(Vec::new()),
         }
     }
 
@@ -131,16 +136,32 @@ impl<'a> Validation<'a> {
             })
         });
         let base = base.as_ref()?;
-        let candidate = match fresh {
-            Some(errors) => errors?,
-            None => held_errors(&base.estimation, self.data, base.held, candidate)?,
+        let model = candidate.model;
+        let known = self.known(&model);
+        let errors = match (fresh, known) {
+            (Some(errors), _) | (None, Some(errors)) => errors,
+            (None, None) => held_errors(&base.estimation, self.data, base.held, candidate),
         };
+        if let Ok(mut list) = self.candidates.lock()
+            && !list.iter().any(|(m, _)| *m == model)
+        {
+            list.push((model, errors.clone()));
+        }
+        let candidate = errors?;
         Some(HoldOut {
             current: mean_square(&base.current),
             candidate: mean_square(&candidate),
             noise: difference_noise(&self.data.y).powi(2),
             samples: base.current.len(),
         })
+    }
+
+    /// The held-out errors of a candidate already compared (`None` if it was not).
+    fn known(&self, model: &Model) -> Option<Option<Vec<f64>>> {
+        let list = self.candidates.lock().ok()?;
+        list.iter()
+            .find(|(m, _)| m == model)
+            .map(|(_, e)| e.clone())
     }
 
     /// Whether `candidate` may replace the current model by the hold-out: true when it
@@ -255,6 +276,14 @@ mod tests {
         assert!(drift_hold.candidate > drift_hold.current, "{drift_hold:?}");
         assert!(!drift_hold.keeps_candidate(), "{drift_hold:?}");
         assert_eq!(drift_hold.samples, 141);
+        // One validation compares both, each once however often it is asked, and says
+        // what a fresh one says.
+        let validation = Validation::new(&data, &current);
+        for _ in 0..2 {
+            assert_eq!(validation.hold_out(&pole), Some(pole_hold));
+            assert_eq!(validation.hold_out(&with_drift), Some(drift_hold));
+        }
+        assert_eq!(validation.candidates.lock().map(|l| l.len()).ok(), Some(2));
     }
 
     #[test]
