@@ -6,6 +6,8 @@
 //! - [`cli`]: the headless command line of the `degrau` binary.
 //! - [`text`]: the words of every fact and label, in English and Portuguese.
 
+pub use degrau_words::phrases;
+
 pub mod app;
 pub mod cli;
 pub mod ident;

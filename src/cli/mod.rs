@@ -61,7 +61,15 @@ const EXIT_NO_WINDOW: u8 = 1;
 pub struct Cli {
     /// Language of the text output and of the messages: en (English) or pt (Português);
     /// --json output is the same in every language.
-    #[arg(long, global = true, value_enum, default_value_t = Lang::En)]
+    #[arg(
+        long,
+        global = true,
+        default_value = "en",
+        value_parser = clap::builder::TypedValueParser::map(
+            clap::builder::EnumValueParser::<LangArg>::new(),
+            Lang::from
+        )
+    )]
     pub lang: Lang,
     #[command(subcommand)]
     pub command: Option<Command>,
@@ -537,6 +545,26 @@ fn parse_list<T>(
     parse(text).map_err(|source| CliError::Parse { option, source })
 }
 
+/// A language `--lang` takes: clap's side of [`Lang`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LangArg {
+    /// English.
+    #[value(name = "en")]
+    En,
+    /// Brazilian Portuguese.
+    #[value(name = "pt")]
+    Pt,
+}
+
+impl From<LangArg> for Lang {
+    fn from(lang: LangArg) -> Self {
+        match lang {
+            LangArg::En => Lang::En,
+            LangArg::Pt => Lang::Pt,
+        }
+    }
+}
+
 /// The language asked for by `--lang` in `args`, read before clap parses them so that a
 /// refused flag is said in that language too (English when absent or unknown).
 fn lang_in(args: &[std::ffi::OsString]) -> Option<Lang> {
@@ -548,8 +576,8 @@ fn lang_in(args: &[std::ffi::OsString]) -> Option<Lang> {
             Some(rest) => rest.strip_prefix('=').map(str::to_string),
             None => None,
         };
-        if let Some(v) = value.and_then(|v| <Lang as clap::ValueEnum>::from_str(&v, true).ok()) {
-            lang = Some(v);
+        if let Some(v) = value.and_then(|v| <LangArg as clap::ValueEnum>::from_str(&v, true).ok()) {
+            lang = Some(v.into());
         }
     }
     lang

@@ -18,7 +18,7 @@ pub mod feedback;
 pub mod locus;
 pub mod markov;
 pub mod metrics;
-pub mod number;
+pub use degrau_words::number;
 pub mod parse;
 pub mod poly;
 pub mod response;
