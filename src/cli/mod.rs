@@ -171,7 +171,14 @@ pub struct StepArgs {
     pub samples: Option<usize>,
     /// The input: step (the default, with its metrics), impulse, ramp or parabola (y(t) and
     /// its samples, 201 unless --samples says).
-    #[arg(long, value_enum, default_value_t = Input::Step)]
+    #[arg(
+        long,
+        default_value = "step",
+        value_parser = clap::builder::TypedValueParser::map(
+            clap::builder::EnumValueParser::<InputArg>::new(),
+            Input::from
+        )
+    )]
     pub response: Input,
     /// Print one JSON object instead of text.
     #[arg(long)]
@@ -543,6 +550,30 @@ fn parse_list<T>(
     parse: impl Fn(&str) -> Result<Vec<T>, ParseError>,
 ) -> Result<Vec<T>, CliError> {
     parse(text).map_err(|source| CliError::Parse { option, source })
+}
+
+/// An input `--response` takes: clap's side of [`Input`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum InputArg {
+    /// A unit impulse δ(t) (times the amplitude).
+    Impulse,
+    /// A step of the amplitude.
+    Step,
+    /// A ramp A·t.
+    Ramp,
+    /// A parabola A·t²/2.
+    Parabola,
+}
+
+impl From<InputArg> for Input {
+    fn from(input: InputArg) -> Self {
+        match input {
+            InputArg::Impulse => Input::Impulse,
+            InputArg::Step => Input::Step,
+            InputArg::Ramp => Input::Ramp,
+            InputArg::Parabola => Input::Parabola,
+        }
+    }
 }
 
 /// A language `--lang` takes: clap's side of [`Lang`].

@@ -7,8 +7,6 @@ use crate::cli::arx::LsqCliError;
 use crate::ident::arx::{Cost, LsqError, Regressor};
 use crate::ident::prbs::{MAX_ORDER, MIN_ORDER, PrbsError};
 use crate::ident::validation::{MIN_PART, ValidationError};
-use crate::lti::discrete::DiscreteError;
-use crate::lti::{C64, fmt_c};
 
 use super::{Lang, Localize, Message};
 
@@ -79,24 +77,13 @@ pub fn percent(x: f64, lang: Lang) -> String {
     }
 }
 
-/// 10^`log10` written as `m·e±E` with `digits` significant digits, for a number a double
-/// cannot hold.
-pub(crate) fn power_of_ten(log10: f64, digits: i32, lang: Lang) -> String {
-    let mut exponent = log10.floor();
-    let mut m = crate::lti::number::sig(10f64.powf(log10 - exponent), digits);
-    if m == "10" {
-        (m, exponent) = ("1".into(), exponent + 1.0);
-    }
-    lang.localize_number(&format!("{m}e{exponent}"))
-}
-
 /// J as text: the number, or its order of magnitude when it lies beyond double precision.
 pub fn cost(c: &Cost, lang: Lang) -> String {
     match c.value() {
         Some(j) => lang.num(j, 6),
         None => format!(
             "{} ({})",
-            power_of_ten(c.log10(), 6, lang),
+            lang.power_of_ten(c.log10(), 6),
             LsqPhrase::BeyondDouble.get(lang)
         ),
     }
@@ -234,126 +221,6 @@ impl Localize for LsqError {
     }
 }
 
-/// A pole as text in `lang`.
-fn pole_text(p: C64, lang: Lang) -> String {
-    lang.localize_number(&fmt_c(p))
-}
-
-impl Localize for DiscreteError {
-    fn text(&self, lang: Lang) -> String {
-        match self {
-            DiscreteError::BadSamplingPeriod(h) => {
-                let h = lang.num(*h, 6);
-                lang.pick(
-                    format!("the sampling period h = {h} s must be a positive number"),
-                    format!("o período de amostragem h = {h} s deve ser um número positivo"),
-                )
-            }
-            DiscreteError::BadCoefficients => lang
-                .pick(
-                    "the coefficients must be finite numbers, and A(z) must start with 1",
-                    "os coeficientes devem ser números finitos, e A(z) deve começar com 1",
-                )
-                .into(),
-            DiscreteError::NoNumerator => lang
-                .pick(
-                    "B(z) is zero: the input has no effect",
-                    "B(z) é zero: a entrada não tem efeito",
-                )
-                .into(),
-            DiscreteError::NoPoles => lang
-                .pick(
-                    "A(z) has no pole: d2c needs at least one",
-                    "A(z) não tem polo: o d2c precisa de ao menos um",
-                )
-                .into(),
-            DiscreteError::NoContinuousPole { pole } => {
-                let p = pole_text(*pole, lang);
-                lang.pick(
-                    format!(
-                        "pole z = {p} is on the negative real axis or at 0: no continuous system samples to it (d2c has no answer)"
-                    ),
-                    format!(
-                        "o polo z = {p} está no semieixo real negativo ou em 0: nenhum sistema contínuo amostrado o dá (o d2c não tem resposta)"
-                    ),
-                )
-            }
-            DiscreteError::RepeatedPoles { pole } => {
-                let p = pole_text(*pole, lang);
-                lang.pick(
-                    format!("pole z = {p} is repeated: d2c here needs distinct poles"),
-                    format!("o polo z = {p} é repetido: o d2c aqui precisa de polos distintos"),
-                )
-            }
-            DiscreteError::NumeratorTooLong { na, nb } => lang.pick(
-                format!(
-                    "nb = {nb} b's for na = {na}: the ZOH image of a proper G(s) has at most na + 1 (d2c inverts nb ≤ na + 1)"
-                ),
-                format!(
-                    "nb = {nb} b's para na = {na}: a imagem ZOH de um G(s) próprio tem no máximo na + 1 (o d2c inverte nb ≤ na + 1)"
-                ),
-            ),
-            DiscreteError::DelayTooLong { samples } => {
-                // θ/h beyond 1.8e308 (θ = 1.8e308 s at h = 0.1 s) is said as that bound.
-                let samples = if samples.is_finite() {
-                    lang.num(*samples, 6)
-                } else {
-                    lang.pick("more than 1.8e308", "mais de 1,8e308").to_string()
-                };
-                let most = lang.num(crate::lti::discrete::MAX_DELAY_SAMPLES as f64, 6);
-                lang.pick(
-                    format!(
-                        "the dead time spans {samples} sampling periods: at most {most} are counted, beyond which double precision cannot place it within a sample"
-                    ),
-                    format!(
-                        "o tempo morto abrange {samples} períodos de amostragem: no máximo {most} são contados, além disso a precisão dupla não o situa dentro de uma amostra"
-                    ),
-                )
-            }
-            DiscreteError::PeriodTooShort { ts, pole } => {
-                let (h, p) = (lang.num(*ts, 6), pole_text(*pole, lang));
-                lang.pick(
-                    format!(
-                        "h = {h} s is too short for the pole s = {p}: e^(p·h) differs from 1 by less than A(z)'s coefficients can hold in double precision, so they could not tell it from an integrator; sample more slowly"
-                    ),
-                    format!(
-                        "h = {h} s é curto demais para o polo s = {p}: e^(p·h) difere de 1 menos do que os coeficientes de A(z) conseguem guardar em precisão dupla, então eles não o distinguiriam de um integrador; amostre mais devagar"
-                    ),
-                )
-            }
-            DiscreteError::NumeratorOutOfRange { ts } => {
-                let h = lang.num(*ts, 6);
-                lang.pick(
-                    format!(
-                        "at h = {h} s the coefficients of B(z) fall outside double precision's range (2.2e-308 to 1.8e308): change the sampling period or the units of time"
-                    ),
-                    format!(
-                        "com h = {h} s os coeficientes de B(z) saem da faixa da precisão dupla (2,2e-308 a 1,8e308): mude o período de amostragem ou a unidade de tempo"
-                    ),
-                )
-            }
-            DiscreteError::CommonFactor { root } => {
-                let z = pole_text(*root, lang);
-                lang.pick(
-                    format!(
-                        "B(z) and A(z) share the root z = {z}: a pole cancelled by a zero, so H(z) is of lower order than A(z) says; write it without the common factor"
-                    ),
-                    format!(
-                        "B(z) e A(z) têm a raiz z = {z} em comum: um polo cancelado por um zero, então H(z) é de ordem menor do que A(z) diz; escreva-o sem o fator comum"
-                    ),
-                )
-            }
-            DiscreteError::NoZohEquivalent => lang
-                .pick(
-                    "no continuous G(s)·e^(−θs) has these samples: the zero-order-hold discretisation of the candidate does not give H(z) back",
-                    "nenhum G(s)·e^(−θs) contínuo tem estas amostras: a discretização com segurador de ordem zero do candidato não devolve H(z)",
-                )
-                .into(),
-            DiscreteError::Lti(e) => e.text(lang),
-        }
-    }
-}
-
 impl Localize for PrbsError {
     fn text(&self, lang: Lang) -> String {
         match self {
@@ -480,29 +347,6 @@ pub fn messages() -> Vec<Message> {
         },
         LsqError::BadSplit,
     ];
-    let discrete = [
-        DiscreteError::BadSamplingPeriod(0.0),
-        DiscreteError::BadCoefficients,
-        DiscreteError::NoNumerator,
-        DiscreteError::NoPoles,
-        DiscreteError::NoContinuousPole {
-            pole: C64::new(-0.5, 0.0),
-        },
-        DiscreteError::RepeatedPoles {
-            pole: C64::new(0.5, 0.0),
-        },
-        DiscreteError::NumeratorTooLong { na: 2, nb: 4 },
-        DiscreteError::DelayTooLong { samples: 1e19 },
-        DiscreteError::PeriodTooShort {
-            ts: 1e-20,
-            pole: C64::new(-1.0, 0.0),
-        },
-        DiscreteError::NumeratorOutOfRange { ts: 1e-160 },
-        DiscreteError::CommonFactor {
-            root: C64::new(0.9, 0.0),
-        },
-        DiscreteError::NoZohEquivalent,
-    ];
     let prbs = [
         PrbsError::BadOrder(40),
         PrbsError::BadClock,
@@ -522,11 +366,7 @@ pub fn messages() -> Vec<Message> {
         lsq.iter()
             .map(|e| Message::of(format!("lsq::LsqError::{e:?}"), e)),
     );
-    all.extend(
-        discrete
-            .iter()
-            .map(|e| Message::of(format!("lsq::DiscreteError::{e:?}"), e)),
-    );
+    all.extend(degrau_lti::words::discrete::messages());
     all.extend(
         prbs.iter()
             .map(|e| Message::of(format!("lsq::PrbsError::{e:?}"), e)),

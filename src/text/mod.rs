@@ -13,6 +13,7 @@
 //!   write both languages; [`every_message`] lists an example of every phrase and fact so a
 //!   test can check that none is missing or left untranslated.
 
+pub use degrau_lti::words::{feedback, lti, step};
 pub use degrau_words::{Lang, Localize, Message};
 
 pub mod app;
@@ -21,16 +22,13 @@ pub mod clap_words;
 pub mod cli;
 pub mod code;
 pub mod design;
-pub mod feedback;
 pub mod hand;
 pub mod ident;
 pub mod identify;
 pub mod lsq;
 pub mod lsq_app;
-pub mod lti;
 pub mod operating_point;
 pub mod report;
-pub mod step;
 pub mod steps;
 pub mod test_causes;
 

@@ -52,6 +52,17 @@ impl Lang {
         self.localize_number(&crate::number::sig(x, digits))
     }
 
+    /// 10^`log10` written as `m·e±E` with `digits` significant digits and this language's
+    /// separator, for a number a double cannot hold.
+    pub fn power_of_ten(self, log10: f64, digits: i32) -> String {
+        let mut exponent = log10.floor();
+        let mut m = crate::number::sig(10f64.powf(log10 - exponent), digits);
+        if m == "10" {
+            (m, exponent) = ("1".into(), exponent + 1.0);
+        }
+        self.localize_number(&format!("{m}e{exponent}"))
+    }
+
     /// A number already written with a decimal point, with this language's separator.
     pub fn localize_number(self, text: &str) -> String {
         match self {

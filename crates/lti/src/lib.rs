@@ -3,11 +3,13 @@
 //! the step metrics of MATLAB's `stepinfo` and the window that shows them ([`analyse`]), and
 //! the text of y(t) as the course notes write it.
 //!
-//! Its modules depend on each other in one direction: [`number`] (numbers as text) is a
-//! leaf; [`response`] knows nothing of the metrics; [`metrics`] reads the response;
-//! [`analysis`] puts the metrics and the window together.
+//! Its modules depend on each other in one direction: [`number`] (numbers as text, from the
+//! words' ground) is a leaf; [`response`] knows nothing of the metrics; [`metrics`] reads the
+//! response; [`analysis`] puts the metrics and the window together; [`words`] says every
+//! fact of the crate (its errors, metrics, approximations, loops) in English and Portuguese.
 //!
-//! Pure math: nothing here knows about the GUI or the command line.
+//! Pure math: the crate depends on no GUI and no command line (Cargo keeps it so: it depends
+//! only on `degrau-words`, nalgebra, serde and thiserror).
 
 pub mod analysis;
 pub mod approx;
@@ -24,6 +26,7 @@ pub mod poly;
 pub mod response;
 pub mod root_error;
 pub mod tf;
+pub mod words;
 
 pub use analysis::{StepAnalysis, analyse};
 pub use metrics::{StepInfo, StepInfoOptions};
@@ -32,7 +35,7 @@ pub use response::{Behaviour, StepResponse};
 pub use tf::TransferFunction;
 
 /// What can go wrong when a system is built or analysed: a typed fact, said in words (English
-/// and Portuguese) by [`crate::text::lti`]; its `Display` is the English text.
+/// and Portuguese) by [`crate::words::lti`]; its `Display` is the English text.
 #[derive(Debug, Clone, PartialEq)]
 pub enum LtiError {
     /// A coefficient is NaN or infinite.
@@ -92,7 +95,7 @@ pub enum LtiError {
 
 impl std::fmt::Display for LtiError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::text::Localize::text(self, crate::text::Lang::En))
+        f.write_str(&degrau_words::Localize::text(self, degrau_words::Lang::En))
     }
 }
 

@@ -16,7 +16,7 @@
 use super::C64;
 
 /// What is wrong with a piece of text that should hold numbers: a typed fact, said in words
-/// by [`crate::text::lti`] (its `Display` is the English text), e.g. `item 2 ("-1+xj") is
+/// by [`crate::words::lti`] (its `Display` is the English text), e.g. `item 2 ("-1+xj") is
 /// not a number like -1+2j`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum ParseError {
@@ -32,7 +32,7 @@ pub enum ParseError {
 
 impl std::fmt::Display for ParseError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::text::Localize::text(self, crate::text::Lang::En))
+        f.write_str(&degrau_words::Localize::text(self, degrau_words::Lang::En))
     }
 }
 

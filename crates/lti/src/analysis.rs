@@ -60,7 +60,7 @@ impl StepResponse {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lti::{C64, TransferFunction};
+    use crate::{C64, TransferFunction};
 
     fn response(poles: &[C64], k: f64, delay: f64) -> StepResponse {
         let g = TransferFunction::from_zpk(&[], poles, k)

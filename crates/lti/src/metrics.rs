@@ -655,7 +655,7 @@ pub fn safe_newton(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lti::{C64, TransferFunction};
+    use crate::{C64, TransferFunction};
 
     fn c(re: f64, im: f64) -> C64 {
         C64::new(re, im)

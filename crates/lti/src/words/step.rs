@@ -2,12 +2,12 @@
 //! metric's name, unit and definition (with the thresholds in force), the cell text of a
 //! value or of its absence, the response's behaviour and the system's stability.
 //!
-//! Definitions follow python-control's `step_info` (see `crate::lti::metrics`).
+//! Definitions follow python-control's `step_info` (see `crate::metrics`).
 
-use crate::lti::tf::Stability;
-use crate::lti::{Behaviour, StepInfo, StepInfoOptions};
+use crate::tf::Stability;
+use crate::{Behaviour, StepInfo, StepInfoOptions};
 
-use super::{Lang, Localize, Message};
+use degrau_words::{Lang, Localize, Message};
 
 /// A step metric of [`StepInfo`], in the order the table lists them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -80,7 +80,7 @@ impl Metric {
     /// What the metric measures, with the thresholds in `options`.
     pub fn definition(self, options: &StepInfoOptions, lang: Lang) -> String {
         let (lo, hi) = options.rise_limits;
-        let pct = |f: f64| lang.localize_number(&crate::lti::number::sig(100.0 * f, 6));
+        let pct = |f: f64| lang.localize_number(&crate::number::sig(100.0 * f, 6));
         match self {
             Metric::RiseTime => match lang {
                 Lang::En => format!(
@@ -370,11 +370,11 @@ pub fn messages() -> Vec<Message> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lti::TransferFunction;
+    use crate::TransferFunction;
 
     fn info_of(num: &[f64], den: &[f64]) -> StepInfo {
         let tf = TransferFunction::from_coeffs(num, den).unwrap();
-        let r = crate::lti::StepResponse::new(&tf, 1.0).unwrap();
+        let r = crate::StepResponse::new(&tf, 1.0).unwrap();
         StepInfo::of_response(&r, &StepInfoOptions::default())
     }
 

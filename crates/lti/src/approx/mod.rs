@@ -26,9 +26,9 @@ pub use pade::{
 pub use reduce::{Method, Reduction, dominant, half_rule, moment_matching, reduce, taylor};
 
 /// What can go wrong when a model is approximated: a typed fact, said in words by
-/// [`crate::text::approx`]; its `Display` is the English text.
+/// [`crate::words::approx`]; its `Display` is the English text.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
+#[error("{}", degrau_words::Localize::text(self, degrau_words::Lang::En))]
 pub enum ApproxError {
     /// The approximate model could not be built or analysed.
     Lti(#[from] LtiError),

@@ -17,8 +17,8 @@
 
 use serde::Serialize;
 
-use crate::lti::{StepInfo, StepInfoOptions, StepResponse, analyse};
-use crate::text::step::Metric;
+use crate::words::step::Metric;
+use crate::{StepInfo, StepInfoOptions, StepResponse, analyse};
 
 /// The tolerance of "within 5 %", relative to the original's value.
 pub const WITHIN: f64 = 0.05;
@@ -238,7 +238,7 @@ fn differences(original: &StepInfo, approx: &StepInfo) -> Vec<MetricDifference> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lti::TransferFunction;
+    use crate::TransferFunction;
 
     fn response(num: &[f64], den: &[f64]) -> StepResponse {
         StepResponse::new(&TransferFunction::from_coeffs(num, den).unwrap(), 1.0).unwrap()

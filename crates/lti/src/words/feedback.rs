@@ -3,9 +3,9 @@
 //! and the Design mode's loop, locus and spec controls, in English and Brazilian Portuguese
 //! (malha fechada, lugar das raízes, ganho crítico, erro em regime permanente, …).
 
-use crate::lti::feedback::{Input, InverseError};
+use crate::feedback::{Input, InverseError};
 
-use super::{Lang, Localize, Message};
+use degrau_words::{Lang, Localize, Message};
 
 impl Localize for InverseError {
     fn text(&self, lang: Lang) -> String {
@@ -162,7 +162,7 @@ impl Localize for LoopError {
                 ),
             },
             LoopError::BadPade(item) => {
-                let most = crate::lti::feedback::PadeOrder::MAX_N;
+                let most = crate::feedback::PadeOrder::MAX_N;
                 match lang {
                     Lang::En => format!(
                         "--pade \"{item}\" is not a Padé order: write m,n with 1 ≤ n ≤ {most} and 0 ≤ m ≤ n, e.g. \"3,3\""
@@ -291,7 +291,7 @@ impl Localize for LoopLine {
     }
 }
 
-crate::phrases! {
+degrau_words::phrases! {
     /// The loop's fixed phrases (CLI report and Design mode).
     pub enum Loop {
         NoSteadyState => (

@@ -7,10 +7,10 @@
 //! separator; the syntax examples of [`ParseError`] keep Rust's decimal point, which is what
 //! the parser reads.
 
-use crate::lti::parse::ParseError;
-use crate::lti::{LtiError, Polynomial, Quantity, RootRole, exact, fmt_c, tf};
+use crate::parse::ParseError;
+use crate::{LtiError, Polynomial, Quantity, RootRole, exact, fmt_c, tf};
 
-use super::{Lang, Localize, Message};
+use degrau_words::{Lang, Localize, Message};
 
 /// `x` with every digit it has, in `lang`'s decimal separator.
 fn num(lang: Lang, x: f64) -> String {
@@ -23,7 +23,7 @@ fn sci(lang: Lang, x: f64) -> String {
 }
 
 /// A complex number as `-1+2j`, in `lang`'s decimal separator.
-fn complex(lang: Lang, c: crate::lti::C64) -> String {
+fn complex(lang: Lang, c: crate::C64) -> String {
     lang.localize_number(&fmt_c(c))
 }
 
@@ -328,7 +328,7 @@ impl Localize for LtiError {
             }
             BadSettlingBand(band) => {
                 let (min, band) = (
-                    num(lang, crate::lti::metrics::MIN_SETTLING_THRESHOLD),
+                    num(lang, crate::metrics::MIN_SETTLING_THRESHOLD),
                     num(lang, *band),
                 );
                 if en {
@@ -432,9 +432,9 @@ macro_rules! every_variant {
 }
 
 /// An example of every [`LtiError`], [`Quantity`] and [`ParseError`], for
-/// [`super::every_message`].
+/// the test of every message.
 pub fn messages() -> Vec<Message> {
-    use crate::lti::C64;
+    use crate::C64;
     let coefficient = Quantity::Coefficient {
         of: Polynomial::Denominator,
         index: 2,
@@ -548,7 +548,7 @@ mod tests {
         );
         let unpaired = LtiError::UnpairedComplexRoot {
             what: RootRole::Pole,
-            root: crate::lti::C64::new(-0.5, 2.0),
+            root: crate::C64::new(-0.5, 2.0),
         };
         assert_eq!(
             unpaired.text(Lang::Pt),

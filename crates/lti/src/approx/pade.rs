@@ -13,8 +13,8 @@ use serde::{Deserialize, Serialize};
 
 use super::ApproxError;
 use super::reduce::low_frequency_gain;
-use crate::lti::tf::MAX_ORDER;
-use crate::lti::{C64, TransferFunction, poly};
+use crate::tf::MAX_ORDER;
+use crate::{C64, TransferFunction, poly};
 
 /// A rational approximant of e^{−θs}.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]

@@ -11,7 +11,7 @@
 
 use super::number::format_number;
 use super::response::StepResponse;
-use crate::text::Lang;
+use degrau_words::Lang;
 
 /// How oscillatory terms are written.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -364,7 +364,7 @@ pub fn fraction(x: f64) -> Option<(i64, i64)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lti::{C64, TransferFunction};
+    use crate::{C64, TransferFunction};
 
     fn c(re: f64, im: f64) -> C64 {
         C64::new(re, im)

@@ -11,8 +11,8 @@
 //!   denominator has the poles e^{pᵢh}; the numerator comes from the pulse response
 //!   g(k) = s(kh) − s((k−1)h) of the step response s(t) of G·e^{−Ls}, through B = A·G
 //!   (polynomial product, truncated at n + 1 terms). s(t) is the closed form
-//!   ([`crate::lti::StepResponse`]) except near t = 0, where its Taylor series from the
-//!   Markov parameters keeps its relative precision ([`crate::lti::markov`]): at h = 1e-9
+//!   ([`crate::StepResponse`]) except near t = 0, where its Taylor series from the
+//!   Markov parameters keeps its relative precision ([`crate::markov`]): at h = 1e-9
 //!   the samples are 1e-19 where the closed form holds 1e-16. This matches the matrix
 //!   exponential of the augmented state matrix (the tests check it) without building a
 //!   state-space model, and it handles repeated poles and integrators as the step response
@@ -66,9 +66,9 @@ struct Sampled {
     dc_gain: f64,
 }
 
-/// What can go wrong with a discrete transfer function (`crate::text::lsq` says it).
+/// What can go wrong with a discrete transfer function (`crate::words::discrete` says it).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
+#[error("{}", degrau_words::Localize::text(self, degrau_words::Lang::En))]
 pub enum DiscreteError {
     /// The sampling period is not a positive finite number.
     BadSamplingPeriod(f64),

@@ -53,7 +53,7 @@ const REANCHOR: usize = 64;
 /// Intervals of the grid on which [`StepResponse::repeated_form_error`] compares the forms.
 const FORM_GRID: usize = 4000;
 
-/// What a step response does as t → ∞ (its words: `crate::text::step`).
+/// What a step response does as t → ∞ (its words: `crate::words::step`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Behaviour {

@@ -21,7 +21,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::ApproxError;
-use crate::lti::{C64, TransferFunction};
+use crate::{C64, TransferFunction};
 
 /// A reduction method of the notes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -144,7 +144,7 @@ fn split(roots: &[C64]) -> (usize, Vec<Factor>) {
     (origin, factors)
 }
 
-use crate::lti::tf::product_neg_nonzero as nonzero_product;
+use crate::tf::product_neg_nonzero as nonzero_product;
 
 /// The low-frequency gain lim_{s→0} s^k·G(s)/s^j (k poles and j zeros at the origin): the
 /// static gain G(0) of a system without roots at the origin.

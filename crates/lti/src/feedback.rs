@@ -97,7 +97,7 @@ impl RationalLoop {
 }
 
 /// The input a response is computed for.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Input {
     /// A unit impulse δ(t) (times the amplitude).
@@ -471,9 +471,9 @@ pub struct SecondOrder {
 }
 
 /// Why a pair of specs gives no underdamped second-order system.
-/// Its words: [`crate::text::feedback`].
+/// Its words: [`crate::words::feedback`].
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
-#[error("{}", crate::text::Localize::text(self, crate::text::Lang::En))]
+#[error("{}", degrau_words::Localize::text(self, degrau_words::Lang::En))]
 pub enum InverseError {
     /// The overshoot (%) is not in (0, 100).
     Overshoot(f64),
