@@ -6,10 +6,10 @@
 //! - [`cli`]: the headless command line of the `degrau` binary.
 //! - [`text`]: the words of every fact and label, in English and Portuguese.
 
+pub use degrau_app as app;
 pub use degrau_ident as ident;
 pub use degrau_lti as lti;
 pub use degrau_words::phrases;
 
-pub mod app;
 pub mod cli;
 pub mod text;

@@ -13,20 +13,16 @@
 //!   write both languages; [`every_message`] lists an example of every phrase and fact so a
 //!   test can check that none is missing or left untranslated.
 
+pub use degrau_app::words::{app, code, design, identify, lsq_app};
 pub use degrau_ident::words::{ident, operating_point, report, steps, test_causes};
 pub use degrau_lti::words::{feedback, lti, step};
 pub use degrau_words::{Lang, Localize, Message};
 
-pub mod app;
 pub mod approx;
 pub mod clap_words;
 pub mod cli;
-pub mod code;
-pub mod design;
 pub mod hand;
-pub mod identify;
 pub mod lsq;
-pub mod lsq_app;
 
 /// Every message Degrau can show: each catalogue's phrases and an example of every
 /// variant of every typed fact. A new catalogue or fact type adds its line here.

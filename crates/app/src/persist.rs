@@ -1,0 +1,683 @@
+//! The app's own state file (`state.json`): where it lives, how a saved session is restored
+//! field by field (a bad field falls back to its default alone and is named), and a saver
+//! thread that writes the file atomically soon after every change, whether or not the app
+//! paints another frame.
+//!
+//! The file is in the platform's data directory (`$XDG_DATA_HOME/degrau`,
+//! `~/Library/Application Support/Degrau`, `%APPDATA%\Degrau`), or in the directory named by
+//! [`STATE_DIR_VAR`]. It is written as a temporary file in the same directory, flushed to
+//! disk, then renamed over the old one, so a kill at any moment leaves either the old or the
+//! new state whole. A file that cannot be restored whole is copied aside
+//! (`state.json.bad-<unix seconds>`) before anything overwrites it.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
+use std::thread::JoinHandle;
+use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+
+use eframe::egui;
+use serde::de::DeserializeOwned;
+use serde_json::{Map, Value};
+
+use degrau_words::Localize;
+
+use super::Saved;
+use super::design::Kept;
+use super::design::splane::{SPlaneState, View};
+use super::design::state::{self, RootRole, System};
+use super::identify::IdentSettings;
+use super::look::clamp_scale;
+use degrau_ident::experiment::{Experiment, Offset};
+use degrau_ident::fit::MAX_STARTS;
+use degrau_ident::models::Structure;
+
+/// The environment variable naming the directory of the state file (tests use a temporary
+/// one).
+pub const STATE_DIR_VAR: &str = "DEGRAU_STATE_DIR";
+/// The state file's name in its directory.
+pub const FILE_NAME: &str = "state.json";
+/// Largest state file read (bytes); a bigger one is not a state the app wrote.
+const MAX_STATE_BYTES: u64 = 16 << 20;
+/// How long the saver waits for further changes before writing (a drag writes a few times
+/// a second, not every frame).
+pub const DEBOUNCE: Duration = Duration::from_millis(200);
+
+/// Why the state file could not be read or written, in plain words.
+#[derive(Debug, thiserror::Error)]
+pub enum StateError {
+    #[error("{what} {}: {source}", path.display())]
+    Io {
+        what: &'static str,
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{} is not a regular file", .0.display())]
+    NotAFile(PathBuf),
+    #[error("{path} is {1} bytes, more than a saved session can be", path = .0.display())]
+    TooLarge(PathBuf, u64),
+}
+
+/// The state file's path: in [`STATE_DIR_VAR`] if set, else in the platform data directory;
+/// `None` when there is no home to put it in.
+pub fn default_path() -> Option<PathBuf> {
+    let var = |name: &str| std::env::var_os(name).filter(|v| !v.is_empty());
+    let dir = if let Some(dir) = var(STATE_DIR_VAR) {
+        PathBuf::from(dir)
+    } else if cfg!(windows) {
+        PathBuf::from(var("APPDATA")?).join("Degrau")
+    } else if cfg!(target_os = "macos") {
+        PathBuf::from(var("HOME")?).join("Library/Application Support/Degrau")
+    } else if let Some(data) = var("XDG_DATA_HOME") {
+        PathBuf::from(data).join("degrau")
+    } else {
+        PathBuf::from(var("HOME")?).join(".local/share/degrau")
+    };
+    Some(dir.join(FILE_NAME))
+}
+
+/// A part of a saved session that could not be restored and was reset to its default.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FieldProblem {
+    /// Its path in the file, e.g. `splane.view` or `system.poles`.
+    pub field: String,
+    pub reason: String,
+}
+
+/// A session restored from a file.
+#[derive(Debug)]
+pub struct Restored {
+    pub saved: Saved,
+    pub problems: Vec<FieldProblem>,
+    /// Where the unreadable file was copied, when something could not be restored.
+    pub backup: Option<PathBuf>,
+    /// Why the file could not be copied aside, if it could not.
+    pub backup_error: Option<String>,
+}
+
+/// Restores the session in `path` field by field; a missing file is a fresh start. When a
+/// part could not be restored, the file is first copied aside.
+pub fn restore(path: &Path) -> Restored {
+    let (saved, problems) = match read(path) {
+        Ok(None) => (Saved::default(), Vec::new()),
+        Ok(Some(text)) => restore_text(&text),
+        Err(e) => (Saved::default(), vec![whole_file(e.to_string())]),
+    };
+    let (mut backup, mut backup_error) = (None, None);
+    if !problems.is_empty() && path.is_file() {
+        match keep_aside(path) {
+            Ok(p) => backup = Some(p),
+            Err(e) => backup_error = Some(e.to_string()),
+        }
+    }
+    Restored {
+        saved,
+        problems,
+        backup,
+        backup_error,
+    }
+}
+
+/// The file's text; `None` when there is no file. A FIFO or device is refused before it is
+/// opened (opening one could block), and so is a file past [`MAX_STATE_BYTES`].
+fn read(path: &Path) -> Result<Option<String>, StateError> {
+    let io = |what, source| StateError::Io {
+        what,
+        path: path.to_path_buf(),
+        source,
+    };
+    let meta = match std::fs::metadata(path) {
+        Ok(m) => m,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(io("could not look at", e)),
+    };
+    if !meta.is_file() {
+        return Err(StateError::NotAFile(path.to_path_buf()));
+    }
+    if meta.len() > MAX_STATE_BYTES {
+        return Err(StateError::TooLarge(path.to_path_buf(), meta.len()));
+    }
+    let bytes = std::fs::read(path).map_err(|e| io("could not read", e))?;
+    Ok(Some(String::from_utf8_lossy(&bytes).into_owned()))
+}
+
+fn whole_file(reason: String) -> FieldProblem {
+    FieldProblem {
+        field: "the whole file".into(),
+        reason,
+    }
+}
+
+/// Copies `path` to `path.bad-<unix seconds>` (with `-2`, `-3`… if taken).
+fn keep_aside(path: &Path) -> std::io::Result<PathBuf> {
+    let seconds = SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let base = format!("{}.bad-{seconds}", path.display());
+    let target = (1..)
+        .map(|n| match n {
+            1 => PathBuf::from(&base),
+            n => PathBuf::from(format!("{base}-{n}")),
+        })
+        .find(|p| !p.exists())
+        .unwrap_or_else(|| PathBuf::from(&base));
+    std::fs::copy(path, &target)?;
+    Ok(target)
+}
+
+/// Restores a session from the text of a state file, field by field.
+pub fn restore_text(text: &str) -> (Saved, Vec<FieldProblem>) {
+    match serde_json::from_str::<Value>(text) {
+        Ok(value) => restore_value(&value),
+        Err(e) => (
+            Saved::default(),
+            vec![whole_file(format!("not a saved session (not JSON: {e})"))],
+        ),
+    }
+}
+
+/// Restores a session from a JSON value, field by field: each top-level field (and each
+/// field of the system, the s-plane state and the identification settings) is read and
+/// checked on its own; a bad one falls back to its default and is reported.
+pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
+    let mut problems = Vec::new();
+    let Some(obj) = value.as_object() else {
+        return (
+            Saved::default(),
+            vec![whole_file("not a saved session (not a JSON object)".into())],
+        );
+    };
+    let d = Saved::default();
+    let mut f = Fields::new(Some(obj), "", &mut problems);
+    let system = restore_system(f.nested("system"), d.design.system);
+    let design = Kept {
+        compare: f.checked("compare", d.design.compare, |c| {
+            c.as_ref().map_or(Ok(()), |(_, s)| {
+                s.check()?;
+                s.placement()
+                    .map_err(|why| why.text(degrau_words::Lang::En))
+            })
+        }),
+        splane: restore_splane(f.nested("splane"), d.design.splane),
+        markers: f.take("markers", d.design.markers),
+        options: f.checked("options", d.design.options, |o| o.validate()),
+        phase_form: f.take("phase_form", d.design.phase_form),
+        feedback: f.checked("feedback", d.design.feedback, |l| l.validate()),
+        approx: f.take("approx", d.design.approx),
+        approx_table: f.take("approx_table", d.design.approx_table),
+        system,
+    };
+    let mut saved = Saved {
+        mode: f.take("mode", d.mode),
+        ident: restore_ident(f.nested("ident"), d.ident),
+        design,
+        dark: f.take("dark", d.dark),
+        lang: f.take("lang", d.lang),
+        scale: f.checked("scale", d.scale, |s| {
+            if clamp_scale(*s) == *s {
+                Ok(())
+            } else {
+                Err(format!("the presentation size {s} is not from 1 to 2"))
+            }
+        }),
+    };
+    // A selection that names no root of the restored system is dropped (nothing to tell).
+    if let Some(id) = saved.design.splane.selected
+        && saved.design.system.root(id).is_none()
+    {
+        saved.design.splane.selected = None;
+    }
+    (saved, problems)
+}
+
+fn restore_system(mut f: Fields<'_>, d: System) -> System {
+    let fallback = d.clone();
+    let system = System {
+        poles: f.checked("poles", d.poles, |l| state::check_roots(RootRole::Pole, l)),
+        zeros: f.checked("zeros", d.zeros, |l| state::check_roots(RootRole::Zero, l)),
+        gain: f.checked("gain", d.gain, |g| state::check_gain(*g)),
+        gain_mode: f.take("gain_mode", d.gain_mode),
+        delay: f.checked("delay", d.delay, |t| state::check_delay(*t)),
+        amplitude: f.checked("amplitude", d.amplitude, |a| state::check_amplitude(*a)),
+    };
+    // Roots each within range but too far apart for the exact response fall back whole.
+    match system.placement() {
+        Ok(()) => system,
+        Err(why) => {
+            f.problems.push(FieldProblem {
+                field: f.name("poles"),
+                reason: why.text(degrau_words::Lang::En),
+            });
+            fallback
+        }
+    }
+}
+
+fn restore_splane(mut f: Fields<'_>, d: SPlaneState) -> SPlaneState {
+    let mut s = d;
+    s.view = f.checked("view", s.view, |v| v.as_ref().map_or(Ok(()), check_view));
+    s.damping_grid = f.take("damping_grid", s.damping_grid);
+    s.snap = f.take("snap", s.snap);
+    s.selected = f.take("selected", s.selected);
+    s
+}
+
+/// A restored view must already be sane: one that is not is fitted to the roots again.
+fn check_view(v: &View) -> Result<(), String> {
+    if v.is_sane() {
+        Ok(())
+    } else {
+        Err(format!(
+            "the view (centre {} + {}j, {} pixels per unit) is out of range; fitted to the roots",
+            v.center_re, v.center_im, v.pixels_per_unit
+        ))
+    }
+}
+
+fn restore_ident(mut f: Fields<'_>, d: IdentSettings) -> IdentSettings {
+    IdentSettings {
+        path: f.take("path", d.path),
+        example: f.take("example", d.example),
+        experiment: f.checked("experiment", d.experiment, |e| {
+            e.as_ref().map_or(Ok(()), check_experiment)
+        }),
+        time_col: f.take("time_col", d.time_col),
+        y_col: f.take("y_col", d.y_col),
+        u_col: f.take("u_col", d.u_col),
+        sampling_period: f.take("sampling_period", d.sampling_period),
+        initial_input: f.take("initial_input", d.initial_input),
+        u_path: f.take("u_path", d.u_path),
+        // Any structure: the diagnosis ends on ones the menu does not list (P3Z, P3DU…).
+        code: f.checked("code", d.code, |c| {
+            Structure::parse(c).map(|_| ()).map_err(|_| {
+                format!("\"{c}\" is not a model code (P, 1 to 3 poles, then any of D, U, Z, I)")
+            })
+        }),
+        drift: f.take("drift", d.drift),
+        method: f.take("method", d.method),
+        multistart: f.take("multistart", d.multistart),
+        starts: f.checked("starts", d.starts, |&n| {
+            if (1..=MAX_STARTS).contains(&n) {
+                Ok(())
+            } else {
+                Err(format!("{n} starts, not 1 to {MAX_STARTS}"))
+            }
+        }),
+    }
+}
+
+/// The choices on a test: every number finite, Δu ≠ 0, a window with start < end and a
+/// filter cut-off > 0.
+fn check_experiment(e: &Experiment) -> Result<(), String> {
+    let finite = |what: &str, x: f64| {
+        if x.is_finite() {
+            Ok(())
+        } else {
+            Err(format!("{what} = {x} is not a finite number"))
+        }
+    };
+    finite("the step time t0", e.t0)?;
+    finite("the step size Δu", e.du)?;
+    if e.du == 0.0 {
+        return Err("the step size Δu is 0".into());
+    }
+    if let Offset::Fixed(y0) = e.offset {
+        finite("the operating point y0", y0)?;
+    }
+    if let Some((a, b)) = e.window {
+        finite("the window start", a)?;
+        finite("the window end", b)?;
+        if a >= b {
+            return Err(format!("the window {a}…{b} is empty"));
+        }
+    }
+    if let Some(fc) = e.filter_hz
+        && !(fc.is_finite() && fc > 0.0)
+    {
+        return Err(format!(
+            "the filter cut-off {fc} Hz is not a positive number"
+        ));
+    }
+    Ok(())
+}
+
+/// The fields of one JSON object being restored, with where to report problems.
+struct Fields<'a> {
+    obj: Option<&'a Map<String, Value>>,
+    prefix: String,
+    problems: &'a mut Vec<FieldProblem>,
+}
+
+impl<'a> Fields<'a> {
+    fn new(
+        obj: Option<&'a Map<String, Value>>,
+        prefix: &str,
+        problems: &'a mut Vec<FieldProblem>,
+    ) -> Self {
+        Self {
+            obj,
+            prefix: prefix.to_string(),
+            problems,
+        }
+    }
+
+    fn name(&self, field: &str) -> String {
+        format!("{}{field}", self.prefix)
+    }
+
+    /// The field, or `default` when it is missing (a file from another version) or bad.
+    fn take<T: DeserializeOwned>(&mut self, field: &str, default: T) -> T {
+        self.checked(field, default, |_| Ok(()))
+    }
+
+    /// The field if it reads as a `T` and passes `check`; else `default`, and the problem
+    /// is reported. A missing field is not a problem.
+    fn checked<T: DeserializeOwned>(
+        &mut self,
+        field: &str,
+        default: T,
+        check: impl Fn(&T) -> Result<(), String>,
+    ) -> T {
+        let Some(value) = self.obj.and_then(|o| o.get(field)) else {
+            return default;
+        };
+        let read = T::deserialize(value)
+            .map_err(|e| e.to_string())
+            .and_then(|t| check(&t).map(|()| t));
+        match read {
+            Ok(t) => t,
+            Err(reason) => {
+                self.problems.push(FieldProblem {
+                    field: self.name(field),
+                    reason,
+                });
+                default
+            }
+        }
+    }
+
+    /// The fields of the nested object `field`; one that is not an object is reported and
+    /// restores as all defaults.
+    fn nested(&mut self, field: &str) -> Fields<'_> {
+        let value = self.obj.and_then(|o| o.get(field));
+        let obj = match value {
+            Some(Value::Object(o)) => Some(o),
+            Some(other) => {
+                self.problems.push(FieldProblem {
+                    field: self.name(field),
+                    reason: format!("expected an object, found {other}"),
+                });
+                None
+            }
+            None => None,
+        };
+        let prefix = format!("{}.", self.name(field));
+        Fields::new(obj, &prefix, self.problems)
+    }
+}
+
+/// Writes `contents` to `path` atomically: a temporary file in the same directory, flushed
+/// to disk, then renamed over `path` (and the directory flushed, where that is possible).
+pub fn write_atomically(path: &Path, contents: &[u8]) -> Result<(), StateError> {
+    let io = |what, path: &Path, source| StateError::Io {
+        what,
+        path: path.to_path_buf(),
+        source,
+    };
+    let dir = path.parent().unwrap_or_else(|| Path::new("."));
+    std::fs::create_dir_all(dir).map_err(|e| io("could not create", dir, e))?;
+    let name = path
+        .file_name()
+        .map_or_else(|| FILE_NAME.into(), |n| n.to_string_lossy().into_owned());
+    let temp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
+    let written = std::fs::File::create(&temp).and_then(|mut file| {
+        file.write_all(contents)?;
+        file.sync_all()
+    });
+    if let Err(e) = written {
+        std::fs::remove_file(&temp).ok();
+        return Err(io("could not write", &temp, e));
+    }
+    if let Err(e) = std::fs::rename(&temp, path) {
+        std::fs::remove_file(&temp).ok();
+        return Err(io("could not replace", path, e));
+    }
+    // The rename is durable once the directory is flushed (Unix; elsewhere it cannot be
+    // opened and the rename stands as it is).
+    if let Ok(d) = std::fs::File::open(dir) {
+        d.sync_all().ok();
+    }
+    Ok(())
+}
+
+/// A snapshot for the saver and the context to wake if writing it fails.
+struct Snapshot {
+    json: String,
+    ctx: Option<egui::Context>,
+}
+
+/// Saves snapshots of the session on its own thread: each is written (atomically) at most
+/// [`DEBOUNCE`] after it was offered, later snapshots replacing earlier ones still waiting.
+/// Dropping the saver writes what is waiting and joins the thread.
+pub struct Saver {
+    path: PathBuf,
+    tx: Option<Sender<Snapshot>>,
+    errors: Receiver<String>,
+    thread: Option<JoinHandle<()>>,
+    /// The last snapshot offered, so an unchanged session is not sent again.
+    last: Option<String>,
+}
+
+impl Saver {
+    /// Starts the saver thread for the file at `path`.
+    pub fn spawn(path: PathBuf) -> Self {
+        let (tx, rx) = mpsc::channel::<Snapshot>();
+        let (error_tx, errors) = mpsc::channel();
+        let target = path.clone();
+        let thread = std::thread::Builder::new()
+            .name("degrau state saver".into())
+            .spawn(move || save_loop(&target, &rx, &error_tx))
+            .ok();
+        Self {
+            path,
+            tx: thread.is_some().then_some(tx),
+            errors,
+            thread,
+            last: None,
+        }
+    }
+
+    /// The file being written.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Hands the session's JSON to the saver when it differs from the last one offered.
+    /// Returns false when there is no saver thread (it could not start or has stopped).
+    pub fn offer(&mut self, json: String, ctx: Option<&egui::Context>) -> bool {
+        if self.last.as_deref() == Some(json.as_str()) {
+            return true;
+        }
+        let Some(tx) = &self.tx else {
+            return false;
+        };
+        let sent = tx
+            .send(Snapshot {
+                json: json.clone(),
+                ctx: ctx.cloned(),
+            })
+            .is_ok();
+        if sent {
+            self.last = Some(json);
+        } else {
+            self.tx = None;
+        }
+        sent
+    }
+
+    /// The latest failure to write, if any happened since the last call.
+    pub fn take_error(&self) -> Option<String> {
+        self.errors.try_iter().last()
+    }
+}
+
+impl Drop for Saver {
+    fn drop(&mut self) {
+        // Closing the channel makes the thread write what is waiting and stop.
+        self.tx = None;
+        if let Some(thread) = self.thread.take() {
+            thread.join().ok();
+        }
+    }
+}
+
+/// The saver thread: wait for a snapshot, let later ones replace it for up to [`DEBOUNCE`],
+/// write the latest, repeat until the app drops its end.
+fn save_loop(path: &Path, rx: &Receiver<Snapshot>, errors: &Sender<String>) {
+    while let Ok(mut latest) = rx.recv() {
+        let deadline = Instant::now() + DEBOUNCE;
+        let mut open = true;
+        loop {
+            match rx.recv_timeout(deadline.saturating_duration_since(Instant::now())) {
+                Ok(newer) => latest = newer,
+                Err(RecvTimeoutError::Timeout) => break,
+                Err(RecvTimeoutError::Disconnected) => {
+                    open = false;
+                    break;
+                }
+            }
+        }
+        if let Err(e) = write_atomically(path, latest.json.as_bytes()) {
+            errors.send(e.to_string()).ok();
+            if let Some(ctx) = &latest.ctx {
+                ctx.request_repaint();
+            }
+        }
+        if !open {
+            return;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::design::state::Root;
+
+    fn temp_dir(name: &str) -> PathBuf {
+        let dir =
+            std::env::temp_dir().join(format!("degrau-persist-{name}-{}", std::process::id()));
+        std::fs::remove_dir_all(&dir).ok();
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn a_session_round_trips_with_no_problem() {
+        let mut saved = Saved::default();
+        saved.design.system.poles.push(Root::real(-7.5));
+        saved.dark = true;
+        saved.design.splane.view = Some(View {
+            center_re: -2.0,
+            center_im: 0.5,
+            pixels_per_unit: 40.0,
+        });
+        let text = serde_json::to_string(&saved).unwrap();
+        let (back, problems) = restore_text(&text);
+        assert!(problems.is_empty(), "{problems:?}");
+        assert_eq!(serde_json::to_string(&back).unwrap(), text);
+    }
+
+    #[test]
+    fn each_bad_field_falls_back_alone() {
+        let mut saved = Saved::default();
+        saved.design.system.gain = 3.0;
+        saved.dark = true;
+        saved.ident.code = "P1D".into();
+        let mut value = serde_json::to_value(&saved).unwrap();
+        value["system"]["poles"] = serde_json::json!("three");
+        value["splane"]["view"] =
+            serde_json::json!({"center_re": -5e29, "center_im": 0.0, "pixels_per_unit": 1e-300});
+        value["ident"]["starts"] = serde_json::json!(100000);
+        value["options"] =
+            serde_json::json!({"settling_threshold": 7.0, "rise_limits": [0.1, 0.9]});
+        let (back, problems) = restore_value(&value);
+        let mut fields: Vec<&str> = problems.iter().map(|p| p.field.as_str()).collect();
+        fields.sort_unstable();
+        assert_eq!(
+            fields,
+            ["ident.starts", "options", "splane.view", "system.poles"],
+            "{problems:?}"
+        );
+        assert_eq!(back.design.system.poles, System::default().poles);
+        assert_eq!(
+            back.design.system.gain, 3.0,
+            "the rest of the system is kept"
+        );
+        assert!(back.dark);
+        assert_eq!(back.ident.code, "P1D");
+        assert_eq!(back.ident.starts, IdentSettings::default().starts);
+        assert_eq!(
+            back.design.splane.view, None,
+            "an absurd view is fitted again"
+        );
+    }
+
+    #[test]
+    fn not_json_is_one_problem_with_defaults() {
+        let (back, problems) = restore_text("{\"dark\": tru");
+        assert_eq!(problems.len(), 1);
+        assert_eq!(problems[0].field, "the whole file");
+        assert!(!back.dark);
+    }
+
+    #[test]
+    fn a_bad_file_is_kept_aside_and_a_missing_one_is_a_fresh_start() {
+        let dir = temp_dir("aside");
+        let path = dir.join(FILE_NAME);
+        let fresh = restore(&path);
+        assert!(fresh.problems.is_empty() && fresh.backup.is_none());
+        std::fs::write(&path, "{\"dark\": true, \"mode\": 12}").unwrap();
+        let r = restore(&path);
+        assert!(r.saved.dark);
+        assert_eq!(r.problems[0].field, "mode");
+        let backup = r.backup.expect("a backup");
+        assert_eq!(
+            std::fs::read_to_string(&backup).unwrap(),
+            "{\"dark\": true, \"mode\": 12}"
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn the_saver_writes_atomically_and_flushes_on_drop() {
+        let dir = temp_dir("saver");
+        let path = dir.join("nested").join(FILE_NAME);
+        let mut saver = Saver::spawn(path.clone());
+        assert!(saver.offer("{\"a\": 1}".into(), None));
+        assert!(saver.offer("{\"a\": 2}".into(), None));
+        drop(saver);
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "{\"a\": 2}");
+        let leftovers: Vec<_> = std::fs::read_dir(path.parent().unwrap())
+            .unwrap()
+            .filter_map(|e| e.ok())
+            .map(|e| e.file_name())
+            .filter(|n| n != FILE_NAME)
+            .collect();
+        assert!(
+            leftovers.is_empty(),
+            "no temporary file left: {leftovers:?}"
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_directory_as_the_state_file_is_refused_in_words() {
+        let dir = temp_dir("notafile");
+        let r = restore(&dir);
+        assert_eq!(r.problems.len(), 1);
+        assert!(r.problems[0].reason.contains("not a regular file"));
+        assert!(r.backup.is_none(), "nothing to copy");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}
