@@ -4,7 +4,7 @@
 
 #![allow(dead_code)]
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// How the CLI is told to read a record: (file, time column, output, input, sampling
 /// period, rows skipped, input before the record); an empty column is the automatic choice.
@@ -133,7 +133,12 @@ pub const RECORDS: [Flags; 13] = [
 
 /// The path of record `name`.
 pub fn path(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/records")
-        .join(name)
+    // The workspace's root: the crate's own folder, or the one above `crates/` for the
+    // tests of a lower crate.
+    let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate_dir
+        .ancestors()
+        .find(|d| d.join("tests/data/records").is_dir())
+        .unwrap_or(crate_dir);
+    root.join("tests/data/records").join(name)
 }
