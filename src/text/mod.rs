@@ -36,6 +36,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(report::messages());
     all.extend(cli::messages());
     all.extend(lti::messages());
+    all.extend(degrau_lti::words::expr::messages());
     all.extend(operating_point::messages());
     all.extend(identify::messages());
     all.extend(design::messages());

@@ -11,6 +11,7 @@
 
 use super::number::format_number;
 use super::response::StepResponse;
+use crate::words::expr as words;
 use degrau_words::Lang;
 
 /// How oscillatory terms are written.
@@ -124,10 +125,7 @@ fn english_numbers(response: &StepResponse, form: OscillationForm, lang: Lang) -
     let (relation, note) = approximation_note(response, lang);
     if delay > 0.0 {
         let d = format_number(delay);
-        let after = lang.pick(
-            format!("for t ≥ {d} (y = 0 before {d})"),
-            format!("para t ≥ {d} (y = 0 antes de {d})"),
-        );
+        let after = words::after_the_delay(&d, lang);
         format!("y(t) {relation} {body} {after}{note}")
     } else {
         format!("y(t) {relation} {body}{note}")
@@ -148,43 +146,11 @@ fn approximation_note(response: &StepResponse, lang: Lang) -> (&'static str, Str
         .filter(|c| !c.is_repeated())
         .map(|c| {
             let poles: Vec<String> = c.poles().iter().map(|&p| format_root(p)).collect();
-            let (k, at) = (c.multiplicity, format_root(c.center));
-            lang.pick(
-                format!("the poles {} as a {k}-fold pole at {at}", poles.join(", ")),
-                format!(
-                    "os polos {} como um polo de multiplicidade {k} em {at}",
-                    poles.join("; ")
-                ),
-            )
+            words::cluster(&poles, c.multiplicity, &format_root(c.center), lang)
         })
         .collect();
-    let size = if error.is_finite() {
-        lang.pick(
-            format!(
-                "differs from the exact y(t) by up to {}",
-                format_number(error)
-            ),
-            format!("difere do y(t) exato em até {}", format_number(error)),
-        )
-    } else {
-        lang.pick(
-            "drifts away from the exact y(t) as t grows",
-            "afasta-se do y(t) exato à medida que t cresce",
-        )
-        .to_string()
-    };
-    let note = lang.pick(
-        format!(
-            " [written with {}; this form {size}, while the curve and the metrics use the \
-             exact response]",
-            clusters.join(" and ")
-        ),
-        format!(
-            " [escrita com {}; esta forma {size}, enquanto a curva e as métricas usam a \
-             resposta exata]",
-            clusters.join(" e ")
-        ),
-    );
+    let error = error.is_finite().then(|| format_number(error));
+    let note = words::approximation_note(&clusters, error.as_deref(), lang);
     ("≈", note)
 }
 

@@ -5,19 +5,31 @@
 
 use super::state::System;
 use degrau_lti::expr::{OscillationForm, expression_in};
-use degrau_lti::{StepInfo, StepInfoOptions, StepResponse, TransferFunction};
+use degrau_lti::{LtiError, StepInfo, StepInfoOptions, StepResponse, TransferFunction};
 use degrau_words::Lang;
 
 /// Points of the plotted curve.
 pub const CURVE_SAMPLES: usize = 2000;
+
+/// Why the Design mode has no response to show, as a fact (its words, in the window's
+/// language, are the app's: `crate::words::design`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum NoResponse {
+    /// The transfer function cannot be built (the lti crate's refusal).
+    System(LtiError),
+    /// The step amplitude is zero or not a finite number.
+    Amplitude(f64),
+    /// A value or an instant of the response is beyond double precision.
+    BeyondDouble,
+}
 
 /// The derived view of one system.
 #[derive(Debug, Clone)]
 pub struct Analysis {
     pub system: System,
     pub options: StepInfoOptions,
-    /// The transfer function, or the plain-words reason it cannot be built.
-    pub tf: Result<TransferFunction, String>,
+    /// The transfer function, or why there is no response to show.
+    pub tf: Result<TransferFunction, NoResponse>,
     pub response: Option<StepResponse>,
     pub info: Option<StepInfo>,
     /// (t, y) samples over [0, horizon].
@@ -28,7 +40,7 @@ pub struct Analysis {
 impl Analysis {
     /// Analyses `system` with the given metric thresholds.
     pub fn new(system: &System, options: StepInfoOptions) -> Self {
-        let tf = system.transfer_function().map_err(|e| e.to_string());
+        let tf = system.transfer_function().map_err(NoResponse::System);
         let response = tf
             .as_ref()
             .ok()
@@ -43,10 +55,7 @@ impl Analysis {
             horizon: 1.0,
         };
         if out.tf.is_ok() && response.is_none() {
-            out.tf = Err(format!(
-                "the step amplitude must be a finite number other than zero, not {}",
-                system.amplitude
-            ));
+            out.tf = Err(NoResponse::Amplitude(system.amplitude));
         }
         if let Some(r) = response {
             let horizon = r.auto_horizon();
@@ -54,10 +63,7 @@ impl Analysis {
             if !(horizon.is_finite() && horizon > 0.0) || t.iter().chain(&y).any(|v| !v.is_finite())
             {
                 // Nothing that is not a number reaches the plot.
-                out.tf = Err(
-                    "the response is beyond double precision (a value or time is not finite)"
-                        .into(),
-                );
+                out.tf = Err(NoResponse::BeyondDouble);
                 return out;
             }
             out.horizon = horizon;
@@ -86,5 +92,29 @@ impl Analysis {
         if !self.is_for(system, &options) {
             *self = Self::new(system, options);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use degrau_words::Localize;
+
+    #[test]
+    fn why_there_is_no_response_is_said_in_the_windows_language() {
+        // A zero amplitude: the system exists, its response does not; the reason is a fact
+        // the Portuguese window says in Portuguese, not an English string.
+        let system = System {
+            amplitude: 0.0,
+            ..System::default()
+        };
+        let analysis = Analysis::new(&system, StepInfoOptions::default());
+        let reason = analysis.tf.as_ref().expect_err("no response");
+        assert_eq!(*reason, NoResponse::Amplitude(0.0));
+        assert!(reason.text(Lang::Pt).starts_with("a amplitude do degrau"));
+        assert!(reason.text(Lang::En).starts_with("the step amplitude"));
+        // No poles: the lti crate's refusal, in its own words.
+        let no_poles = NoResponse::System(LtiError::NoPoles);
+        assert_eq!(no_poles.text(Lang::Pt), LtiError::NoPoles.text(Lang::Pt));
     }
 }

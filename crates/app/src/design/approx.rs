@@ -371,7 +371,7 @@ fn body(
             .tf
             .as_ref()
             .err()
-            .cloned()
+            .map(|reason| degrau_words::Localize::text(reason, lang))
             .unwrap_or_else(|| crate::words::design::Design::NoSystemShort.get(lang).into())),
     };
     let size = ui.available_size();

@@ -26,6 +26,7 @@ pub use session::{Kept, Session};
 
 use crate::look::Look;
 use crate::words::design::Design as P;
+use degrau_words::Localize as _;
 
 /// Smallest width and height of each plot (points): below it a panel scrolls or shrinks,
 /// the plots never vanish.
@@ -206,8 +207,12 @@ fn plot_panel(
     if let Err(reason) = &session.analysis.tf {
         ui.add(
             egui::Label::new(
-                RichText::new(format!("{} {reason}", P::NoResponse.get(look.lang)))
-                    .color(look.palette.error),
+                RichText::new(format!(
+                    "{} {}",
+                    P::NoResponse.get(look.lang),
+                    reason.text(look.lang)
+                ))
+                .color(look.palette.error),
             )
             .wrap(),
         );

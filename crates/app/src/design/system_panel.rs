@@ -11,6 +11,7 @@ use crate::look::Look;
 use crate::words::design::Design as P;
 use degrau_lti::poly::format_poly;
 use degrau_words::Lang;
+use degrau_words::Localize as _;
 
 use super::commands::Command;
 use super::session::{Kept, Session, placement_of};
@@ -432,7 +433,7 @@ fn transfer_function(ui: &mut Ui, session: &Session, lang: Lang) {
         Err(reason) => {
             ui.add(
                 egui::Label::new(
-                    RichText::new(format!("{} {reason}", P::NoSystem.get(lang)))
+                    RichText::new(format!("{} {}", P::NoSystem.get(lang), reason.text(lang)))
                         .color(ui.visuals().error_fg_color),
                 )
                 .wrap(),

@@ -2,7 +2,9 @@
 //! with its English and its Brazilian Portuguese (the glossary's terms: polo, zero,
 //! ganho estático, tempo morto, sobressinal, tempo de acomodação, …).
 
-use degrau_words::{Lang, Message};
+use degrau_words::{Lang, Localize, Message};
+
+use crate::design::analysis::NoResponse;
 
 degrau_words::phrases! {
     /// The labels the Design mode draws.
@@ -134,9 +136,42 @@ pub fn role_heading(pole: bool, lang: Lang) -> &'static str {
     }
 }
 
+impl Localize for NoResponse {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            NoResponse::System(e) => e.text(lang),
+            NoResponse::Amplitude(a) => {
+                let a = lang.num(*a, 6);
+                lang.pick(
+                    format!("the step amplitude must be a finite number other than zero, not {a}"),
+                    format!(
+                        "a amplitude do degrau deve ser um número finito diferente de zero, não {a}"
+                    ),
+                )
+            }
+            NoResponse::BeyondDouble => lang
+                .pick(
+                    "the response is beyond double precision (a value or time is not finite)",
+                    "a resposta está além da precisão dupla (um valor ou instante não é finito)",
+                )
+                .into(),
+        }
+    }
+}
+
 /// Every message of the Design mode, for the catalogue test.
 pub fn messages() -> Vec<Message> {
     let mut all = Design::messages();
+    for reason in [
+        NoResponse::System(degrau_lti::LtiError::NoPoles),
+        NoResponse::Amplitude(0.0),
+        NoResponse::BeyondDouble,
+    ] {
+        all.push(Message::of(
+            format!("design::NoResponse::{reason:?}"),
+            &reason,
+        ));
+    }
     all.push(Message {
         id: "design::role_name".into(),
         en: format!(

@@ -4,6 +4,7 @@
 
 pub mod approx;
 pub mod discrete;
+pub mod expr;
 pub mod feedback;
 pub mod lti;
 pub mod step;
