@@ -89,6 +89,15 @@ pub struct Message {
 }
 
 impl Message {
+    /// The message `say` gives in each language (`id` names where it comes from).
+    pub fn said(id: impl Into<String>, say: impl Fn(Lang) -> String) -> Self {
+        Self {
+            id: id.into(),
+            en: say(Lang::En),
+            pt: say(Lang::Pt),
+        }
+    }
+
     /// The message of a fact (`id` names the fact and its variant).
     pub fn of(id: impl Into<String>, fact: &dyn Localize) -> Self {
         Self {

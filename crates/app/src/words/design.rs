@@ -172,31 +172,15 @@ pub fn messages() -> Vec<Message> {
             &reason,
         ));
     }
-    all.push(Message {
-        id: "design::role_name".into(),
-        en: format!(
-            "{} 1, {} 2",
-            role_name(true, Lang::En),
-            role_name(false, Lang::En)
-        ),
-        pt: format!(
-            "{} 1, {} 2",
-            role_name(true, Lang::Pt),
-            role_name(false, Lang::Pt)
-        ),
-    });
-    all.push(Message {
-        id: "design::role_heading".into(),
-        en: format!(
+    all.push(Message::said("design::role_name", |lang| {
+        format!("{} 1, {} 2", role_name(true, lang), role_name(false, lang))
+    }));
+    all.push(Message::said("design::role_heading", |lang| {
+        format!(
             "{}, {}",
-            role_heading(true, Lang::En),
-            role_heading(false, Lang::En)
-        ),
-        pt: format!(
-            "{}, {}",
-            role_heading(true, Lang::Pt),
-            role_heading(false, Lang::Pt)
-        ),
-    });
+            role_heading(true, lang),
+            role_heading(false, lang)
+        )
+    }));
     all
 }

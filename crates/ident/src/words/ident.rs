@@ -2256,19 +2256,9 @@ pub fn messages() -> Vec<Message> {
         Handle::TimeConstant,
         Handle::FirstPeak,
     ] {
-        all.push(Message {
-            id: format!("ident::Handle::{h:?}"),
-            en: format!(
-                "{} / {}",
-                handle_label(h, Lang::En),
-                handle_help(h, Lang::En)
-            ),
-            pt: format!(
-                "{} / {}",
-                handle_label(h, Lang::Pt),
-                handle_help(h, Lang::Pt)
-            ),
-        });
+        all.push(Message::said(format!("ident::Handle::{h:?}"), |lang| {
+            format!("{} / {}", handle_label(h, lang), handle_help(h, lang))
+        }));
     }
     for p in crate::models::ALL_PARAMS {
         all.push(Message::of(format!("ident::Param::{p:?}"), &Meaning(p)));

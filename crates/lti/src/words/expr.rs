@@ -55,20 +55,16 @@ pub fn approximation_note(clusters: &[String], error: Option<&str>, lang: Lang) 
 
 /// An example of each, for the test of every message.
 pub fn messages() -> Vec<Message> {
-    let both = |id: &str, say: &dyn Fn(Lang) -> String| Message {
-        id: format!("expr::{id}"),
-        en: say(Lang::En),
-        pt: say(Lang::Pt),
-    };
     let poles = ["-1".to_string(), "-1.0001".to_string()];
+    let pair = |lang| cluster(&poles, 2, "-1.00005", lang);
     vec![
-        both("after_the_delay", &|lang| after_the_delay("0.5", lang)),
-        both("cluster", &|lang| cluster(&poles, 2, "-1.00005", lang)),
-        both("approximation_note", &|lang| {
-            approximation_note(&[cluster(&poles, 2, "-1.00005", lang)], Some("1e-9"), lang)
+        Message::said("expr::after_the_delay", |lang| after_the_delay("0.5", lang)),
+        Message::said("expr::cluster", pair),
+        Message::said("expr::approximation_note", |lang| {
+            approximation_note(&[pair(lang)], Some("1e-9"), lang)
         }),
-        both("approximation_note::drifts", &|lang| {
-            approximation_note(&[cluster(&poles, 2, "-1.00005", lang)], None, lang)
+        Message::said("expr::approximation_note::drifts", |lang| {
+            approximation_note(&[pair(lang)], None, lang)
         }),
     ]
 }

@@ -338,19 +338,9 @@ pub fn messages() -> Vec<Message> {
         Stability::MarginallyStable,
         Stability::Unstable,
     ] {
-        all.push(Message {
-            id: format!("stability::{s:?}"),
-            en: format!(
-                "{} / {}",
-                stability(s, Lang::En),
-                stability_reason(s, Lang::En)
-            ),
-            pt: format!(
-                "{} / {}",
-                stability(s, Lang::Pt),
-                stability_reason(s, Lang::Pt)
-            ),
-        });
+        all.push(Message::said(format!("stability::{s:?}"), |lang| {
+            format!("{} / {}", stability(s, lang), stability_reason(s, lang))
+        }));
     }
     for (value, pole) in [
         (f64::INFINITY, IntegratorPole::S),
