@@ -32,11 +32,10 @@ impl Localize for ApproxCliError {
     }
 }
 
-/// Every message of the approximations and of `degrau approx`, for the test of the words.
-pub fn messages() -> Vec<Message> {
-    let mut all = degrau_lti::words::approx::messages();
-    for e in [ApproxCliError::BadOrder("x".into()), ApproxCliError::Batch] {
-        all.push(Message::of(format!("approx::ApproxCliError::{e:?}"), &e));
-    }
-    all
+/// An example of every refusal of `degrau approx`, for the test of the words.
+pub fn cli_messages() -> Vec<Message> {
+    [ApproxCliError::BadOrder("x".into()), ApproxCliError::Batch]
+        .iter()
+        .map(|e| Message::of(format!("approx::ApproxCliError::{e:?}"), e))
+        .collect()
 }

@@ -24,29 +24,14 @@ pub mod cli;
 pub mod hand;
 pub mod lsq;
 
-/// Every message Degrau can show: each catalogue's phrases and an example of every
-/// variant of every typed fact. A new catalogue or fact type adds its line here.
+/// Every message Degrau can show: every crate's own list (its catalogues' phrases and an
+/// example of every fact it says) and the command line's.
 pub fn every_message() -> Vec<Message> {
-    let mut all = Vec::new();
-    all.extend(crate::app::field::FieldPhrase::messages());
-    all.extend(crate::app::field::examples());
-    all.extend(step::messages());
-    all.extend(steps::messages());
-    all.extend(ident::messages());
-    all.extend(report::messages());
+    let mut all = degrau_lti::words::messages();
+    all.extend(degrau_ident::words::messages());
+    all.extend(degrau_app::words::messages());
     all.extend(cli::messages());
-    all.extend(lti::messages());
-    all.extend(degrau_lti::words::expr::messages());
-    all.extend(operating_point::messages());
-    all.extend(identify::messages());
-    all.extend(design::messages());
-    all.extend(feedback::messages());
-    all.extend(app::messages());
-    all.extend(approx::messages());
-    all.extend(lsq::messages());
-    all.extend(hand::messages());
-    all.extend(test_causes::messages());
-    all.extend(lsq_app::messages());
+    all.extend(approx::cli_messages());
     all
 }
 
@@ -54,45 +39,11 @@ pub fn every_message() -> Vec<Message> {
 mod tests {
     use super::*;
 
-    /// Words that read the same in both languages (symbols, units, codes, proper names).
-    fn same_in_both(text: &str) -> bool {
-        text.chars().all(|c| !c.is_alphabetic())
-            || text.split_whitespace().all(|w| {
-                matches!(
-                    w.trim_matches(|c: char| !c.is_alphanumeric()),
-                    "" | "Kp"
-                        | "Tp1"
-                        | "Tp2"
-                        | "Td"
-                        | "Tz"
-                        | "Y0"
-                        | "Δu"
-                        | "t0"
-                        | "ζ"
-                        | "ωn"
-                        | "s"
-                        | "PNG"
-                        | "CSV"
-                        | "MATLAB"
-                        | "python-control"
-                        | "Degrau"
-                )
-            })
-    }
-
     #[test]
     fn every_message_is_in_both_languages() {
         let all = every_message();
         assert!(!all.is_empty());
-        for m in &all {
-            assert!(!m.en.trim().is_empty(), "{}: no English", m.id);
-            assert!(!m.pt.trim().is_empty(), "{}: no Portuguese", m.id);
-            assert!(
-                m.en != m.pt || same_in_both(&m.en),
-                "{}: the Portuguese is the English, \"{}\"",
-                m.id,
-                m.en
-            );
-        }
+        let wrong = degrau_words::untranslated(&all);
+        assert!(wrong.is_empty(), "{wrong:#?}");
     }
 }

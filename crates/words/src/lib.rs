@@ -108,6 +108,56 @@ impl Message {
     }
 }
 
+/// Words that read the same in both languages: symbols, units, parameter names, codes and
+/// proper names.
+pub fn same_in_both(text: &str) -> bool {
+    text.chars().all(|c| !c.is_alphabetic())
+        || text.split_whitespace().all(|w| {
+            matches!(
+                w.trim_matches(|c: char| !c.is_alphanumeric()),
+                "" | "Kp"
+                    | "Tp1"
+                    | "Tp2"
+                    | "Td"
+                    | "Tz"
+                    | "Y0"
+                    | "Δu"
+                    | "t0"
+                    | "ζ"
+                    | "ωn"
+                    | "s"
+                    | "PNG"
+                    | "CSV"
+                    | "MATLAB"
+                    | "python-control"
+                    | "Degrau"
+            )
+        })
+}
+
+/// What is wrong with the messages of `all`, one line each ("id: why"): a language
+/// missing, or the Portuguese left as the English (unless it reads the same in both,
+/// [`same_in_both`]). Every crate's test of its words asserts this is empty for its own
+/// list of every message.
+pub fn untranslated(all: &[Message]) -> Vec<String> {
+    all.iter()
+        .filter_map(|m| {
+            if m.en.trim().is_empty() {
+                Some(format!("{}: no English", m.id))
+            } else if m.pt.trim().is_empty() {
+                Some(format!("{}: no Portuguese", m.id))
+            } else if m.en == m.pt && !same_in_both(&m.en) {
+                Some(format!(
+                    "{}: the Portuguese is the English, {:?}",
+                    m.id, m.en
+                ))
+            } else {
+                None
+            }
+        })
+        .collect()
+}
+
 /// Declares a catalogue of fixed phrases, each with its English and Portuguese:
 ///
 /// ```
@@ -171,6 +221,25 @@ macro_rules! phrases {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_message_in_one_language_only_is_named() {
+        let message = |en: &str, pt: &str| Message {
+            id: "example".into(),
+            en: en.into(),
+            pt: pt.into(),
+        };
+        assert!(untranslated(&[message("Rise time", "Tempo de subida")]).is_empty());
+        assert!(untranslated(&[message("Kp (s)", "Kp (s)")]).is_empty());
+        assert_eq!(
+            untranslated(&[message("Rise time", "Rise time")]),
+            ["example: the Portuguese is the English, \"Rise time\""]
+        );
+        assert_eq!(
+            untranslated(&[message("Rise time", " ")]),
+            ["example: no Portuguese"]
+        );
+    }
 
     #[test]
     fn numbers_take_the_language_separator() {

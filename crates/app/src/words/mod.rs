@@ -7,3 +7,27 @@ pub mod code;
 pub mod design;
 pub mod identify;
 pub mod lsq_app;
+
+/// Every message of this crate: each catalogue's phrases and an example of every variant
+/// of every fact it says. A new catalogue or fact adds its line here.
+pub fn messages() -> Vec<degrau_words::Message> {
+    let mut all = Vec::new();
+    all.extend(crate::field::FieldPhrase::messages());
+    all.extend(crate::field::examples());
+    all.extend(app::messages());
+    all.extend(design::messages());
+    all.extend(identify::messages());
+    all.extend(lsq_app::messages());
+    all
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn every_message_is_in_both_languages() {
+        let all = super::messages();
+        assert!(!all.is_empty());
+        let wrong = degrau_words::untranslated(&all);
+        assert!(wrong.is_empty(), "{wrong:#?}");
+    }
+}

@@ -344,7 +344,6 @@ pub fn messages() -> Vec<Message> {
         lsq.iter()
             .map(|e| Message::of(format!("lsq::LsqError::{e:?}"), e)),
     );
-    all.extend(degrau_lti::words::discrete::messages());
     all.extend(
         prbs.iter()
             .map(|e| Message::of(format!("lsq::PrbsError::{e:?}"), e)),

@@ -11,3 +11,28 @@ pub mod operating_point;
 pub mod report;
 pub mod steps;
 pub mod test_causes;
+
+/// Every message of this crate: each catalogue's phrases and an example of every variant
+/// of every fact it says. A new catalogue or fact adds its line here.
+pub fn messages() -> Vec<degrau_words::Message> {
+    let mut all = Vec::new();
+    all.extend(ident::messages());
+    all.extend(report::messages());
+    all.extend(steps::messages());
+    all.extend(test_causes::messages());
+    all.extend(operating_point::messages());
+    all.extend(hand::messages());
+    all.extend(lsq::messages());
+    all
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn every_message_is_in_both_languages() {
+        let all = super::messages();
+        assert!(!all.is_empty());
+        let wrong = degrau_words::untranslated(&all);
+        assert!(wrong.is_empty(), "{wrong:#?}");
+    }
+}

@@ -8,3 +8,27 @@ pub mod expr;
 pub mod feedback;
 pub mod lti;
 pub mod step;
+
+/// Every message of this crate: each catalogue's phrases and an example of every variant
+/// of every fact it says. A new catalogue or fact adds its line here.
+pub fn messages() -> Vec<degrau_words::Message> {
+    let mut all = Vec::new();
+    all.extend(lti::messages());
+    all.extend(step::messages());
+    all.extend(feedback::messages());
+    all.extend(approx::messages());
+    all.extend(discrete::messages());
+    all.extend(expr::messages());
+    all
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn every_message_is_in_both_languages() {
+        let all = super::messages();
+        assert!(!all.is_empty());
+        let wrong = degrau_words::untranslated(&all);
+        assert!(wrong.is_empty(), "{wrong:#?}");
+    }
+}
