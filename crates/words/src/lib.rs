@@ -158,6 +158,14 @@ pub fn untranslated(all: &[Message]) -> Vec<String> {
         .collect()
 }
 
+/// Panics, naming each, unless every message of `all` (a crate's whole list, never empty) is
+/// said in both languages ([`untranslated`]): the body of each crate's test of its words.
+pub fn assert_said_in_both(all: &[Message]) {
+    assert!(!all.is_empty(), "no messages");
+    let wrong = untranslated(all);
+    assert!(wrong.is_empty(), "{wrong:#?}");
+}
+
 /// Declares a catalogue of fixed phrases, each with its English and Portuguese:
 ///
 /// ```
