@@ -119,7 +119,7 @@ impl Localize for Remedy {
 }
 
 /// "the {n} residuals there average {mean} ({same} % of one sign)".
-pub(super) fn bias_words(b: &Bias, lang: Lang) -> String {
+fn bias_words(b: &Bias, lang: Lang) -> String {
     let (n, mean, same) = (b.n, n4(lang, b.mean), n4(lang, 100.0 * b.same_sign));
     lang.pick(
         format!("the {n} residuals there average {mean} ({same} % of one sign)"),
@@ -128,7 +128,7 @@ pub(super) fn bias_words(b: &Bias, lang: Lang) -> String {
 }
 
 /// A time that may be absent ("—").
-pub(super) fn maybe(lang: Lang, t: Option<f64>) -> String {
+fn maybe(lang: Lang, t: Option<f64>) -> String {
     t.map_or("—".into(), |t| n4(lang, t))
 }
 

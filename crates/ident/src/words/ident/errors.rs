@@ -4,7 +4,7 @@ use super::*;
 
 /// Why a file could not be read, in `lang`: the common kinds in words, any other in the
 /// system's own (`reason`).
-pub(super) fn io_reason(kind: std::io::ErrorKind, reason: &str, lang: Lang) -> String {
+fn io_reason(kind: std::io::ErrorKind, reason: &str, lang: Lang) -> String {
     use std::io::ErrorKind;
     let words = match kind {
         ErrorKind::NotFound => ("there is no such file", "esse arquivo não existe"),
@@ -276,7 +276,7 @@ impl Localize for DataError {
     }
 }
 
-pub(super) fn bad_sampling_period(ts: f64, lang: Lang) -> String {
+fn bad_sampling_period(ts: f64, lang: Lang) -> String {
     let ts = full(lang, ts);
     lang.pick(
         format!("the sampling period must be a positive number of seconds, not {ts}"),

@@ -4,7 +4,7 @@ use super::*;
 
 /// The name of a data note's variant. No wildcard: a new variant does not compile until it
 /// is named here, and [`data_notes`] must then give an example of it (a test counts them).
-pub(super) fn data_note_id(n: &DataNote) -> &'static str {
+fn data_note_id(n: &DataNote) -> &'static str {
     match n {
         DataNote::Utf16 => "Utf16",
         DataNote::Latin1 => "Latin1",
@@ -26,23 +26,23 @@ pub(super) fn data_note_id(n: &DataNote) -> &'static str {
     }
 }
 #[cfg(test)]
-pub(super) const DATA_NOTE_VARIANTS: usize = 17;
+const DATA_NOTE_VARIANTS: usize = 17;
 
-pub(super) fn named(position: usize, name: &str) -> Column {
+fn named(position: usize, name: &str) -> Column {
     Column {
         position,
         name: Some(name.into()),
     }
 }
 
-pub(super) fn unnamed(position: usize) -> Column {
+fn unnamed(position: usize) -> Column {
     Column {
         position,
         name: None,
     }
 }
 
-pub(super) fn data_notes() -> Vec<DataNote> {
+fn data_notes() -> Vec<DataNote> {
     let two = ColumnList {
         shown: vec![named(2, "u1"), named(3, "u2")],
         more: 0,
@@ -106,7 +106,7 @@ pub(super) fn data_notes() -> Vec<DataNote> {
     ]
 }
 
-pub(super) fn data_error_id(e: &DataError) -> &'static str {
+fn data_error_id(e: &DataError) -> &'static str {
     match e {
         DataError::Io { .. } => "Io",
         DataError::Binary { .. } => "Binary",
@@ -132,9 +132,9 @@ pub(super) fn data_error_id(e: &DataError) -> &'static str {
     }
 }
 #[cfg(test)]
-pub(super) const DATA_ERROR_VARIANTS: usize = 21;
+const DATA_ERROR_VARIANTS: usize = 21;
 
-pub(super) fn data_errors() -> Vec<DataError> {
+fn data_errors() -> Vec<DataError> {
     let named_columns = Columns::Named(ColumnList {
         shown: vec![named(1, "t"), named(2, "u"), named(3, "y")],
         more: 2,
@@ -228,7 +228,7 @@ pub(super) fn data_errors() -> Vec<DataError> {
     ]
 }
 
-pub(super) fn evidence_id(e: &Evidence) -> &'static str {
+fn evidence_id(e: &Evidence) -> &'static str {
     match e {
         Evidence::DeadTime { .. } => "DeadTime",
         Evidence::Offset { .. } => "Offset",
@@ -243,9 +243,9 @@ pub(super) fn evidence_id(e: &Evidence) -> &'static str {
     }
 }
 #[cfg(test)]
-pub(super) const EVIDENCE_VARIANTS: usize = 10;
+const EVIDENCE_VARIANTS: usize = 10;
 
-pub(super) fn evidence() -> Vec<Evidence> {
+fn evidence() -> Vec<Evidence> {
     let bias = Bias {
         start: 5.0,
         end: 6.76,
@@ -308,7 +308,7 @@ pub(super) fn evidence() -> Vec<Evidence> {
     ]
 }
 
-pub(super) fn prepare_errors() -> Vec<PrepareError> {
+fn prepare_errors() -> Vec<PrepareError> {
     vec![
         PrepareError::BadRange {
             first: 0,
@@ -325,7 +325,7 @@ pub(super) fn prepare_errors() -> Vec<PrepareError> {
     ]
 }
 
-pub(super) fn model_errors() -> Vec<ModelError> {
+fn model_errors() -> Vec<ModelError> {
     vec![
         ModelError::BadCode("Q3".into()),
         ModelError::UnderdampedNeedsTwoPoles("P1U".into()),
@@ -345,7 +345,7 @@ pub(super) fn model_errors() -> Vec<ModelError> {
     ]
 }
 
-pub(super) fn fit_errors() -> Vec<FitError> {
+fn fit_errors() -> Vec<FitError> {
     vec![
         FitError::TooFewSamples { n: 2, p: 4 },
         FitError::BadStep(0.0),
@@ -360,7 +360,7 @@ pub(super) fn fit_errors() -> Vec<FitError> {
     ]
 }
 
-pub(super) fn experiment_errors() -> Vec<ExperimentError> {
+fn experiment_errors() -> Vec<ExperimentError> {
     vec![
         ExperimentError::NoStep,
         ExperimentError::BadStep(0.0),
@@ -370,7 +370,7 @@ pub(super) fn experiment_errors() -> Vec<ExperimentError> {
     ]
 }
 
-pub(super) fn fit_warnings() -> Vec<FitWarning> {
+fn fit_warnings() -> Vec<FitWarning> {
     vec![
         FitWarning::AtBound {
             param: "Td".into(),
@@ -401,7 +401,7 @@ pub(super) fn fit_warnings() -> Vec<FitWarning> {
     ]
 }
 
-pub(super) fn prepare_error_id(e: &PrepareError) -> &'static str {
+fn prepare_error_id(e: &PrepareError) -> &'static str {
     match e {
         PrepareError::BadRange { .. } => "BadRange",
         PrepareError::TooFewInWindow { .. } => "TooFewInWindow",
@@ -411,7 +411,7 @@ pub(super) fn prepare_error_id(e: &PrepareError) -> &'static str {
     }
 }
 
-pub(super) fn model_error_id(e: &ModelError) -> &'static str {
+fn model_error_id(e: &ModelError) -> &'static str {
     match e {
         ModelError::BadCode(_) => "BadCode",
         ModelError::UnderdampedNeedsTwoPoles(_) => "UnderdampedNeedsTwoPoles",
@@ -422,7 +422,7 @@ pub(super) fn model_error_id(e: &ModelError) -> &'static str {
     }
 }
 
-pub(super) fn fit_error_id(e: &FitError) -> &'static str {
+fn fit_error_id(e: &FitError) -> &'static str {
     match e {
         FitError::TooFewSamples { .. } => "TooFewSamples",
         FitError::BadStep(_) => "BadStep",
@@ -434,7 +434,7 @@ pub(super) fn fit_error_id(e: &FitError) -> &'static str {
     }
 }
 
-pub(super) fn experiment_error_id(e: &ExperimentError) -> &'static str {
+fn experiment_error_id(e: &ExperimentError) -> &'static str {
     match e {
         ExperimentError::NoStep => "NoStep",
         ExperimentError::BadStep(_) => "BadStep",
@@ -444,7 +444,7 @@ pub(super) fn experiment_error_id(e: &ExperimentError) -> &'static str {
     }
 }
 
-pub(super) fn fit_warning_id(w: &FitWarning) -> &'static str {
+fn fit_warning_id(w: &FitWarning) -> &'static str {
     match w {
         FitWarning::AtBound { .. } => "AtBound",
         FitWarning::OverdampedUnderdamped { .. } => "OverdampedUnderdamped",
@@ -460,11 +460,7 @@ pub(super) fn fit_warning_id(w: &FitWarning) -> &'static str {
 }
 
 /// Examples of every variant, one message each, with its id.
-pub(super) fn examples<T: Localize>(
-    kind: &str,
-    all: Vec<T>,
-    id: fn(&T) -> &'static str,
-) -> Vec<Message> {
+fn examples<T: Localize>(kind: &str, all: Vec<T>, id: fn(&T) -> &'static str) -> Vec<Message> {
     all.iter()
         .map(|x| Message::of(format!("ident::{kind}::{}", id(x)), x))
         .collect()
