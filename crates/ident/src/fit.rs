@@ -2034,8 +2034,8 @@ mod tests {
             let (data, mut structure, _) = synthetic(code, &truth, 0.02);
             structure.drift = true;
             structure.transient = true;
-            let mut guess = Values::default();
-            truth.iter().for_each(|&(p, x)| guess.set(p, x * 1.1));
+            let scaled: Vec<(Param, f64)> = truth.iter().map(|&(p, x)| (p, x * 1.1)).collect();
+            let guess = Values::from_pairs(&scaled);
             let mut problem = Problem::new(&data, structure, guess).unwrap();
             for weights in [None, Some((0..400).map(|k| 1.0 + (k % 3) as f64).collect())] {
                 problem.root_weights = weights;

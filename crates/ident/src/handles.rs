@@ -150,11 +150,7 @@ mod tests {
     use crate::models::{Structure, Values};
 
     fn model(code: &str, set: &[(Param, f64)]) -> Model {
-        let mut v = Values::default();
-        for &(p, x) in set {
-            v.set(p, x);
-        }
-        Model::new(Structure::parse(code).unwrap(), v)
+        Model::new(Structure::parse(code).unwrap(), Values::from_pairs(set))
     }
 
     #[test]

@@ -210,7 +210,7 @@ mod tests {
             })
             .collect();
         let input = Excitation::measured(&times, &u, None, Hold::Zoh).unwrap();
-        let v = values(&[
+        let v = Values::from_pairs(&[
             (Param::Kp, 0.56),
             (Param::Tp1, 150.0),
             (Param::Tp2, 12.0),
@@ -225,12 +225,6 @@ mod tests {
             .map(|y| y + 0.1 * rng.symmetric())
             .collect();
         FitData { times, y, input }
-    }
-
-    fn values(pairs: &[(Param, f64)]) -> Values {
-        let mut v = Values::default();
-        pairs.iter().for_each(|&(p, x)| v.set(p, x));
-        v
     }
 
     fn fitted(data: &FitData, code: &str, from: Values) -> FitReport {
@@ -251,7 +245,7 @@ mod tests {
     #[test]
     fn a_drift_bought_on_the_fitted_part_predicts_the_rest_badly_and_a_pole_does_not() {
         let data = record();
-        let from = values(&[
+        let from = Values::from_pairs(&[
             (Param::Kp, 0.5),
             (Param::Tp1, 100.0),
             (Param::Tp2, 5.0),

@@ -329,6 +329,13 @@ impl Default for Values {
 }
 
 impl Values {
+    /// The given parameters at their values, every other at 0.
+    pub fn from_pairs(pairs: &[(Param, f64)]) -> Self {
+        let mut v = Self::default();
+        pairs.iter().for_each(|&(p, x)| v.set(p, x));
+        v
+    }
+
     pub fn get(&self, p: Param) -> f64 {
         self.0[p as usize]
     }
@@ -736,11 +743,7 @@ mod tests {
     }
 
     fn model(code: &str, set: &[(Param, f64)]) -> Model {
-        let mut v = Values::default();
-        for &(p, x) in set {
-            v.set(p, x);
-        }
-        Model::new(Structure::parse(code).unwrap(), v)
+        Model::new(Structure::parse(code).unwrap(), Values::from_pairs(set))
     }
 
     #[test]

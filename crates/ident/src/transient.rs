@@ -385,9 +385,7 @@ mod tests {
     fn transient(code: &str, params: &[(Param, f64)]) -> Transient {
         let mut s = Structure::parse(code).expect("a code");
         s.transient = true;
-        let mut v = Values::default();
-        params.iter().for_each(|&(p, x)| v.set(p, x));
-        Transient::of(&Model::new(s, v)).expect("a transient")
+        Transient::of(&Model::new(s, Values::from_pairs(params))).expect("a transient")
     }
 
     /// The walk against the exact value at every instant, on a grid made as a logger makes
