@@ -5,7 +5,7 @@ use crate::kit;
 
 use degrau::app::DegrauApp;
 use degrau::app::design::state::{RootKind, System};
-use degrau::ident::fit::Lcg;
+use degrau::ident::random::Lcg;
 use eframe::egui::{self, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};

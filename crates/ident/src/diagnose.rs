@@ -1679,7 +1679,7 @@ mod tests {
             "P1",
             &[(Param::Kp, 2.0), (Param::Tp1, 10.0), (Param::Y0, 50.0)],
         );
-        let mut rng = crate::fit::Lcg(5);
+        let mut rng = crate::random::Lcg(5);
         let y = truth
             .simulate(&input, &times)
             .unwrap()

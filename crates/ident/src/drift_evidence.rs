@@ -423,8 +423,9 @@ impl Design {
 mod tests {
     use super::*;
     use crate::excitation::{Excitation, Hold};
-    use crate::fit::{FitOptions, Lcg, fit};
+    use crate::fit::{FitOptions, fit};
     use crate::models::{Param, Structure, Values};
+    use crate::random::Lcg;
 
     /// A logged record of `truth` (input `levels` held from the given instants, 1 s
     /// sampling, `n` samples), Gaussian-ish noise of `noise` (output units).

@@ -192,8 +192,9 @@ pub fn hold_out(data: &FitData, current: &FitReport, candidate: &FitReport) -> O
 mod tests {
     use super::*;
     use crate::excitation::{Excitation, Hold};
-    use crate::fit::{Lcg, fit};
+    use crate::fit::fit;
     use crate::models::{Model, Param, Structure, Values};
+    use crate::random::Lcg;
 
     /// ECAM's MV test as a process with a slow second lag: 30 → 70 at 10 s, back to 30 at
     /// 316 s, 480 samples, noise ± 0.1.

@@ -25,6 +25,7 @@ mod parallel;
 pub mod per_step;
 pub mod prbs;
 pub mod prepare;
+pub mod random;
 pub mod reduce;
 pub mod residuals;
 pub mod rest;

@@ -25,8 +25,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::excitation::{Excitation, Hold};
-use super::fit::Lcg;
 use super::models::{Model, ModelError};
+use super::random::Lcg;
 
 /// The shortest and longest registers offered.
 pub const MIN_ORDER: u32 = 2;

@@ -199,9 +199,10 @@ fn largest_power_of_two(x: usize) -> usize {
 mod tests {
     use super::*;
     use crate::excitation::Hold;
-    use crate::fit::{FitOptions, FitReport, Lcg, fit, search_fit};
+    use crate::fit::{FitOptions, FitReport, fit, search_fit};
     use crate::guess::auto_guess;
     use crate::models::{Model, Param, Structure, Values};
+    use crate::random::Lcg;
 
     /// A P1D record of `n` samples every `ts` s driven by the input `levels` (instant, level)
     /// held between samples, with uniform noise ±`noise`, operating point 30.

@@ -137,7 +137,7 @@ mod tests {
         let clean = Model::new(Structure::parse("P2").unwrap(), truth)
             .simulate(&input, &times)
             .unwrap();
-        let mut rng = crate::fit::Lcg(2);
+        let mut rng = crate::random::Lcg(2);
         let mut y: Vec<f64> = clean.iter().map(|c| c + 0.03 * rng.symmetric()).collect();
         y[40] -= 0.5;
         let data = FitData { times, y, input };
@@ -171,7 +171,7 @@ mod tests {
         let input = Excitation::step(6.0, 1.0);
         let clean = Model::new(s, truth).simulate(&input, &times).unwrap();
         let wild: Vec<usize> = (0..10).map(|k| 40 + 25 * k).collect();
-        let mut rng = crate::fit::Lcg(13);
+        let mut rng = crate::random::Lcg(13);
         let y: Vec<f64> = clean
             .iter()
             .enumerate()

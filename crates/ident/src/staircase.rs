@@ -11,8 +11,9 @@
 //! to be taken (2 × [`REPLICATES`] fits of one start).
 
 use super::diagnose::{BIC_THRESHOLD, judged_change};
-use super::fit::{FitData, FitOptions, FitReport, Lcg, fit};
+use super::fit::{FitData, FitOptions, FitReport, fit};
 use super::prbs::gaussian;
+use super::random::Lcg;
 use super::test_causes::{FittedRecord, TestEvidence, quantisation};
 
 /// Records simulated under the null.

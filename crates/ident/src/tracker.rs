@@ -83,9 +83,10 @@ mod tests {
     use super::*;
     use crate::diagnose::{DiagnoseOptions, diagnose_tracked};
     use crate::excitation::Excitation;
-    use crate::fit::{FitData, FitOptions, Lcg, fit};
+    use crate::fit::{FitData, FitOptions, fit};
     use crate::guess::auto_guess;
     use crate::models::{Model, Param, Structure, Values};
+    use crate::random::Lcg;
     use std::sync::Mutex;
 
     /// A P2 step test (Kp 2, lags 10 s and 3 s, from 5) with 0.5 % noise, and its P1 fit.

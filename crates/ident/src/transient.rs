@@ -553,10 +553,10 @@ mod tests {
 
     #[test]
     fn three_lags_apart_in_closed_form_match_the_newton_basis() {
-        let mut rng = crate::fit::Lcg(5);
+        let mut rng = crate::random::Lcg(5);
         let mut tried = 0;
         while tried < 40 {
-            let lag = |rng: &mut crate::fit::Lcg| 0.2 * 500f64.powf(rng.unit());
+            let lag = |rng: &mut crate::random::Lcg| 0.2 * 500f64.powf(rng.unit());
             let x = three_lags((lag(&mut rng), lag(&mut rng), lag(&mut rng)));
             let Modes::Real { poles, .. } = &x.modes else {
                 panic!("real poles")

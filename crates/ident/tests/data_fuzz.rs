@@ -9,7 +9,7 @@
 
 use std::collections::BTreeMap;
 
-use degrau_ident::fit::Lcg;
+use degrau_ident::random::Lcg;
 
 use degrau_ident::data::{
     ColumnChoice, DataError, LoadOptions, MIN_SAMPLES, StepTest, from_columns, load_bytes,

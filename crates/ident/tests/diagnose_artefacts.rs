@@ -51,8 +51,9 @@ use std::sync::OnceLock;
 
 use degrau_ident::diagnose::{DiagnoseOptions, DiagnoseReport, diagnose};
 use degrau_ident::excitation::{Excitation, Hold, InputStep};
-use degrau_ident::fit::{FitData, FitReport, Lcg};
+use degrau_ident::fit::{FitData, FitReport};
 use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::random::Lcg;
 use degrau_ident::test_causes::{TestCauseKind, TestEvidence};
 
 /// Cases per artefact.

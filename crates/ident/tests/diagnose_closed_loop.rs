@@ -33,9 +33,10 @@ use degrau_ident::data::{LoadOptions, load_file};
 use degrau_ident::diagnose::{DiagnoseOptions, diagnose};
 use degrau_ident::excitation::{Excitation, Hold};
 use degrau_ident::experiment::Experiment;
-use degrau_ident::fit::{FitData, FitReport, Lcg, fit};
+use degrau_ident::fit::{FitData, FitReport, fit};
 use degrau_ident::guess::auto_guess;
 use degrau_ident::models::Structure;
+use degrau_ident::random::Lcg;
 use degrau_ident::test_causes::closed_loop::closed_loop;
 use degrau_ident::test_causes::{FittedRecord, TestCauseKind, TestEvidence};
 

@@ -8,9 +8,10 @@ use degrau_ident::arx::{
     ArxOrders, LsqError, Offset, Regressor, Start, arx, default_grid, least_squares, regression,
     select_orders,
 };
-use degrau_ident::fit::{FitData, FitOptions, Lcg};
+use degrau_ident::fit::{FitData, FitOptions};
 use degrau_ident::models::{Model, Param, Structure, Values};
 use degrau_ident::prbs::{Prbs, gaussian, simulate_record, to_csv};
+use degrau_ident::random::Lcg;
 use degrau_ident::rls::{RlsOptions, rls_arx, run};
 use degrau_ident::validation::{Split, validate_arx, validate_continuous, validate_rls};
 use degrau_lti::discrete::c2d;

@@ -36,8 +36,9 @@ use degrau_ident::data::StepTest;
 use degrau_ident::diagnose::{Cause, DiagnoseOptions, diagnose};
 use degrau_ident::excitation::{Excitation, Hold, InputStep};
 use degrau_ident::experiment::Experiment;
-use degrau_ident::fit::{FitOptions, Lcg};
+use degrau_ident::fit::FitOptions;
 use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::random::Lcg;
 
 /// Fraction of the generated records whose every parameter must be recovered.
 const MIN_RECOVERED: f64 = 0.95;

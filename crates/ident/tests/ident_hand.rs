@@ -5,11 +5,12 @@
 //! typed refusals.
 
 use degrau_ident::excitation::{Excitation, Hold};
-use degrau_ident::fit::{FitData, Lcg};
+use degrau_ident::fit::FitData;
 use degrau_ident::hand::{
     DeadTimeFrom, HandError, HandEstimate, HandMethod, HandWarning, Overrides, Record, estimate,
     estimate_all,
 };
+use degrau_ident::random::Lcg;
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 

@@ -9,8 +9,9 @@
 
 use degrau_ident::data::{LoadOptions, StepTest, load_file, load_str};
 use degrau_ident::experiment::{EstimateReason, Experiment, Offset, OperatingPoint};
-use degrau_ident::fit::{FitOptions, FitReport, Lcg};
+use degrau_ident::fit::{FitOptions, FitReport};
 use degrau_ident::models::Param;
+use degrau_ident::random::Lcg;
 use degrau_lti::{C64, StepResponse, TransferFunction};
 
 /// The true operating point of the simulated records.

@@ -13,9 +13,9 @@
 //! - **The noise**: white Gaussian, its standard deviation `noise_percent` % of the
 //!   noise-free response's range (max − min), drawn from `seed` (reproducible).
 
-use degrau_ident::fit::Lcg;
 use degrau_ident::models::{Model, ModelError, Param, Structure, Values};
 use degrau_ident::prbs::{self, Prbs, PrbsError, Record};
+use degrau_ident::random::Lcg;
 use degrau_lti::TransferFunction;
 use degrau_lti::discrete::{DiscreteError, c2d};
 

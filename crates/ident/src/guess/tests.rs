@@ -6,7 +6,7 @@ use super::*;
 /// 0.32 quantum), the spikes given added.
 fn rest_record(spikes: &[(usize, f64)], quantum: Option<f64>) -> FitData {
     let times: Vec<f64> = (0..100).map(|k| 0.1 * k as f64).collect();
-    let mut rng = super::super::fit::Lcg(5);
+    let mut rng = crate::random::Lcg(5);
     let mut y: Vec<f64> = times
         .iter()
         .map(|_| 20.0 + 0.05 * rng.symmetric())
@@ -68,7 +68,7 @@ fn shaped(code: &str, params: &[(Param, f64)], noise: f64) -> FitData {
     let input = Excitation::step(10.1, 5.0);
     let mut y = Model::new(s, v).simulate(&input, &times).unwrap();
     let effect = 5.0 * v.get(Param::Kp).abs();
-    let mut rng = super::super::fit::Lcg(3);
+    let mut rng = crate::random::Lcg(3);
     let coloured = noise > 0.01;
     let (rho, quantum) = if coloured {
         (0.8_f64, 0.1 * noise * effect)
@@ -225,7 +225,7 @@ fn noisy(structure: &str, truth: &[(Param, f64)], noise: f64) -> FitData {
     let setup = Excitation::step(2.0, 1.0);
     let times: Vec<f64> = (0..600).map(|k| 0.1 * k as f64).collect();
     let y = Model::new(s, v).simulate(&setup, &times).unwrap();
-    let mut rng = crate::fit::Lcg(0x2545_F491_4F6C_DD1D);
+    let mut rng = crate::random::Lcg(0x2545_F491_4F6C_DD1D);
     let y = y.iter().map(|y| y + noise * rng.symmetric()).collect();
     FitData {
         times,

@@ -332,9 +332,10 @@ impl Normal {
 mod tests {
     use super::*;
     use crate::excitation::{Excitation, Hold};
-    use crate::fit::{FitData, FitOptions, FitReport, Lcg, fit};
+    use crate::fit::{FitData, FitOptions, FitReport, fit};
     use crate::guess::auto_guess;
     use crate::models::Structure;
+    use crate::random::Lcg;
 
     /// A first-order plant y' = (Kp·u − y)/τ at h = 1 s, either under a PI controller
     /// (`closed`, with a setpoint step) or driven by a PRBS of one-sample clock (open loop),

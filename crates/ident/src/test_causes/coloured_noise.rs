@@ -39,7 +39,7 @@ mod tests {
     #[test]
     fn an_ar1_sequence_is_coloured_and_white_noise_is_not() {
         // x_k = 0.9·x_{k−1} + e_k with a deterministic, zero-mean e.
-        let mut rng = crate::fit::Lcg(11);
+        let mut rng = crate::random::Lcg(11);
         let white: Vec<f64> = (0..2000).map(|_| rng.symmetric()).collect();
         let mut x = vec![0.0; 2000];
         for i in 1..x.len() {

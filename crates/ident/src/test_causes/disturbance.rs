@@ -450,7 +450,7 @@ mod tests {
         let times: Vec<f64> = (0..400).map(|k| 0.25 * k as f64).collect();
         let input = Excitation::step(t0, 1.0);
         let clean = Model::new(s, v).simulate(&input, &times).unwrap();
-        let mut rng = crate::fit::Lcg(5);
+        let mut rng = crate::random::Lcg(5);
         let y = clean
             .iter()
             .zip(&times)

@@ -308,7 +308,7 @@ mod tests {
 
     #[test]
     fn isolated_spikes_are_found_and_a_smooth_misfit_is_not() {
-        let mut rng = crate::fit::Lcg(7);
+        let mut rng = crate::random::Lcg(7);
         let n: Vec<f64> = (0..200).map(|_| 0.005 * rng.symmetric()).collect();
         let noise = |i: usize| n[i];
         // A smooth bump the model lacks, plus spikes at 50 and 51 and 120.
@@ -331,7 +331,7 @@ mod tests {
     }
 
     fn gaussian_noise(seed: u64, n: usize, sd: f64) -> Vec<f64> {
-        let mut rng = crate::fit::Lcg(seed);
+        let mut rng = crate::random::Lcg(seed);
         (0..n)
             .map(|_| {
                 let (a, b) = (rng.unit().max(1e-300), rng.unit());
@@ -375,7 +375,7 @@ mod tests {
 
     #[test]
     fn a_block_is_not_isolated() {
-        let mut rng = crate::fit::Lcg(9);
+        let mut rng = crate::random::Lcg(9);
         let mut r: Vec<f64> = (0..100).map(|_| 0.01 * rng.symmetric()).collect();
         for v in &mut r[40..46] {
             *v += 1.0;

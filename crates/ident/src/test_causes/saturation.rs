@@ -137,7 +137,7 @@ mod tests {
         let times: Vec<f64> = (0..200).map(|k| 0.2 * k as f64).collect();
         let input = Excitation::step(4.0, 1.0);
         let clean = Model::new(s, v).simulate(&input, &times).unwrap();
-        let mut rng = crate::fit::Lcg(3);
+        let mut rng = crate::random::Lcg(3);
         let y = clean
             .iter()
             .map(|c| (c + 0.005 * rng.symmetric()).min(limit))
@@ -174,7 +174,7 @@ mod tests {
 
     #[test]
     fn a_dithered_quantised_record_does_not_pile_up_at_its_top_level() {
-        let mut rng = crate::fit::Lcg(11);
+        let mut rng = crate::random::Lcg(11);
         // Uniform noise of σ = 0.0058 on a quantum of 0.4 of that.
         let (a, q) = (0.01, 0.004 / 3f64.sqrt());
         let sd = a / 3f64.sqrt();

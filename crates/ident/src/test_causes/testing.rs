@@ -6,8 +6,9 @@
 //! sample (zero-order hold).
 
 use crate::excitation::{Excitation, Hold};
-use crate::fit::{FitData, FitOptions, FitReport, Lcg, fit};
+use crate::fit::{FitData, FitOptions, FitReport, fit};
 use crate::models::{Param, Structure, Values};
+use crate::random::Lcg;
 
 use super::FittedRecord;
 

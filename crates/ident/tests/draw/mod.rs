@@ -2,7 +2,7 @@
 //! every run): a uniform value in a range, the same with a random sign, a standard normal.
 #![allow(dead_code)] // each test binary uses its own subset
 
-use degrau_ident::fit::Lcg;
+use degrau_ident::random::Lcg;
 
 /// Uniform in [a, b).
 pub fn range(rng: &mut Lcg, (a, b): (f64, f64)) -> f64 {
