@@ -10,7 +10,7 @@
 //! threshold. A parametric bootstrap, made only on a staircase and only for the step about
 //! to be taken (2 × [`REPLICATES`] fits of one start).
 
-use super::diagnose::{BIC_THRESHOLD, judged_change};
+use super::diagnose::judge::{BIC_THRESHOLD, judged_change};
 use super::fit::{FitData, FitOptions, FitReport, fit};
 use super::prbs::gaussian;
 use super::random::Lcg;

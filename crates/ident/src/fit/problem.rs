@@ -56,14 +56,14 @@ pub(super) struct Problem {
     /// The guess, with the values of the parameters that are not estimated (e.g. a fixed Y0),
     /// in internal units.
     pub(super) fixed: Values,
-    /// √weight of each sample on a reduced record (a block mean: see [`reduce`]); `None`:
+    /// √weight of each sample on a reduced record (a block mean: see [`reduce`](crate::reduce)); `None`:
     /// every sample counts once.
     pub(super) root_weights: Option<Vec<f64>>,
     /// The record's scatter within the blocks of a reduced record ([`Reduction::within`]),
     /// added to every sum of squares so that it is the record's; 0 otherwise.
     pub(super) within: f64,
     /// On a long record, the alias check looks at this many samples after each input
-    /// change reaches the output (see [`alias_spans`]); `None`: the whole record.
+    /// change reaches the output (see [`alias_spans`](super::alias)); `None`: the whole record.
     pub(super) alias_span: Option<usize>,
 }
 impl Problem {

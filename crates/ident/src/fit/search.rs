@@ -34,7 +34,7 @@ pub fn fit(
 }
 
 /// [`fit`] minimising Σ wᵢ(yᵢ − ŷᵢ)², each sample weighted by `weights` (one per sample,
-/// ≥ 0): a step of iteratively reweighted least squares ([`super::robust`]). It runs on every
+/// ≥ 0): a step of iteratively reweighted least squares ([`crate::robust`]). It runs on every
 /// sample (the weights belong to the samples, not to a reduction's blocks); its n, MSE and
 /// intervals count a sample by its weight.
 pub fn fit_weighted(

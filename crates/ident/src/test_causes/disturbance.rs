@@ -19,7 +19,8 @@
 //! input, and not a drift.
 
 use super::{DisturbanceShape, Handling, TestCause, TestCauseKind, TestEvidence};
-use crate::diagnose::{BIC_THRESHOLD, StartExtensions};
+use crate::diagnose::extension::StartExtensions;
+use crate::diagnose::judge::BIC_THRESHOLD;
 use crate::drift_evidence::{Z_DRIFT, settled_slope_before};
 use crate::fit::{FitData, FitOptions, FitReport, search_fit};
 use crate::models::{Model, Param};

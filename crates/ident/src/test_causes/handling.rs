@@ -12,7 +12,8 @@ use super::{
     imperfect_step, nonlinearity, not_at_rest, outliers, quantisation, sampling, saturation,
     small_step, steps_held,
 };
-use crate::diagnose::{Extensions, StartExtensions, bic};
+use crate::diagnose::extension::{Extensions, StartExtensions};
+use crate::diagnose::judge::bic;
 use crate::drift_evidence::{read_drift, read_drift_after};
 use crate::fit::{FitData, FitOptions, FitReport, fit, within_span};
 use crate::guess::auto_guess;

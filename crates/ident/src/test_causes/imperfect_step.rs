@@ -27,7 +27,7 @@
 //! left out (outliers, a clipped span, a window), and a window read past the next change
 //! took a staircase's next level for an overshoot. Cost: O(n + input steps).
 
-use crate::diagnose::Cause;
+use crate::diagnose::cause::Cause;
 use crate::excitation::{Excitation, InputChange};
 use crate::fit::FitData;
 use crate::rest::difference_noise;

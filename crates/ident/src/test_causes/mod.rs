@@ -22,10 +22,10 @@ pub mod saturation;
 
 use serde::{Deserialize, Serialize};
 
-use super::diagnose::Cause;
 use super::fit::{FitData, FitReport};
 use super::models::Param;
 use super::rest::{Motion, Rest, rest_before};
+use crate::diagnose::cause::Cause;
 
 mod imperfect_step;
 mod nonlinearity;
