@@ -106,13 +106,9 @@ fn scale_record(n: usize) -> FitData {
     }
     let s = Structure::parse("P1D").expect("a code");
     let mut y = Model::new(s, v).simulate(&input, &times).expect("a model");
-    let mut state = 7u64;
-    let mut uniform = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-    };
+    let mut rng = degrau::ident::random::Lcg(7);
+    // Never 0, so that its logarithm is finite.
+    let mut uniform = move || (rng.bits() as f64 + 0.5) / (1u64 << 53) as f64;
     for v in y.iter_mut() {
         // Box–Muller: σ = 0.01.
         let (a, b) = (uniform(), uniform());

@@ -23,12 +23,9 @@ pub fn noisy_800(
     let mut y = Model::new(s, v)
         .simulate(&setup, &times)
         .expect("a valid model");
-    let mut state = seed;
+    let mut rng = degrau::ident::random::Lcg(seed);
     for v in y.iter_mut() {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        *v += noise * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
+        *v += noise * (rng.unit() - 0.5);
     }
     FitData {
         times,
@@ -73,12 +70,9 @@ pub fn logger_80k() -> FitData {
     let mut y = Model::new(s, v)
         .simulate(&input, &times)
         .expect("a valid model");
-    let mut state = 2026u64;
+    let mut rng = degrau::ident::random::Lcg(2026u64);
     for v in y.iter_mut() {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        *v += 0.04 * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
+        *v += 0.04 * (rng.unit() - 0.5);
     }
     FitData { times, y, input }
 }

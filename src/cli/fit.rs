@@ -264,7 +264,7 @@ impl DataArgs {
             .map_err(ExperimentError::from)?;
         }
         if let Some(fc) = self.filter {
-            let ts = crate::ident::prepare::sampling_period(&test.time).unwrap_or(1.0);
+            let ts = crate::ident::timebase::sampling_period(&test.time).unwrap_or(1.0);
             let filter =
                 crate::ident::prepare::Ewma::try_new(fc, ts).map_err(ExperimentError::from)?;
             test.output = filter.apply(&test.output);

@@ -127,19 +127,10 @@ fn prbs_record(name: &str) -> std::path::PathBuf {
     let (ts, n, tau, kp) = (0.1, 200, 0.5, 2.0);
     let mut lfsr: u8 = 0x5b;
     let mut bit = 1.0;
-    let mut seed: u64 = 12345;
+    let mut rng = degrau::ident::random::Lcg(12345);
     let mut noise = || {
         // The sum of four uniforms, σ ≈ 0.02.
-        (0..4)
-            .map(|_| {
-                seed = seed
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-            })
-            .sum::<f64>()
-            * 0.02
-            * 3f64.sqrt()
+        (0..4).map(|_| rng.unit() - 0.5).sum::<f64>() * 0.02 * 3f64.sqrt()
     };
     let (mut x, mut rows) = (0.0, String::from("t,u,y\n"));
     for k in 0..n {

@@ -142,7 +142,7 @@ pub fn settled_stretches(models: &[&Model], data: &FitData) -> Vec<Stretch> {
     }
     let settle = models
         .iter()
-        .map(|m| m.settling_time(0.02).filter(|s| s.is_finite()))
+        .map(|m| m.settling().filter(|s| s.is_finite()))
         .try_fold(0.0f64, |acc, s| s.map(|s| acc.max(s)));
     let Some(settle) = settle else {
         return out;

@@ -165,7 +165,7 @@ impl Excitation {
             return None;
         }
         let lead_range = match hold {
-            Hold::Zoh => super::prepare::sampling_period(time).unwrap_or(0.0),
+            Hold::Zoh => crate::timebase::sampling_period(time).unwrap_or(0.0),
             Hold::Foh => 0.0,
         };
         Some(Self {

@@ -229,7 +229,7 @@ impl Experiment {
         };
         let mut y = kept.output.clone();
         if let Some(fc) = self.filter_hz {
-            let ts = prepare::sampling_period(&kept.time).unwrap_or(1.0);
+            let ts = crate::timebase::sampling_period(&kept.time).unwrap_or(1.0);
             y = prepare::Ewma::try_new(fc, ts)?.apply(&y);
         }
         let input = self.input(test)?;

@@ -12,8 +12,9 @@ use super::excitation::Excitation;
 use super::fit::FitData;
 use super::models::{Model, Param, Structure, Values};
 use super::scale::Scale;
-use super::stats::tame;
+use super::stats::{mean, tame};
 use super::test_causes::outliers::THRESHOLD;
+use super::timebase::rest_samples;
 
 /// What the curve shows, relative to the operating point y0 and the final level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -56,7 +57,7 @@ pub struct RestLevel {
 /// The output at rest: the mean of the samples before t0 that are not wild (beyond the
 /// outliers' [`THRESHOLD`] robust standard deviations of their median: a spike before the
 /// step would otherwise shift the held Y0 and make the whole record look offset), counted as
-/// [`super::prepare::samples_before`] counts them (a sample at t0 counts when the next one
+/// [`crate::timebase::samples_before`] counts them (a sample at t0 counts when the next one
 /// has the same time, the pre-step row of a log that writes the step instant twice), so the
 /// fit holds Y0 where the data panel says it is. When none is before t0 but the first sample
 /// is at t0 (a record that starts with the step, e.g. a heater switched on at the first
@@ -79,27 +80,6 @@ pub fn rest_level(data: &FitData) -> Option<RestLevel> {
 /// The level of [`rest_level`], if the data show one.
 pub fn level_before(data: &FitData) -> Option<f64> {
     rest_level(data).map(|r| r.y0)
-}
-
-/// How many leading samples of `times` (of `n` outputs) are at rest before a step at `t0`,
-/// and whether the only one is the sample at t0 itself (the rule of [`rest_level`]).
-pub(crate) fn rest_samples(times: &[f64], t0: f64, n: usize) -> Option<(usize, bool)> {
-    match super::prepare::samples_before(times, t0).min(n) {
-        0 if times.first() == Some(&t0) && n > 0 => Some((1, true)),
-        0 => None,
-        k => Some((k, false)),
-    }
-}
-
-/// The mean, without overflow for values near the largest double.
-pub(crate) fn mean(v: &[f64]) -> f64 {
-    let n = v.len() as f64;
-    let sum = v.iter().sum::<f64>();
-    if sum.is_finite() {
-        sum / n
-    } else {
-        v.iter().map(|x| x / n).sum()
-    }
 }
 
 /// The record's internal units and the record in them, `None` when it has none (no step).

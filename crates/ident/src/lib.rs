@@ -35,6 +35,7 @@ pub mod scale;
 pub mod staircase;
 pub mod stats;
 pub mod test_causes;
+pub mod timebase;
 pub mod tracker;
 mod transient;
 pub mod validation;

@@ -496,6 +496,13 @@ impl Model {
         StepInfo::of_response(&response, &options).settling_time
     }
 
+    /// The settling time into stepinfo's default band (± 2 % of the final value, s from the
+    /// step, dead time included): the one rule identification reads a settled response by
+    /// ([`Self::settling_time`] for another band).
+    pub fn settling(&self) -> Option<f64> {
+        self.settling_time(StepInfoOptions::default().settling_threshold)
+    }
+
     /// The dead time of G (s): Td when the structure has one and it is positive, else 0.
     pub fn dead_time(&self) -> f64 {
         if self.structure.delay {

@@ -302,14 +302,11 @@ mod tests {
         v.set(Param::Y0, 1241.0);
         let truth = Model::new(Structure::parse("P2").unwrap(), v);
         let clean = truth.simulate(&input, &times).unwrap();
-        let (mut seed, mut coloured) = (12345u64, 0.0);
+        let (mut rng, mut coloured) = (crate::random::Lcg(12345), 0.0);
         let y: Vec<f64> = clean
             .iter()
             .map(|&c| {
-                seed = seed
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                let white = ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 2.0 * 12.4;
+                let white = (rng.unit() - 0.5) * 2.0 * 12.4;
                 coloured = 0.6 * coloured + white;
                 (c + coloured).round()
             })

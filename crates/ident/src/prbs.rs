@@ -227,7 +227,7 @@ pub fn simulate_record(
     let mut rng = Lcg(seed);
     if noise > 0.0 {
         for v in &mut y {
-            *v += noise * gaussian(&mut rng);
+            *v += noise * rng.gaussian();
         }
     }
     if y.iter().any(|v| !v.is_finite()) {
@@ -250,13 +250,6 @@ pub fn sample_times(samples: usize, ts: f64) -> Result<Vec<f64>, PrbsError> {
         return Err(PrbsError::TimeBeyondRange { samples, ts });
     }
     Ok((0..samples).map(|k| k as f64 * ts).collect())
-}
-
-/// A standard normal draw (Box–Muller).
-pub fn gaussian(rng: &mut Lcg) -> f64 {
-    let u1 = 1.0 - rng.unit();
-    let u2 = rng.unit();
-    (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
 }
 
 /// The record as CSV with the header `time,u,y`, every number written so it reads back

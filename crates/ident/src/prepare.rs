@@ -24,6 +24,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::data::{DataNote, MIN_SAMPLES, StepTest};
+use super::stats::mean;
 use degrau_lti::metrics::{MonotonePieces, StepInfo, StepInfoOptions};
 
 /// The step found in the input column.
@@ -99,25 +100,13 @@ pub fn detect_step(test: &StepTest, initial_input: Option<f64>) -> Option<StepEd
         })
 }
 
-/// How many samples come before the step at `t0` (see the module docs for a repeated t0).
-pub fn samples_before(time: &[f64], t0: f64) -> usize {
-    time.iter()
-        .enumerate()
-        .take_while(|&(k, &t)| t < t0 || (t == t0 && time.get(k + 1) == Some(&t0)))
-        .count()
-}
-
 /// The operating point y0: the output at rest before the step, by the rule of
 /// [`super::guess::rest_level`] (the mean of the samples before t0, or the sample at t0 when
 /// the record starts with the step); `None` when there is none (the caller then estimates it
 /// or types it).
 pub fn operating_point(test: &StepTest, t0: f64) -> Option<f64> {
-    let (samples, _) = super::guess::rest_samples(&test.time, t0, test.output.len())?;
-    mean(&test.output[..samples])
-}
-
-fn mean(v: &[f64]) -> Option<f64> {
-    (!v.is_empty()).then(|| super::guess::mean(v))
+    let (samples, _) = crate::timebase::rest_samples(&test.time, t0, test.output.len())?;
+    Some(mean(&test.output[..samples]))
 }
 
 /// The final level: the mean output over the last `fraction` of the record's duration (at
@@ -133,7 +122,8 @@ pub fn final_level(test: &StepTest, fraction: f64) -> Option<f64> {
         .time
         .partition_point(|&t| t < from)
         .min(test.time.len() - 1);
-    mean(test.output.get(start..)?)
+    let tail = test.output.get(start..).filter(|v| !v.is_empty())?;
+    Some(mean(tail))
 }
 
 /// The samples kept for fitting.
@@ -188,22 +178,6 @@ pub fn apply_window(test: &StepTest, window: Window) -> Result<StepTest, Prepare
         sampling_period: test.sampling_period,
         notes,
     })
-}
-
-/// The median spacing of positive time steps, `None` with fewer than two distinct times
-/// (linear time: a selection, not a sort, for records of millions of samples).
-pub fn sampling_period(time: &[f64]) -> Option<f64> {
-    let mut steps: Vec<f64> = time
-        .windows(2)
-        .map(|w| w[1] - w[0])
-        .filter(|d| *d > 0.0)
-        .collect();
-    if steps.is_empty() {
-        return None;
-    }
-    let middle = steps.len() / 2;
-    let (_, median, _) = steps.select_nth_unstable_by(middle, f64::total_cmp);
-    Some(*median)
 }
 
 /// The notes' first-order low-pass (exponentially weighted moving average).
@@ -329,6 +303,7 @@ pub fn measured_step_info(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::timebase::{samples_before, sampling_period};
 
     fn test_of(time: Vec<f64>, output: Vec<f64>, input: Option<Vec<f64>>) -> StepTest {
         StepTest {

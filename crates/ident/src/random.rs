@@ -1,5 +1,10 @@
+//! The one random generator: small, reproducible from its seed, and the same on every
+//! machine, so that a fit's spread-out starts, a designed test's noise and every generated
+//! record of the tests come out the same each run.
+
 /// A small reproducible generator (Knuth's MMIX linear congruential constants) for the
-/// spread-out starts, and for the tests' noise and random walks.
+/// spread-out starts, a PRBS test's noise, and the tests' noise and random walks: the one
+/// generator of the workspace.
 pub struct Lcg(pub u64);
 
 impl Lcg {
@@ -22,6 +27,12 @@ impl Lcg {
     /// Uniform in 0..n (n > 0).
     pub fn below(&mut self, n: usize) -> usize {
         (self.bits() % n as u64) as usize
+    }
+    /// A standard normal draw (Box–Muller, from two uniform draws).
+    pub fn gaussian(&mut self) -> f64 {
+        let u1 = 1.0 - self.unit();
+        let u2 = self.unit();
+        (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
     }
     /// One of `items` (not empty), uniformly.
     pub fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {

@@ -27,6 +27,7 @@
 
 use super::excitation::Excitation;
 use super::fit::FitData;
+use super::stats::mean;
 
 /// A record of at most this many samples is not reduced.
 pub const MIN_SAMPLES: usize = 4096;
@@ -183,11 +184,6 @@ fn uniform(n: usize, changes: &[usize]) -> Option<Vec<usize>> {
     let shortest = changes.windows(2).map(|w| w[1] - w[0]).min().unwrap_or(n);
     let k = (shortest / PER_INTERVAL).min(n / MIN_SAMPLES);
     (k >= 2).then(|| (0..n).step_by(k).collect())
-}
-
-/// The mean of a non-empty slice.
-fn mean(x: &[f64]) -> f64 {
-    x.iter().sum::<f64>() / x.len() as f64
 }
 
 /// The largest power of two not above `x` (0 for 0).

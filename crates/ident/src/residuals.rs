@@ -25,9 +25,9 @@
 
 use super::fit::FitData;
 use super::models::{Model, Param};
-use super::prepare::sampling_period;
+use super::stats::mean;
 use super::stats::normal_quantile;
-use degrau_lti::StepInfoOptions;
+use super::timebase::sampling_period;
 
 /// Which part of the record a region is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -211,7 +211,7 @@ pub fn boundaries(model: &Model, data: &FitData) -> Boundaries {
     } else {
         0.0
     };
-    let settling = model.settling_time(StepInfoOptions::default().settling_threshold);
+    let settling = model.settling();
     let response_start = clamp(t0 + td, first, last);
     // With several changes the response settles after the last one's transient.
     let last_change = data.input.changes.last().map_or(t0, |c| c.t.max(t0));
@@ -359,15 +359,6 @@ fn whiteness_as_given(e: &[f64]) -> Whiteness {
         outside_band,
         runs,
         white,
-    }
-}
-
-/// Mean of a slice (0 when empty).
-fn mean(x: &[f64]) -> f64 {
-    if x.is_empty() {
-        0.0
-    } else {
-        x.iter().sum::<f64>() / x.len() as f64
     }
 }
 

@@ -51,7 +51,7 @@ impl Rest {
 /// Whether `data` were at rest before their input's first change.
 pub fn rest_before(data: &FitData) -> Rest {
     let t0 = data.input.t0();
-    let samples = super::prepare::samples_before(&data.times, t0).min(data.y.len());
+    let samples = crate::timebase::samples_before(&data.times, t0).min(data.y.len());
     if samples < MIN_SAMPLES_BEFORE {
         return Rest::Unknown { samples };
     }

@@ -12,7 +12,6 @@
 
 use super::diagnose::judge::{BIC_THRESHOLD, judged_change};
 use super::fit::{FitData, FitOptions, FitReport, fit};
-use super::prbs::gaussian;
 use super::random::Lcg;
 use super::test_causes::{FittedRecord, TestEvidence, quantisation};
 
@@ -89,7 +88,7 @@ impl Staircase {
             .map(|_| {
                 let y = clean
                     .iter()
-                    .map(|c| self.round(c + self.noise * gaussian(&mut rng)))
+                    .map(|c| self.round(c + self.noise * rng.gaussian()))
                     .collect();
                 FitData { y, ..data.clone() }
             })
@@ -140,7 +139,7 @@ mod tests {
         let mut rng = Lcg(11);
         let y = clean
             .iter()
-            .map(|c| q * ((c + noise * gaussian(&mut rng)) / q).round())
+            .map(|c| q * ((c + noise * rng.gaussian()) / q).round())
             .collect();
         FitData { times, y, input }
     }

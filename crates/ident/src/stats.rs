@@ -1,6 +1,27 @@
-//! Small statistics needed by the fit report and the residual diagnosis: quantiles of the
+//! Small statistics needed across identification: the one mean (exact and without overflow
+//! at any scale), and for the fit report and the residual diagnosis the quantiles of the
 //! normal and Student-t distributions. Written here because they are a few lines each and a
 //! statistics crate would add a second linear-algebra stack to the build.
+
+/// 2^⌊log₂ m⌋ for the largest finite magnitude m of `values`, within the normal range (1 when
+/// there is none or it is 0): dividing by it is exact.
+pub(crate) fn binary_unit(values: impl IntoIterator<Item = f64>) -> f64 {
+    let m = values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    if m == 0.0 {
+        return 1.0;
+    }
+    let exponent = (m.log2().floor() as i64).clamp(-1022, 1023);
+    f64::from_bits(((exponent + 1023) as u64) << 52)
+}
+
+/// The mean of `v` (NaN when empty), without overflow at any scale.
+pub fn mean(v: &[f64]) -> f64 {
+    let unit = binary_unit(v.iter().copied());
+    unit * (v.iter().map(|x| x / unit).sum::<f64>() / v.len() as f64)
+}
 
 /// The standard normal quantile Φ⁻¹(p), 0 < p < 1 (Acklam's rational approximation refined
 /// (relative error below 1.15e-9).

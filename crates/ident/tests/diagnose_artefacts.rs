@@ -45,7 +45,7 @@
 //! Run with `cargo test --test diagnose_artefacts -- --nocapture` to see the figures.
 
 use crate::draw;
-use draw::{gaussian, range, signed};
+use draw::{range, signed};
 
 use std::sync::OnceLock;
 
@@ -117,14 +117,14 @@ fn noise(rng: &mut Lcg, n: usize, sd: f64, rho: f64) -> Vec<f64> {
     let gauss = rng.unit() < 0.5;
     let scale = sd * (1.0 - rho * rho).sqrt();
     let mut x = if gauss {
-        gaussian(rng)
+        rng.gaussian()
     } else {
         3f64.sqrt() * rng.symmetric()
     } * sd;
     (0..n)
         .map(|_| {
             let e = if gauss {
-                gaussian(rng)
+                rng.gaussian()
             } else {
                 3f64.sqrt() * rng.symmetric()
             };
@@ -809,7 +809,7 @@ fn edge_record(e: Edge) -> (FitData, Structure) {
         .max(1e-3);
     let sd = range(&mut rng, (0.002, 0.02)) * effect;
     if e.output != EdgeOutput::Constant {
-        y.iter_mut().for_each(|x| *x += sd * gaussian(&mut rng));
+        y.iter_mut().for_each(|x| *x += sd * rng.gaussian());
     }
     for _ in 0..e.wild {
         let i = rng.below(n);
@@ -995,7 +995,7 @@ fn clean(index: usize, n: usize) -> (FitData, Structure, String) {
         (kp * du).abs()
     };
     let sd = range(&mut rng, (0.002, 0.02)) * effect;
-    y.iter_mut().for_each(|x| *x += sd * gaussian(&mut rng));
+    y.iter_mut().for_each(|x| *x += sd * rng.gaussian());
     let logged: Vec<f64> = times
         .iter()
         .map(|&t| {

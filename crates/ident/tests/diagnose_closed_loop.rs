@@ -27,7 +27,7 @@
 
 use crate::draw;
 use crate::records;
-use draw::{gaussian, range, signed};
+use draw::{range, signed};
 
 use degrau_ident::data::{LoadOptions, load_file};
 use degrau_ident::diagnose::{DiagnoseOptions, diagnose};
@@ -120,7 +120,7 @@ struct Noise {
 impl Noise {
     fn next(&mut self, rng: &mut Lcg) -> f64 {
         let scale = self.sd * (1.0 - self.rho * self.rho).sqrt();
-        self.x = self.rho * self.x + scale * gaussian(rng);
+        self.x = self.rho * self.x + scale * rng.gaussian();
         self.x
     }
 }
@@ -330,7 +330,7 @@ fn open(index: usize) -> Option<Record> {
             _ => level,
         };
         let logged = match drive {
-            Drive::NoisyStep { share } => level + share * du.abs() * gaussian(&mut rng),
+            Drive::NoisyStep { share } => level + share * du.abs() * rng.gaussian(),
             _ => level,
         };
         // Each change comes between two samples: the plant answers it for a part of the

@@ -95,27 +95,19 @@ const MIN_OFFSET_FRACTION: f64 = 0.2;
 // The generator
 // ---------------------------------------------------------------------------------------------
 
-/// Knuth's MMIX linear congruential generator; the top 53 bits make a uniform number.
-struct Lcg(u64);
+/// The generator of these cases: the workspace's one generator, started from a scrambled seed.
+struct Lcg(degrau_ident::random::Lcg);
 
 impl Lcg {
     fn new(seed: u64) -> Self {
-        let mut g = Lcg(seed ^ 0x9E37_79B9_7F4A_7C15);
-        g.next_u64();
-        g
-    }
-
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        self.0
+        let mut g = degrau_ident::random::Lcg(seed ^ 0x9E37_79B9_7F4A_7C15);
+        g.bits();
+        Lcg(g)
     }
 
     /// Uniform in [0, 1).
     fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+        self.0.unit()
     }
 
     fn range(&mut self, (a, b): (f64, f64)) -> f64 {
@@ -132,14 +124,13 @@ impl Lcg {
     }
 
     fn count(&mut self, (a, b): (usize, usize)) -> usize {
-        a + (self.next_u64() >> 33) as usize % (b - a + 1)
+        // The state's top 31 bits.
+        a + (self.0.bits() >> 22) as usize % (b - a + 1)
     }
 
     /// Standard normal (Box–Muller).
     fn gaussian(&mut self) -> f64 {
-        let u1 = 1.0 - self.unit();
-        let u2 = self.unit();
-        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+        self.0.gaussian()
     }
 }
 

@@ -10,7 +10,7 @@ use degrau_ident::arx::{
 };
 use degrau_ident::fit::{FitData, FitOptions};
 use degrau_ident::models::{Model, Param, Structure, Values};
-use degrau_ident::prbs::{Prbs, gaussian, simulate_record, to_csv};
+use degrau_ident::prbs::{Prbs, simulate_record, to_csv};
 use degrau_ident::random::Lcg;
 use degrau_ident::rls::{RlsOptions, rls_arx, run};
 use degrau_ident::validation::{Split, validate_arx, validate_continuous, validate_rls};
@@ -458,7 +458,7 @@ fn bad_inputs_are_refused_in_words() {
 #[test]
 fn gaussian_noise_has_unit_spread() {
     let mut rng = Lcg(99);
-    let draws: Vec<f64> = (0..20000).map(|_| gaussian(&mut rng)).collect();
+    let draws: Vec<f64> = (0..20000).map(|_| rng.gaussian()).collect();
     let mean = draws.iter().sum::<f64>() / 2e4;
     let var = draws.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / 2e4;
     assert!(

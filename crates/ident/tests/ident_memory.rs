@@ -38,12 +38,9 @@ fn record(code: &str) -> FitData {
     let mut y = Model::new(Structure::parse(code).unwrap(), truth)
         .simulate(&setup, &times)
         .unwrap();
-    let mut state = 7u64;
+    let mut rng = degrau_ident::random::Lcg(7);
     for v in y.iter_mut() {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        *v += 0.02 * (2.0 * (state >> 11) as f64 / (1u64 << 53) as f64 - 1.0);
+        *v += 0.02 * rng.symmetric();
     }
     FitData {
         times,
@@ -118,14 +115,11 @@ fn measured_file() -> std::path::PathBuf {
     let y = Model::new(Structure::parse("P1D").unwrap(), truth)
         .simulate(&truth_input, &times)
         .unwrap();
-    let mut state = 11u64;
+    let mut rng = degrau_ident::random::Lcg(11);
     let mut text = String::with_capacity(40 * MEASURED_SAMPLES);
     text.push_str("t,u,y\n");
     for (&t, y) in times.iter().zip(y) {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        let e = 0.02 * (2.0 * (state >> 11) as f64 / (1u64 << 53) as f64 - 1.0);
+        let e = 0.02 * rng.symmetric();
         let _ = writeln!(text, "{t},{},{:.6}", level(t), y + e);
     }
     let dir = std::env::temp_dir().join(format!("degrau-memory-{}", std::process::id()));

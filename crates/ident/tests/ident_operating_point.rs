@@ -85,15 +85,10 @@ impl Noise {
         }
     }
 
-    fn gaussian(&mut self) -> f64 {
-        let (a, b) = (1.0 - self.random.unit(), self.random.unit());
-        (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
-    }
-
     /// `y` as measured.
     fn read(&mut self, y: f64) -> f64 {
         let innovation = self.sigma * (1.0 - self.phi * self.phi).sqrt();
-        self.state = self.phi * self.state + innovation * self.gaussian();
+        self.state = self.phi * self.state + innovation * self.random.gaussian();
         let measured = y + self.state;
         if self.quantum > 0.0 {
             (measured / self.quantum).round() * self.quantum

@@ -22,15 +22,8 @@ const SCALES: [(f64, f64, f64); 8] = [
 
 /// A deterministic uniform noise in [−1, 1).
 fn noise(n: usize) -> Vec<f64> {
-    let mut state = 0x9E37_79B9_7F4A_7C15u64;
-    (0..n)
-        .map(|_| {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            2.0 * (state >> 11) as f64 / (1u64 << 53) as f64 - 1.0
-        })
-        .collect()
+    let mut rng = degrau_ident::random::Lcg(0x9E37_79B9_7F4A_7C15);
+    (0..n).map(|_| rng.symmetric()).collect()
 }
 
 fn values(pairs: &[(Param, f64)]) -> Values {

@@ -168,7 +168,7 @@ impl PrbsSettings {
         let mut rng = Lcg(self.seed);
         if noise_std > 0.0 {
             for v in &mut record.y {
-                *v += noise_std * prbs::gaussian(&mut rng);
+                *v += noise_std * rng.gaussian();
             }
         }
         Ok(Designed {

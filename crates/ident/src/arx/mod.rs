@@ -40,9 +40,10 @@ use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
 use super::excitation::{Excitation, Hold};
+use super::stats::mean;
 use degrau_lti::discrete::{DiscreteError, DiscreteTf};
 pub(crate) use units::Equilibrated;
-pub use units::{Cost, ROUNDING_LEVEL, fit_percent, mean};
+pub use units::{Cost, ROUNDING_LEVEL, fit_percent};
 
 /// One column of Φ.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -434,7 +435,7 @@ pub fn operating_point(time: &[f64], u: &[f64], y: &[f64], offset: Offset) -> (f
 
 /// The median sampling period of `time` (s), 1 when it has fewer than two samples.
 pub fn sampling_period(time: &[f64]) -> f64 {
-    super::prepare::sampling_period(time).unwrap_or(1.0)
+    crate::timebase::sampling_period(time).unwrap_or(1.0)
 }
 
 /// Φ and Y of an ARX model of `orders` on the record, in deviations from the operating point

@@ -24,29 +24,10 @@ use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
 use super::{LeastSquares, LsqError, Regression, Regressor};
+use crate::stats::{binary_unit, mean};
 
 /// J below this share of Σ(y − ȳ)² is at rounding level: the fit is exact.
 pub const ROUNDING_LEVEL: f64 = 1e-20;
-
-/// 2^⌊log₂ m⌋ for the largest finite magnitude m of `values`, within the normal range (1 when
-/// there is none or it is 0): dividing by it is exact.
-fn binary_unit(values: impl IntoIterator<Item = f64>) -> f64 {
-    let m = values
-        .into_iter()
-        .filter(|v| v.is_finite())
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    if m == 0.0 {
-        return 1.0;
-    }
-    let exponent = (m.log2().floor() as i64).clamp(-1022, 1023);
-    f64::from_bits(((exponent + 1023) as u64) << 52)
-}
-
-/// The mean of `v` (NaN when empty), without overflow at any scale.
-pub fn mean(v: &[f64]) -> f64 {
-    let unit = binary_unit(v.iter().copied());
-    unit * (v.iter().map(|x| x / unit).sum::<f64>() / v.len() as f64)
-}
 
 /// The Euclidean norm of `terms`, without overflow or underflow at any scale.
 fn norm(terms: &[f64]) -> f64 {

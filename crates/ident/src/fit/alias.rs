@@ -72,7 +72,7 @@ pub(super) fn alias_in(
 /// most 4 % of it, under the check's 10 %.
 pub(super) fn settled_within(model: &Model, ts: f64, len: usize) -> usize {
     let settled = model
-        .settling_time(0.02)
+        .settling()
         .filter(|t| t.is_finite() && *t > 0.0)
         .map(|t| (t / ts).ceil() + 2.0);
     match settled {

@@ -8,7 +8,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::setup::{CHUNK, FitData, FitError, bounds_with};
-use super::solver::{LeastSquares, Normal};
+use super::solver::{LeastSquaresProblem, Normal};
 use crate::models::{Model, ModelError, Param, Simulator, Structure, Values};
 use crate::random::Lcg;
 use crate::reduce::Reduction;
@@ -391,7 +391,7 @@ impl Problem {
 }
 
 /// The problem as its solvers see it.
-impl LeastSquares for Problem {
+impl LeastSquaresProblem for Problem {
     fn lower(&self) -> &[f64] {
         &self.lower
     }

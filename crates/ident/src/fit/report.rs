@@ -11,7 +11,7 @@ use nalgebra::DMatrix;
 
 use super::problem::{Column, Direction, Problem};
 use super::setup::{CHUNK, FitData, FitError, FitOptions, Method};
-use super::solver::{LeastSquares, Normal, Run, Termination};
+use super::solver::{LeastSquaresProblem, Normal, Run, Termination};
 use crate::lag_pair;
 use crate::models::Param;
 use crate::models::{Model, ModelError, Values};

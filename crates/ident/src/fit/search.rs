@@ -5,7 +5,7 @@
 use super::problem::Problem;
 use super::report::FitReport;
 use super::setup::{FitData, FitError, FitObserver, FitOptions, Method, Progress};
-use super::solver::{LeastSquares, Run, Termination, lm, nelder_mead};
+use super::solver::{LeastSquaresProblem, Run, Termination, lm, nelder_mead};
 use crate::models::{Structure, Values};
 use crate::reduce;
 

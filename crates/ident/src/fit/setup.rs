@@ -31,7 +31,7 @@ pub struct FitData {
 impl FitData {
     /// The median sampling period (s).
     pub fn sampling_period(&self) -> f64 {
-        crate::prepare::sampling_period(&self.times).unwrap_or(1.0)
+        crate::timebase::sampling_period(&self.times).unwrap_or(1.0)
     }
 
     /// The time interval `[a, b]` (s) cut to the record's span, [first sample, last

@@ -1,6 +1,6 @@
 use super::alias::settled_within;
 use super::problem::{Column, Direction, Problem};
-use super::solver::{LeastSquares, Normal};
+use super::solver::{LeastSquaresProblem, Normal};
 use super::*;
 use crate::excitation::Excitation;
 use crate::models::{Model, Param, Structure, Values};

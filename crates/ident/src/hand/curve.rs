@@ -103,7 +103,7 @@ impl Curve {
 
     /// The median sampling period after t0 (s).
     fn period(&self) -> f64 {
-        super::super::prepare::sampling_period(&self.times).unwrap_or(1.0)
+        crate::timebase::sampling_period(&self.times).unwrap_or(1.0)
     }
 
     fn choose_window(&self, y0: f64, y_final: f64) -> usize {

@@ -327,7 +327,7 @@ impl Record {
         let (first, last) = (self.t0(), times.last().copied().unwrap_or(0.0));
         let from = times.partition_point(|&t| t < last - 0.1 * (last - first));
         let tail = &self.data.y[from.min(self.data.y.len().saturating_sub(1))..];
-        super::guess::mean(tail)
+        crate::stats::mean(tail)
     }
 
     /// The record read for the constructions, with the student's levels.

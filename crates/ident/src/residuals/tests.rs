@@ -6,22 +6,19 @@ use crate::models::{Structure, Values};
 
 /// Deterministic pseudo-random numbers: a 64-bit LCG (Knuth's MMIX constants) and
 /// Box–Muller for normal deviates.
-struct Noise(u64);
+struct Noise(crate::random::Lcg);
 
 impl Noise {
+    /// Uniform in (0, 1): never 0, so that its logarithm is finite.
     fn unit(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((self.0 >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+        (self.0.bits() as f64 + 0.5) / (1u64 << 53) as f64
     }
     fn normal(&mut self) -> f64 {
         let (a, b) = (self.unit(), self.unit());
         (-2.0 * a.ln()).sqrt() * (2.0 * std::f64::consts::PI * b).cos()
     }
     fn series(seed: u64, n: usize, sigma: f64) -> Vec<f64> {
-        let mut g = Noise(seed);
+        let mut g = Noise(crate::random::Lcg(seed));
         (0..n).map(|_| sigma * g.normal()).collect()
     }
 }

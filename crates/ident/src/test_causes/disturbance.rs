@@ -25,7 +25,6 @@ use crate::drift_evidence::{Z_DRIFT, settled_slope_before};
 use crate::fit::{FitData, FitOptions, FitReport, search_fit};
 use crate::models::{Model, Param};
 use crate::stats::lag_one;
-use degrau_lti::StepInfoOptions;
 
 /// The least significance of a disturbance's size (z, correlation-corrected).
 pub const MIN_Z: f64 = 5.0;
@@ -316,7 +315,7 @@ pub fn settling(model: &Model) -> Option<f64> {
     if s.integrator {
         return None;
     }
-    let exact = model.settling_time(StepInfoOptions::default().settling_threshold);
+    let exact = model.settling();
     if let Some(ts) = exact.filter(|t| t.is_finite() && *t > 0.0) {
         return Some(ts);
     }

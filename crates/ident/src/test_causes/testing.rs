@@ -97,12 +97,6 @@ fn shape_at(shape: Shape, s: f64) -> f64 {
     }
 }
 
-/// Standard normal (Box–Muller).
-fn gaussian(rng: &mut Lcg) -> f64 {
-    let (a, b) = (rng.unit().max(1e-300), rng.unit());
-    (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
-}
-
 pub fn messy(m: Messy) -> MessyRecord {
     let mut rng = Lcg(m.seed);
     let times: Vec<f64> = (0..m.n)
@@ -138,7 +132,7 @@ pub fn messy(m: Messy) -> MessyRecord {
             x += (w - x) * (1.0 - (-dt / m.tau).exp());
             t += dt;
         }
-        let v = m.y0 + x + m.noise * effect * gaussian(&mut rng);
+        let v = m.y0 + x + m.noise * effect * rng.gaussian();
         y.push(m.quantum.map_or(v, |q| q * (v / q).round()));
     }
     let u: Vec<f64> = times.iter().map(|&t| input(t)).collect();

@@ -14,10 +14,3 @@ pub fn signed(rng: &mut Lcg, r: (f64, f64)) -> f64 {
     let s = if rng.unit() < 0.5 { -1.0 } else { 1.0 };
     s * range(rng, r)
 }
-
-/// A standard normal value (Box–Muller).
-pub fn gaussian(rng: &mut Lcg) -> f64 {
-    let u1 = 1.0 - rng.unit();
-    let u2 = rng.unit();
-    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-}

@@ -1,4 +1,4 @@
-//! Projected Levenberg–Marquardt on a bounded least-squares problem ([`LeastSquares`]):
+//! Projected Levenberg–Marquardt on a bounded least-squares problem ([`LeastSquaresProblem`]):
 //! damped Gauss–Newton steps on the free parameters, clipped to the box, a parameter at a
 //! bound with the descent pointing out of the box held there. Written here because the
 //! `levenberg-marquardt` crate has no bounds, and its usual workaround, a change of variables,
@@ -7,7 +7,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::{LeastSquares, Normal, Run, Termination};
+use super::{LeastSquaresProblem, Normal, Run, Termination};
 
 /// The most residuals a run keeps between its cost and its normal equations (two vectors of
 /// their length); a longer problem computes them again.
@@ -24,7 +24,7 @@ pub enum Stop {
 }
 
 /// Projected Levenberg–Marquardt from `x`.
-pub fn levenberg_marquardt<P: LeastSquares + ?Sized>(
+pub fn levenberg_marquardt<P: LeastSquaresProblem + ?Sized>(
     problem: &P,
     x: &[f64],
     max_iterations: usize,

@@ -1,5 +1,5 @@
 //! The solvers of a bounded nonlinear least-squares problem, apart from any model: minimise
-//! S(x) = Σ rᵢ(x)² over lower ≤ x ≤ upper. A problem ([`LeastSquares`]) gives its bounds, the
+//! S(x) = Σ rᵢ(x)² over lower ≤ x ≤ upper. A problem ([`LeastSquaresProblem`]) gives its bounds, the
 //! sum of squares and the normal equations of its linearisation; a solver knows nothing of
 //! records or process models (as the `levenberg-marquardt` crate keeps its `LeastSquaresProblem`
 //! apart from its solver).
@@ -52,7 +52,7 @@ pub struct Normal {
 
 /// A bounded nonlinear least-squares problem in p parameters: S(x) = Σ rᵢ(x)² with
 /// lower ≤ x ≤ upper.
-pub trait LeastSquares {
+pub trait LeastSquaresProblem {
     /// The lower bound of each parameter (−∞ for none).
     fn lower(&self) -> &[f64];
     /// The upper bound of each parameter (+∞ for none).

@@ -4,11 +4,11 @@
 //! Levenberg–Marquardt does; `argmin` would add its trait machinery for sixty lines of
 //! algorithm.
 
-use super::{LeastSquares, Run, Termination};
+use super::{LeastSquaresProblem, Run, Termination};
 
 /// Bounded Nelder–Mead on the sum of squares from `x` (fminsearch's simplex and
 /// coefficients).
-pub fn nelder_mead<P: LeastSquares + ?Sized>(
+pub fn nelder_mead<P: LeastSquaresProblem + ?Sized>(
     problem: &P,
     x: &[f64],
     max_iterations: usize,

@@ -8,7 +8,7 @@ use nalgebra::{DMatrix, DVector};
 
 use super::lm::{Stop, levenberg_marquardt};
 use super::nelder_mead::nelder_mead;
-use super::{LeastSquares, Normal, Termination};
+use super::{LeastSquaresProblem, Normal, Termination};
 
 struct Rosenbrock {
     lower: Vec<f64>,
@@ -30,7 +30,7 @@ impl Rosenbrock {
     }
 }
 
-impl LeastSquares for Rosenbrock {
+impl LeastSquaresProblem for Rosenbrock {
     fn lower(&self) -> &[f64] {
         &self.lower
     }
