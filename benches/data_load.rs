@@ -13,7 +13,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use degrau::ident::data::{LoadOptions, load_file, load_str};
+use degrau::ident::record::data::{LoadOptions, load_file, load_str};
 
 const ROWS: u32 = 1_000_000;
 

@@ -10,10 +10,10 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use degrau::ident::diagnose::{DiagnoseOptions, diagnose};
-use degrau::ident::excitation::Excitation;
 use degrau::ident::fit::FitData;
-use degrau::ident::guess::auto_guess;
-use degrau::ident::models::{Param, Structure};
+use degrau::ident::fit::guess::auto_guess;
+use degrau::ident::model::excitation::Excitation;
+use degrau::ident::model::{Param, Structure};
 use std::time::Instant;
 
 mod common;

@@ -10,10 +10,10 @@
 //! when present (it took 110 s).
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use degrau::ident::excitation::Excitation;
+use degrau::ident::fit::guess::auto_guess;
 use degrau::ident::fit::{FitData, FitOptions, fit, search_fit};
-use degrau::ident::guess::auto_guess;
-use degrau::ident::models::{Param, Structure};
+use degrau::ident::model::excitation::Excitation;
+use degrau::ident::model::{Param, Structure};
 use std::time::Instant;
 
 mod common;

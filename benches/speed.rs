@@ -15,12 +15,12 @@
 //! (`Instant`), not criterion: each figure is a whole fit or diagnosis of seconds, and the
 //! ratios are what is read.
 
-use degrau::ident::data::{LoadOptions, load_file};
 use degrau::ident::diagnose::{DiagnoseOptions, diagnose};
-use degrau::ident::excitation::{Excitation, Hold};
 use degrau::ident::experiment::Experiment;
 use degrau::ident::fit::{FitData, FitOptions};
-use degrau::ident::models::{Model, Param, Structure, Values};
+use degrau::ident::model::excitation::{Excitation, Hold};
+use degrau::ident::model::{Model, Param, Structure, Values};
+use degrau::ident::record::data::{LoadOptions, load_file};
 
 mod common;
 mod timing;
@@ -125,7 +125,7 @@ fn scale() {
     let p1 = Structure::parse("P1").expect("a code");
     for n in [1_000, 10_000, 100_000, 1_000_000] {
         let data = scale_record(n);
-        let guess = degrau::ident::guess::auto_guess(&data, p1d, None);
+        let guess = degrau::ident::fit::guess::auto_guess(&data, p1d, None);
         let runs = if n >= 1_000_000 { 2 } else { 3 };
         let fit = best_of(runs, || {
             degrau::ident::fit::fit(&data, p1d, guess, &FitOptions::default(), &mut ()).ok()

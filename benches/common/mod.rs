@@ -1,8 +1,8 @@
 //! Test data shared by the benches: a simulated step test with deterministic noise.
 
-use degrau::ident::excitation::Excitation;
 use degrau::ident::fit::FitData;
-use degrau::ident::models::{Model, Param, Structure, Values};
+use degrau::ident::model::excitation::Excitation;
+use degrau::ident::model::{Model, Param, Structure, Values};
 
 /// 800 samples (Ts = 0.25 s) of the model `code` with `truth`, plus uniform noise of
 /// peak-to-peak `noise` from a small LCG seeded with `seed`.
@@ -48,7 +48,7 @@ pub const LOGGER_TRUTH: [(Param, f64); 4] = [
 /// (about 1 % of the effect of a step).
 #[allow(dead_code)]
 pub fn logger_80k() -> FitData {
-    use degrau::ident::excitation::Hold;
+    use degrau::ident::model::excitation::Hold;
     let times: Vec<f64> = (0..80_000).map(|k| 1e-3 * k as f64).collect();
     let levels = [(5.0, 4.0), (25.0, 1.0), (45.0, 3.5), (62.0, 2.5)];
     let u: Vec<f64> = times
@@ -134,8 +134,8 @@ pub fn extruder(
     path: &std::path::Path,
     code: &str,
 ) -> Result<(FitData, Structure, Values), String> {
-    use degrau::ident::data::{LoadOptions, load_file};
     use degrau::ident::experiment::Experiment;
+    use degrau::ident::record::data::{LoadOptions, load_file};
     let options = LoadOptions::from_text("Timestamp", "Data", "entrada", None, 0);
     let test = load_file(path, &options).map_err(|e| e.to_string())?;
     let experiment = Experiment::new(&test, None, None, None).map_err(|e| e.to_string())?;

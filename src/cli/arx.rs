@@ -9,12 +9,12 @@ use std::process::ExitCode;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 
-use crate::ident::arx::{
+use crate::ident::lsq::arx::{
     ArxModel, ArxOrders, Candidate, LeastSquares, LsqError, Offset, Regression, Scores, arx,
     default_grid, select_orders,
 };
-use crate::ident::prbs::PrbsError;
-use crate::ident::validation::{ArxValidation, Split, score_arx, split_index};
+use crate::ident::lsq::prbs::PrbsError;
+use crate::ident::lsq::validation::{ArxValidation, Split, score_arx, split_index};
 use crate::lti::discrete::DiscreteError;
 use crate::text::cli::StepPhrase;
 use crate::text::lsq::{LsqPhrase, parameter_name, percent};

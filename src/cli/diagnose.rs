@@ -8,11 +8,11 @@ use std::io::{self, Write};
 use clap::Args;
 use serde::Serialize;
 
+use crate::ident::diagnose::per_step::StepFit;
+use crate::ident::diagnose::test_causes::{Handling, TestCause, TestEvidence};
 use crate::ident::diagnose::{DiagnoseOptions, DiagnoseReport, Gain, diagnose};
-use crate::ident::excitation::Excitation;
-use crate::ident::models::{Param, Values};
-use crate::ident::per_step::StepFit;
-use crate::ident::test_causes::{Handling, TestCause, TestEvidence};
+use crate::ident::model::excitation::Excitation;
+use crate::ident::model::{Param, Values};
 
 use crate::text::{Lang, Localize};
 

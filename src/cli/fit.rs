@@ -9,12 +9,12 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 
-use crate::ident::data::{self, LoadOptions, StepTest};
-use crate::ident::excitation::{Excitation, Hold};
+use crate::ident::diagnose::per_step::{MAX_PER_STEP, StepFit, per_step_fits};
 use crate::ident::experiment::{Drive, Experiment, ExperimentError, Offset, OperatingPoint};
 use crate::ident::fit::{FitData, FitOptions, FitReport, Method};
-use crate::ident::models::{Param, Structure};
-use crate::ident::per_step::{MAX_PER_STEP, StepFit, per_step_fits};
+use crate::ident::model::excitation::{Excitation, Hold};
+use crate::ident::model::{Param, Structure};
+use crate::ident::record::data::{self, LoadOptions, StepTest};
 use crate::text::{Lang, Localize};
 
 use super::{CliError, finite_f64};
@@ -245,7 +245,7 @@ impl DataArgs {
         // The input's file: its value column is read as that file's "output".
         let values = LoadOptions::from_text("", &text(&self.u_col), "none", self.ts, 0);
         let input = load(u_file, &values)?;
-        crate::ident::join::join_on_time(test, &input).map_err(|error| CliError::Data {
+        crate::ident::record::join::join_on_time(test, &input).map_err(|error| CliError::Data {
             path: u_file.display().to_string(),
             error,
         })
@@ -257,16 +257,16 @@ impl DataArgs {
         let mut test = self.read()?;
         if let Some(window) = self.window.as_deref() {
             let (start, end) = parse_window(window)?;
-            test = crate::ident::prepare::apply_window(
+            test = crate::ident::record::prepare::apply_window(
                 &test,
-                crate::ident::prepare::Window::Time { start, end },
+                crate::ident::record::prepare::Window::Time { start, end },
             )
             .map_err(ExperimentError::from)?;
         }
         if let Some(fc) = self.filter {
-            let ts = crate::ident::timebase::sampling_period(&test.time).unwrap_or(1.0);
-            let filter =
-                crate::ident::prepare::Ewma::try_new(fc, ts).map_err(ExperimentError::from)?;
+            let ts = crate::ident::record::timebase::sampling_period(&test.time).unwrap_or(1.0);
+            let filter = crate::ident::record::prepare::Ewma::try_new(fc, ts)
+                .map_err(ExperimentError::from)?;
             test.output = filter.apply(&test.output);
         }
         Ok(test)

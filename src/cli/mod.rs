@@ -32,9 +32,9 @@ pub use report::*;
 use clap::{Args, Parser, Subcommand};
 use serde::{Deserialize, Serialize};
 
-use crate::ident::data::DataError;
 use crate::ident::experiment::ExperimentError;
 use crate::ident::fit::FitError;
+use crate::ident::record::data::DataError;
 use crate::lti::expr::{OscillationForm, expression};
 use crate::lti::feedback::{Input, InputResponse};
 use crate::lti::number::format_number;

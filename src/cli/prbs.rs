@@ -10,8 +10,8 @@ use std::io::{self, Write};
 use clap::Args;
 use serde::Serialize;
 
-use crate::ident::models::{Model, Structure, Values};
-use crate::ident::prbs::{Prbs, sample_times, simulate_record, taps, to_csv};
+use crate::ident::lsq::prbs::{Prbs, sample_times, simulate_record, taps, to_csv};
+use crate::ident::model::{Model, Structure, Values};
 use crate::text::Lang;
 
 use super::CliError;

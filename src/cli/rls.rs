@@ -9,9 +9,9 @@ use std::io::{self, Write};
 use clap::Args;
 use serde::Serialize;
 
-use crate::ident::arx::Offset;
-use crate::ident::rls::{RlsOptions, rls_arx};
-use crate::ident::validation::score_arx;
+use crate::ident::lsq::arx::Offset;
+use crate::ident::lsq::rls::{RlsOptions, rls_arx};
+use crate::ident::lsq::validation::score_arx;
 use crate::text::Lang;
 use crate::text::lsq::LsqPhrase;
 

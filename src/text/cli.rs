@@ -6,8 +6,8 @@
 
 use crate::cli::CliError;
 use crate::cli::fit::StartsError;
-use crate::ident::data::{Columns, DataError};
 use crate::ident::fit::MAX_STARTS;
+use crate::ident::record::data::{Columns, DataError};
 use crate::lti::Behaviour;
 use crate::lti::parse::ParseError;
 use crate::lti::tf::Stability;
@@ -358,9 +358,9 @@ impl Localize for CliError {
 /// An example of every [`CliError`] variant. No wildcard in [`cli_error_id`]: a new variant
 /// does not compile until it is named there, and a test counts the examples.
 fn cli_errors() -> Vec<CliError> {
-    use crate::ident::data::DataError;
     use crate::ident::experiment::ExperimentError;
     use crate::ident::fit::FitError;
+    use crate::ident::record::data::DataError;
     let io = || std::io::Error::other("disk full");
     vec![
         CliError::Parse {

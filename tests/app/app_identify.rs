@@ -11,7 +11,7 @@ use degrau::app::DegrauApp;
 use degrau::app::identify::IdentSettings;
 use degrau::app::identify::commands::{CodeKind, Command, OffsetChoice};
 use degrau::app::identify::session::{Shown, Status};
-use degrau::ident::models::Param;
+use degrau::ident::model::Param;
 use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -337,7 +337,7 @@ fn fit_and_wait(h: &mut Harness<'_, DegrauApp>) {
 
 /// The model curve the session should draw for the model `m` over the fit data's span, as
 /// an independent simulation on the same fine grid.
-fn expected_curve(app: &DegrauApp, m: &degrau::ident::models::Model) -> Vec<[f64; 2]> {
+fn expected_curve(app: &DegrauApp, m: &degrau::ident::model::Model) -> Vec<[f64; 2]> {
     let plots = app.ident.plots();
     let times: Vec<f64> = plots.model.iter().map(|p| p[0]).collect();
     let setup = app.ident.setup().expect("fit data");
@@ -377,7 +377,7 @@ fn a_new_record_drops_the_old_curve_and_status() {
     );
     assert!(h.query_by_label("Fitted P2DU").is_none());
     let l = app.ident.loaded.as_ref().unwrap();
-    let guess = degrau::ident::models::Model::new(l.structure, l.guess);
+    let guess = degrau::ident::model::Model::new(l.structure, l.guess);
     assert_ne!(guess, leci);
     assert_eq!(app.ident.shown().map(|s| s.1), Some(Shown::Guess));
     assert_same_curve(&app.ident.plots().model, &expected_curve(app, &guess));

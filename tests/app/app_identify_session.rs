@@ -6,7 +6,7 @@ use std::time::{Duration, Instant};
 use degrau::app::identify::Session;
 use degrau::app::identify::commands::{Choice, Command, Outcome};
 use degrau::app::identify::session::{LoadError, LoadMessage, Shown, Status};
-use degrau::ident::models::Param;
+use degrau::ident::model::Param;
 
 const TCLAB: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),

@@ -9,7 +9,7 @@ use kit::load;
 use degrau::app::DegrauApp;
 use degrau::app::lsq::Command;
 use degrau::app::lsq::designer::PrbsSettings;
-use degrau::ident::arx::{ArxOrders, operating_point};
+use degrau::ident::lsq::arx::{ArxOrders, operating_point};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
@@ -210,7 +210,7 @@ fn noise_free_prbs(h: &mut Harness<'static, DegrauApp>) {
 }
 
 /// The record the PRBS tab designed.
-fn designed(h: &Harness<'static, DegrauApp>) -> degrau::ident::prbs::Record {
+fn designed(h: &Harness<'static, DegrauApp>) -> degrau::ident::lsq::prbs::Record {
     match &h.state().lsq.designed {
         Some(Ok(d)) => d.record.clone(),
         other => panic!("no PRBS designed: {other:?}"),

@@ -10,7 +10,7 @@ use kit::{load, wait_for};
 use degrau::app::DegrauApp;
 use degrau::app::identify::commands::Command;
 use degrau::app::identify::plot::{input_plot_id, main_plot_id};
-use degrau::ident::models::Param;
+use degrau::ident::model::Param;
 use eframe::egui;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;

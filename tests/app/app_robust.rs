@@ -363,8 +363,8 @@ fn shown_structure(h: &Harness<'_, DegrauApp>) -> Vec<String> {
 /// guess), an underdamped response on P2DU; `--model` still wins.
 #[test]
 fn a_record_opened_without_a_model_starts_on_the_structure_its_shape_suggests() {
-    use degrau::ident::excitation::Excitation;
-    use degrau::ident::models::{Model, Param, Structure, Values};
+    use degrau::ident::model::excitation::Excitation;
+    use degrau::ident::model::{Model, Param, Structure, Values};
     let dir = temp_dir("suggested");
     let state = dir.join(FILE_NAME);
     let records = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/records/");
@@ -424,7 +424,7 @@ fn every_structure() -> Vec<String> {
                     code.push(letter);
                 }
             }
-            if degrau::ident::models::Structure::parse(&code).is_ok() {
+            if degrau::ident::model::Structure::parse(&code).is_ok() {
                 codes.push(code);
             }
         }

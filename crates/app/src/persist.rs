@@ -30,7 +30,7 @@ use super::identify::IdentSettings;
 use super::look::clamp_scale;
 use degrau_ident::experiment::{Experiment, Offset};
 use degrau_ident::fit::MAX_STARTS;
-use degrau_ident::models::Structure;
+use degrau_ident::model::Structure;
 
 /// The environment variable naming the directory of the state file (tests use a temporary
 /// one).

@@ -12,18 +12,18 @@ use std::borrow::Cow;
 
 use serde::{Deserialize, Serialize};
 
-use super::data::StepTest;
-use super::excitation::Excitation;
-use super::excitation::Hold;
-use super::fit::{FitData, FitError, FitObserver, FitOptions, FitReport, fit};
-use super::guess::auto_guess;
-use super::models::{ModelError, Param, Structure, Values};
-use super::prepare;
+use crate::fit::guess::auto_guess;
+use crate::fit::{FitData, FitError, FitObserver, FitOptions, FitReport, fit};
+use crate::model::excitation::Excitation;
+use crate::model::excitation::Hold;
+use crate::model::{ModelError, Param, Structure, Values};
+use crate::record::data::StepTest;
+use crate::record::prepare;
 
 /// What to do with the output before the step, y0 (procest's offset).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum Offset {
-    /// Held at the measured level before the step (see [`super::guess::rest_level`]);
+    /// Held at the measured level before the step (see [`crate::fit::guess::rest_level`]);
     /// estimated only when no sample shows it.
     Auto,
     /// Estimated with the other parameters.
@@ -59,7 +59,7 @@ pub enum OperatingPoint {
 pub const MIN_REST_SAMPLES: usize = 20;
 
 /// Whether the first `samples` outputs (at least two) are all equal, or all within one
-/// quantum on a quantised record ([`super::test_causes::resolution`]): a level that does not
+/// quantum on a quantised record ([`crate::diagnose::test_causes::resolution`]): a level that does not
 /// move is the operating point however few samples show it, and Y0 is held there even under
 /// [`MIN_REST_SAMPLES`].
 fn level_at_rest(data: &FitData, samples: usize) -> bool {
@@ -73,7 +73,8 @@ fn level_at_rest(data: &FitData, samples: usize) -> bool {
         });
     let spread = hi - lo;
     spread == 0.0
-        || super::test_causes::resolution(&data.y).is_some_and(|q| spread <= q * (1.0 + 1e-9))
+        || crate::diagnose::test_causes::resolution(&data.y)
+            .is_some_and(|q| spread <= q * (1.0 + 1e-9))
 }
 
 /// Why Y0 is estimated rather than held.
@@ -92,7 +93,7 @@ pub enum EstimateReason {
     /// that are all equal (or within one quantum) hold Y0 however few: they do not creep.
     ShortRest,
     /// [`Offset::Auto`], but the output still moved before the first change
-    /// ([`super::rest::Rest::NotAtRest`]): no level was at rest, and an initial transient is
+    /// ([`crate::fit::rest::Rest::NotAtRest`]): no level was at rest, and an initial transient is
     /// estimated with it.
     NotAtRest,
 }
@@ -229,7 +230,7 @@ impl Experiment {
         };
         let mut y = kept.output.clone();
         if let Some(fc) = self.filter_hz {
-            let ts = crate::timebase::sampling_period(&kept.time).unwrap_or(1.0);
+            let ts = crate::record::timebase::sampling_period(&kept.time).unwrap_or(1.0);
             y = prepare::Ewma::try_new(fc, ts)?.apply(&y);
         }
         let input = self.input(test)?;
@@ -261,12 +262,12 @@ impl Experiment {
             Offset::Free => OperatingPoint::Estimated {
                 reason: EstimateReason::Asked,
             },
-            Offset::Auto if super::rest::rest_before(data).is_not_at_rest() => {
+            Offset::Auto if crate::fit::rest::rest_before(data).is_not_at_rest() => {
                 OperatingPoint::Estimated {
                     reason: EstimateReason::NotAtRest,
                 }
             }
-            Offset::Auto => match super::guess::rest_level(data) {
+            Offset::Auto => match crate::fit::guess::rest_level(data) {
                 Some(rest)
                     if data.input.is_multi_step()
                         && rest.samples < MIN_REST_SAMPLES
@@ -306,7 +307,7 @@ impl Experiment {
         s.drift = drift;
         s.lead = data.input.lead_range > 0.0;
         s.transient =
-            self.offset == Offset::Auto && super::rest::rest_before(data).is_not_at_rest();
+            self.offset == Offset::Auto && crate::fit::rest::rest_before(data).is_not_at_rest();
         Ok(s)
     }
 

@@ -5,38 +5,24 @@
 //!
 //! Pure: it stands on `degrau-lti` and `degrau-words` and knows nothing of the GUI or the
 //! command line (Cargo keeps it so: no egui, eframe, rfd or clap among its dependencies).
+//!
+//! Its modules are the stages a record goes through, each importing only the ones before it:
+//! [`record`] (loading, the time base, preparation) → [`model`] (the procest structures,
+//! the input as the model sees it, internal units) → [`fit`] (the least-squares problem,
+//! its solvers, the multi-start search, the report; rest, guesses, dragged handles, robust
+//! fits) → [`diagnose`] (the loop, its causes and rules, the test's own flaws, residuals,
+//! hold-out) → [`experiment`] (a record and a student's choices, fitted); beside them
+//! [`hand`] (the notes' graphical methods) and [`lsq`] (ARX, RLS, PRBS, validation), on the
+//! shared ground of [`stats`] and [`random`].
 
-pub mod arx;
-pub mod data;
 pub mod diagnose;
-pub mod drift_evidence;
-pub mod excitation;
 pub mod experiment;
 pub mod fit;
-pub mod guess;
 pub mod hand;
-pub mod handles;
-pub mod holdout;
-pub mod join;
-pub mod lag_pair;
-pub mod landscape;
-pub mod models;
+pub mod lsq;
+pub mod model;
 mod parallel;
-pub mod per_step;
-pub mod prbs;
-pub mod prepare;
 pub mod random;
-pub mod reduce;
-pub mod residuals;
-pub mod rest;
-pub mod rls;
-pub mod robust;
-pub mod scale;
-pub mod staircase;
+pub mod record;
 pub mod stats;
-pub mod test_causes;
-pub mod timebase;
-pub mod tracker;
-mod transient;
-pub mod validation;
 pub mod words;

@@ -3,6 +3,10 @@
 //! normal and Student-t distributions. Written here because they are a few lines each and a
 //! statistics crate would add a second linear-algebra stack to the build.
 
+/// The fewest robust standard deviations beyond which a sample is an outlier (the
+/// outliers cause's rule, and the rest level's before it averages).
+pub const OUTLIER_THRESHOLD: f64 = 5.0;
+
 /// 2^⌊log₂ m⌋ for the largest finite magnitude m of `values`, within the normal range (1 when
 /// there is none or it is 0): dividing by it is exact.
 pub(crate) fn binary_unit(values: impl IntoIterator<Item = f64>) -> f64 {

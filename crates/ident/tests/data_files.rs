@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::Duration;
 
-use degrau_ident::data::{
+use degrau_ident::record::data::{
     ColumnChoice, DataError, FileKind, LoadOptions, MAX_FILE_BYTES, StepTest, load_file, load_str,
 };
 use degrau_words::{Lang, Localize};

@@ -11,7 +11,7 @@ use std::collections::BTreeMap;
 
 use degrau_ident::random::Lcg;
 
-use degrau_ident::data::{
+use degrau_ident::record::data::{
     ColumnChoice, DataError, LoadOptions, MIN_SAMPLES, StepTest, from_columns, load_bytes,
 };
 

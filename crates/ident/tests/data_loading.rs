@@ -4,11 +4,13 @@
 //! the same format: see its SOURCES.md), random bytes and lines, 10⁶ rows, and the measured step
 //! characteristics of the LECI test of the notes.
 
-use degrau_ident::data::{
+use degrau_ident::record::data::{
     ColumnChoice, DataError, LoadOptions, Role, StepTest, from_columns, load_bytes, load_file,
     load_str,
 };
-use degrau_ident::prepare::{detect_step, final_level, measured_step_info, operating_point};
+use degrau_ident::record::prepare::{
+    detect_step, final_level, measured_step_info, operating_point,
+};
 use degrau_lti::StepInfoOptions;
 use degrau_words::{Lang, Localize};
 use proptest::prelude::*;

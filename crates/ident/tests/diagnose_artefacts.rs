@@ -49,12 +49,12 @@ use draw::{range, signed};
 
 use std::sync::OnceLock;
 
+use degrau_ident::diagnose::test_causes::{TestCauseKind, TestEvidence};
 use degrau_ident::diagnose::{DiagnoseOptions, DiagnoseReport, diagnose};
-use degrau_ident::excitation::{Excitation, Hold, InputStep};
 use degrau_ident::fit::{FitData, FitReport};
-use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::model::excitation::{Excitation, Hold, InputStep};
+use degrau_ident::model::{Model, Param, Structure, Values};
 use degrau_ident::random::Lcg;
-use degrau_ident::test_causes::{TestCauseKind, TestEvidence};
 
 /// Cases per artefact.
 const CASES: usize = 20;

@@ -29,16 +29,16 @@ use crate::draw;
 use crate::records;
 use draw::{range, signed};
 
-use degrau_ident::data::{LoadOptions, load_file};
+use degrau_ident::diagnose::test_causes::closed_loop::closed_loop;
+use degrau_ident::diagnose::test_causes::{FittedRecord, TestCauseKind, TestEvidence};
 use degrau_ident::diagnose::{DiagnoseOptions, diagnose};
-use degrau_ident::excitation::{Excitation, Hold};
 use degrau_ident::experiment::Experiment;
+use degrau_ident::fit::guess::auto_guess;
 use degrau_ident::fit::{FitData, FitReport, fit};
-use degrau_ident::guess::auto_guess;
-use degrau_ident::models::Structure;
+use degrau_ident::model::Structure;
+use degrau_ident::model::excitation::{Excitation, Hold};
 use degrau_ident::random::Lcg;
-use degrau_ident::test_causes::closed_loop::closed_loop;
-use degrau_ident::test_causes::{FittedRecord, TestCauseKind, TestEvidence};
+use degrau_ident::record::data::{LoadOptions, load_file};
 
 /// Closed-loop cases (every combination of plant, controller, excitation and noise three
 /// times).

@@ -28,14 +28,14 @@
 //! Run with `cargo test --test diagnose_generator -- --nocapture` to see the figures, with
 //! `DEGRAU_DIAGNOSE_CASES=40` for more cases per effect.
 
-use degrau_ident::excitation::{Excitation, Hold};
+use degrau_ident::model::excitation::{Excitation, Hold};
 use std::sync::OnceLock;
 use std::time::Instant;
 
 use degrau_ident::diagnose::{Cause, DiagnoseOptions, DiagnoseReport, diagnose};
+use degrau_ident::fit::guess::auto_guess;
 use degrau_ident::fit::{FitData, FitOptions, fit};
-use degrau_ident::guess::auto_guess;
-use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::model::{Model, Param, Structure, Values};
 
 // ---------------------------------------------------------------------------------------------
 // Acceptance numbers

@@ -55,12 +55,12 @@
 
 use std::time::Instant;
 
+use degrau_ident::diagnose::test_causes::TestCauseKind;
 use degrau_ident::diagnose::{Cause, DiagnoseOptions, DiagnoseReport, diagnose};
-use degrau_ident::excitation::{Excitation, Hold};
 use degrau_ident::fit::{FitData, FitOptions, fit};
-use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::model::excitation::{Excitation, Hold};
+use degrau_ident::model::{Model, Param, Structure, Values};
 use degrau_ident::random::Lcg;
-use degrau_ident::test_causes::TestCauseKind;
 
 /// Cases per kind.
 const CASES: usize = 20;

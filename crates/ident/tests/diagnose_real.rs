@@ -12,13 +12,13 @@ use crate::records;
 
 use std::path::PathBuf;
 
-use degrau_ident::data::{LoadOptions, load_file};
+use degrau_ident::diagnose::test_causes::{TestCauseKind, TestEvidence};
 use degrau_ident::diagnose::{DiagnoseOptions, DiagnoseReport, diagnose};
 use degrau_ident::experiment::Experiment;
 use degrau_ident::fit::{FitData, FitOptions, fit};
-use degrau_ident::models::{Param, Values};
+use degrau_ident::model::{Param, Values};
+use degrau_ident::record::data::{LoadOptions, load_file};
 use degrau_ident::stats::median;
-use degrau_ident::test_causes::{TestCauseKind, TestEvidence};
 
 fn record(name: &str) -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
@@ -152,7 +152,7 @@ fn daisy_heating_names_nonlinearity_with_its_per_step_gains() {
     // is told: the samples from 400 s on are left out of the fit).
     assert_eq!(
         cause.handling,
-        degrau_ident::test_causes::Handling::Excluded {
+        degrau_ident::diagnose::test_causes::Handling::Excluded {
             start: 400.0,
             end: 1600.0
         }
@@ -258,7 +258,7 @@ fn each_real_record_suggests_the_structure_its_shape_shows() {
         let test = load_file(records::path(name), &options).expect("the record loads");
         let experiment = Experiment::new(&test, None, None, initial).expect("a step");
         let data = experiment.fit_data(&test).expect("fit data");
-        let code = degrau_ident::guess::suggested_structure(&data).code();
+        let code = degrau_ident::fit::guess::suggested_structure(&data).code();
         let ringing = name.starts_with("rlc_") || name.starts_with("pendulum_");
         assert_eq!(code, if ringing { "P2DU" } else { "P1D" }, "{name}");
     }

@@ -4,16 +4,16 @@
 //! simulated exactly (the measured input held between samples through
 //! `Excitation::measured` + `Model::simulate`), far from zero, some with noise.
 
-use degrau_ident::arx::{
+use degrau_ident::fit::{FitData, FitOptions};
+use degrau_ident::lsq::arx::{
     ArxOrders, LsqError, Offset, Regressor, Start, arx, default_grid, least_squares, regression,
     select_orders,
 };
-use degrau_ident::fit::{FitData, FitOptions};
-use degrau_ident::models::{Model, Param, Structure, Values};
-use degrau_ident::prbs::{Prbs, simulate_record, to_csv};
+use degrau_ident::lsq::prbs::{Prbs, simulate_record, to_csv};
+use degrau_ident::lsq::rls::{RlsOptions, rls_arx, run};
+use degrau_ident::lsq::validation::{Split, validate_arx, validate_continuous, validate_rls};
+use degrau_ident::model::{Model, Param, Structure, Values};
 use degrau_ident::random::Lcg;
-use degrau_ident::rls::{RlsOptions, rls_arx, run};
-use degrau_ident::validation::{Split, validate_arx, validate_continuous, validate_rls};
 use degrau_lti::discrete::c2d;
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
@@ -369,7 +369,7 @@ fn validation_of_the_continuous_fit_simulates_across_the_split() {
     let h = 0.25;
     let u = prbs(6, 8, 0.0, 2.0, 400);
     let rec = simulate_record(&truth, &u, h, 0.0, 1).unwrap();
-    let test = degrau_ident::data::StepTest {
+    let test = degrau_ident::record::data::StepTest {
         time: rec.time.clone(),
         output: rec.y.clone(),
         input: Some(rec.u.clone()),
@@ -469,7 +469,7 @@ fn gaussian_noise_has_unit_spread() {
 
 /// The README's PRBS record (a P1D at y ≈ 20 with θ = 3 samples, two periods of 127 bits of 3
 /// samples between 40 and 60, h = 0.5 s), with output noise `noise`.
-fn readme_record(noise: f64) -> degrau_ident::prbs::Record {
+fn readme_record(noise: f64) -> degrau_ident::lsq::prbs::Record {
     let truth = model(
         "P1D",
         &[
@@ -500,7 +500,7 @@ struct Answers {
     best: (ArxOrders, bool),
 }
 
-fn answers(rec: &degrau_ident::prbs::Record, k: i32) -> Answers {
+fn answers(rec: &degrau_ident::lsq::prbs::Record, k: i32) -> Answers {
     let scale = 10f64.powi(k);
     let u: Vec<f64> = rec.u.iter().map(|v| v * scale).collect();
     let y: Vec<f64> = rec.y.iter().map(|v| v * scale).collect();

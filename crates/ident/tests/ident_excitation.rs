@@ -32,13 +32,13 @@
 //!
 //! Run with `cargo test --test ident_excitation -- --nocapture` to see the rates.
 
-use degrau_ident::data::StepTest;
 use degrau_ident::diagnose::{Cause, DiagnoseOptions, diagnose};
-use degrau_ident::excitation::{Excitation, Hold, InputStep};
 use degrau_ident::experiment::Experiment;
 use degrau_ident::fit::FitOptions;
-use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::model::excitation::{Excitation, Hold, InputStep};
+use degrau_ident::model::{Model, Param, Structure, Values};
 use degrau_ident::random::Lcg;
+use degrau_ident::record::data::StepTest;
 
 /// Fraction of the generated records whose every parameter must be recovered.
 const MIN_RECOVERED: f64 = 0.95;

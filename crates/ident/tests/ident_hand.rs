@@ -4,12 +4,12 @@
 //! SOPTD records across the notes' damping range, noisy and quantised records, and the
 //! typed refusals.
 
-use degrau_ident::excitation::{Excitation, Hold};
 use degrau_ident::fit::FitData;
 use degrau_ident::hand::{
     DeadTimeFrom, HandError, HandEstimate, HandMethod, HandWarning, Overrides, Record, estimate,
     estimate_all,
 };
+use degrau_ident::model::excitation::{Excitation, Hold};
 use degrau_ident::random::Lcg;
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
@@ -431,7 +431,7 @@ fn the_tclab_copy_gives_every_method() {
         "/tests/data/records/tclab_step_q1_50_synthetic.csv"
     ))
     .unwrap();
-    let test = degrau_ident::data::load_str(&text, &Default::default()).unwrap();
+    let test = degrau_ident::record::data::load_str(&text, &Default::default()).unwrap();
     let u = test.input.clone().unwrap();
     let input = Excitation::measured(&test.time, &u, None, Hold::Zoh).unwrap();
     let data = FitData {

@@ -1,10 +1,10 @@
 //! The LECI step test of the notes (Tôrres): P2DU from the automatic guess and from the
 //! notes' bad guess, against the notes' answer Gdc 1.0021, θ 1.759 s, ζ 0.1948, ωn 0.9659.
 
-use degrau_ident::excitation::Excitation;
+use degrau_ident::fit::guess::auto_guess;
 use degrau_ident::fit::{FitData, FitOptions, FitWarning, Method, fit};
-use degrau_ident::guess::auto_guess;
-use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::model::excitation::Excitation;
+use degrau_ident::model::{Model, Param, Structure, Values};
 
 fn leci() -> FitData {
     let text = std::fs::read_to_string(concat!(

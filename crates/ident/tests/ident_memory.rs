@@ -8,17 +8,17 @@
 //! `cargo test --release --test ident_memory -- --ignored --nocapture measured` under
 //! `/usr/bin/time -v`.
 
-use degrau_ident::excitation::Excitation;
+use degrau_ident::model::excitation::Excitation;
 use std::time::Instant;
 
+use degrau_ident::fit::guess::auto_guess;
 use degrau_ident::fit::{FitData, FitOptions, fit};
-use degrau_ident::guess::auto_guess;
-use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::model::{Model, Param, Structure, Values};
 
-use degrau_ident::data::{LoadOptions, load_file};
 use degrau_ident::diagnose::{DiagnoseOptions, diagnose};
-use degrau_ident::excitation::Hold;
 use degrau_ident::experiment::Experiment;
+use degrau_ident::model::excitation::Hold;
+use degrau_ident::record::data::{LoadOptions, load_file};
 use std::fmt::Write as _;
 
 const SAMPLES: usize = 5_000_000;

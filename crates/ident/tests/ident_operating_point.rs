@@ -7,11 +7,11 @@
 //! first sample of a record that starts with it (the input before given). The TCLab records
 //! in `tests/data/records` close the loop on the logs that raised the issue.
 
-use degrau_ident::data::{LoadOptions, StepTest, load_file, load_str};
 use degrau_ident::experiment::{EstimateReason, Experiment, Offset, OperatingPoint};
 use degrau_ident::fit::{FitOptions, FitReport};
-use degrau_ident::models::Param;
+use degrau_ident::model::Param;
 use degrau_ident::random::Lcg;
+use degrau_ident::record::data::{LoadOptions, StepTest, load_file, load_str};
 use degrau_lti::{C64, StepResponse, TransferFunction};
 
 /// The true operating point of the simulated records.

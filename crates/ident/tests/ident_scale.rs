@@ -3,10 +3,10 @@
 //! (1e-9 relative), the same fit %, and its diagnosis names the same causes.
 
 use degrau_ident::diagnose::{DiagnoseOptions, diagnose};
-use degrau_ident::excitation::Excitation;
+use degrau_ident::fit::guess::auto_guess;
 use degrau_ident::fit::{FitData, FitError, FitOptions, FitReport, FitWarning, Termination, fit};
-use degrau_ident::guess::auto_guess;
-use degrau_ident::models::{Model, Param, Structure, Values};
+use degrau_ident::model::excitation::Excitation;
+use degrau_ident::model::{Model, Param, Structure, Values};
 
 /// Output, time and Δu scales: the unit record first.
 const SCALES: [(f64, f64, f64); 8] = [
@@ -226,7 +226,7 @@ fn the_diagnosis_names_the_same_causes_at_any_scale() {
 /// input that steps four times, at output scale `ky`, time scale `kt` and input scale `kdu`:
 /// the P1D of [`record_of`] with ±0.02 noise.
 fn long_record((ky, kt, kdu): (f64, f64, f64)) -> FitData {
-    use degrau_ident::excitation::Hold;
+    use degrau_ident::model::excitation::Hold;
     let truth = values(&[
         (Param::Kp, 1.5),
         (Param::Tp1, 4.0),
@@ -263,7 +263,7 @@ fn long_record((ky, kt, kdu): (f64, f64, f64)) -> FitData {
 #[test]
 fn a_long_record_searched_on_its_reduction_fits_the_same_at_any_scale() {
     let unit_data = long_record(SCALES[0]);
-    assert!(degrau_ident::reduce::reduce(&unit_data.times, &unit_data.input).is_some());
+    assert!(degrau_ident::fit::reduce::reduce(&unit_data.times, &unit_data.input).is_some());
     let unit = fit_p1d(&unit_data);
     for (p, x) in [(Param::Kp, 1.5), (Param::Tp1, 4.0), (Param::Td, 1.2)] {
         let (lo, hi) = unit.interval(p).unwrap();

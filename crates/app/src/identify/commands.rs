@@ -3,9 +3,9 @@
 //! returns commands, applied once per frame before the next is drawn.
 
 use degrau_ident::fit::Method;
-use degrau_ident::handles::Handle;
-use degrau_ident::landscape::Axis;
-use degrau_ident::models::Param;
+use degrau_ident::fit::handles::Handle;
+use degrau_ident::fit::landscape::Axis;
+use degrau_ident::model::Param;
 
 use super::session::{Frozen, MeasuredMarkers};
 

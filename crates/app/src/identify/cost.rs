@@ -3,9 +3,9 @@
 //! window that shows it is [`super::landscape`].
 
 use crate::job::{Job, Waker};
+use degrau_ident::fit::landscape::{self, Axis, Landscape};
 use degrau_ident::fit::{FitData, FitReport};
-use degrau_ident::landscape::{self, Axis, Landscape};
-use degrau_ident::models::Param;
+use degrau_ident::model::Param;
 
 use super::commands::LandscapeCommand;
 

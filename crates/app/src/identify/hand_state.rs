@@ -154,7 +154,7 @@ fn start_least_squares(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use degrau_ident::data::StepTest;
+    use degrau_ident::record::data::StepTest;
 
     #[test]
     fn the_state_reads_every_method_and_follows_the_student() {

@@ -9,7 +9,7 @@ use egui_plot::{Heatmap, Line, MarkerShape, Plot, PlotPoint, Points};
 use crate::look::Look;
 use crate::words::identify::Phrase;
 use degrau_ident::fit::FitReport;
-use degrau_ident::landscape::{Axis, Landscape};
+use degrau_ident::fit::landscape::{Axis, Landscape};
 use degrau_lti::number::sig;
 
 use super::commands::{Command, LandscapeCommand};

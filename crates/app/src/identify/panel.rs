@@ -7,10 +7,10 @@ use eframe::egui::{self, DragValue, RichText, Ui};
 use crate::field::{Limits, NumberField};
 use crate::look::Look;
 use crate::words::identify::Phrase;
-use degrau_ident::excitation::Hold;
 use degrau_ident::experiment::{Drive, Offset, OperatingPoint};
 use degrau_ident::fit::{MAX_STARTS, Method, bounds};
-use degrau_ident::models::Param;
+use degrau_ident::model::Param;
+use degrau_ident::model::excitation::Hold;
 use degrau_words::Localize;
 
 use super::commands::{Choice, CodeKind, Command, LandscapeCommand, OffsetChoice};

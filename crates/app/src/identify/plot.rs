@@ -16,7 +16,7 @@ use egui_plot::{
 
 use crate::look::Look;
 use crate::words::identify::Phrase;
-use degrau_ident::handles::Handle;
+use degrau_ident::fit::handles::Handle;
 use degrau_lti::words::step::Metric;
 use degrau_lti::{StepInfo, StepInfoOptions};
 

@@ -9,7 +9,7 @@
 //! once: a new test, a new structure or a new choice on the test clears the fit, the
 //! diagnosis and the status that belonged to the old one.
 
-use degrau_ident::excitation::Excitation;
+use degrau_ident::model::excitation::Excitation;
 use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
@@ -19,16 +19,16 @@ use super::cost::LandscapeState;
 use super::steps::{InputPlot, PerStepState, input_plot};
 use crate::field::{FieldError, parse_number};
 use crate::job::{self, Job, Waker};
-use degrau_ident::data::{self, DataError, LoadOptions, StepTest};
+use degrau_ident::diagnose::tracker::{DiagnoseProgress, Tracker};
 use degrau_ident::diagnose::{self, Cause, DiagnoseOptions, DiagnoseReport, Step};
-use degrau_ident::excitation::{Hold, InputChange};
 use degrau_ident::experiment::{Drive, Experiment, ExperimentError, Offset, OperatingPoint};
+use degrau_ident::fit::handles::{self, Handle};
 use degrau_ident::fit::{
     FitData, FitError, FitObserver, FitOptions, FitReport, Method, Progress, Termination, fit,
 };
-use degrau_ident::handles::{self, Handle};
-use degrau_ident::models::{Model, ModelError, Param, Structure, Values};
-use degrau_ident::tracker::{DiagnoseProgress, Tracker};
+use degrau_ident::model::excitation::{Hold, InputChange};
+use degrau_ident::model::{Model, ModelError, Param, Structure, Values};
+use degrau_ident::record::data::{self, DataError, LoadOptions, StepTest};
 use degrau_lti::{StepInfo, StepInfoOptions};
 
 /// The LECI step test of the course notes (`t, y`), shipped with the app.
@@ -146,7 +146,7 @@ pub enum LoadMessage {
         samples: usize,
         source: Source,
         /// The loader's notes.
-        notes: Vec<degrau_ident::data::DataNote>,
+        notes: Vec<degrau_ident::record::data::DataNote>,
         /// The step could not be read off the input: what was used instead.
         step_missing: Option<(ExperimentError, f64)>,
         /// Reading choices typed for this load and used for it.
@@ -361,13 +361,13 @@ fn optional_number(text: &str, choice: Choice) -> Result<Option<f64>, LoadError>
         .map_err(|error| LoadError::Choice { choice, error })
 }
 
-/// The structure `test`'s shape suggests ([`degrau_ident::guess::suggested_structure`]):
+/// The structure `test`'s shape suggests ([`degrau_ident::fit::guess::suggested_structure`]):
 /// what a record starts with when no structure was asked for; the notes' P1D when its data
 /// cannot be read yet.
 fn suggested_code(test: &StepTest, experiment: &Experiment) -> String {
     experiment.fit_data(test).map_or_else(
         |_| "P1D".into(),
-        |d| degrau_ident::guess::suggested_structure(&d).code(),
+        |d| degrau_ident::fit::guess::suggested_structure(&d).code(),
     )
 }
 
@@ -428,7 +428,7 @@ impl Session {
     }
 
     /// `test` with its input from the input's own file when one is chosen (joined on time,
-    /// [`degrau_ident::join`]); the failure names that file.
+    /// [`degrau_ident::record::join`]); the failure names that file.
     fn with_input_file(&self, test: StepTest) -> Result<StepTest, (Source, LoadError)> {
         let u_path = self.settings.u_path.trim();
         if u_path.is_empty() {
@@ -440,7 +440,7 @@ impl Session {
                 .map_err(|e| (source.clone(), e))?;
         let values = LoadOptions::from_text("", &self.settings.u_col, "none", sampling_period, 0);
         data::load_file(std::path::Path::new(u_path), &values)
-            .and_then(|input| degrau_ident::join::join_on_time(test, &input))
+            .and_then(|input| degrau_ident::record::join::join_on_time(test, &input))
             .map_err(|e| (source, LoadError::Data(e)))
     }
 
@@ -1409,13 +1409,14 @@ fn plots_for(data: &FitData, model: Option<Model>, y0: f64) -> Plots {
                 .collect()
         })
         .unwrap_or_default();
-    let y_final = degrau_ident::guess::features(data, Some(y0)).y_final;
-    let pieces = degrau_ident::prepare::SampledPieces::new(&data.times, &data.y, setup.t0());
+    let y_final = degrau_ident::fit::guess::features(data, Some(y0)).y_final;
+    let pieces =
+        degrau_ident::record::prepare::SampledPieces::new(&data.times, &data.y, setup.t0());
     let info = StepInfo::from_pieces(&pieces, y0, y_final, &StepInfoOptions::default());
     // The markers are drawn on a single step, where the first differences read the noise
     // (robust to the step itself) whatever the model shown: a poor guess's residuals would
     // call a real overshoot noise.
-    let sigma = degrau_ident::rest::difference_noise(&data.y);
+    let sigma = degrau_ident::fit::rest::difference_noise(&data.y);
     let noise_band = sigma * degrau_ident::stats::largest_of_gaussians(data.y.len());
     let y_range = padded(range_of(measured.iter().chain(&curve).map(|p| p[1])));
     let residual_range = padded(range_of(

@@ -5,13 +5,13 @@
 //! a first hint of nonlinearity). The views are [`super::plot`] and [`super::panel`].
 
 use crate::job::{Context, Job, Waker};
-use degrau_ident::excitation::{Excitation, InputChange};
-use degrau_ident::fit::{FitData, FitObserver, FitOptions, Progress};
-use degrau_ident::models::Structure;
-pub use degrau_ident::per_step::{
+pub use degrau_ident::diagnose::per_step::{
     Agreement, Difference, RESOLVED_SHARE, agreement, compared_params,
 };
-use degrau_ident::per_step::{StepFit, fit_change};
+use degrau_ident::diagnose::per_step::{StepFit, fit_change};
+use degrau_ident::fit::{FitData, FitObserver, FitOptions, Progress};
+use degrau_ident::model::Structure;
+use degrau_ident::model::excitation::{Excitation, InputChange};
 
 /// The input plot's data, derived from the fit data (rebuilt with them, never per frame).
 #[derive(Debug, Clone, Default)]
@@ -208,10 +208,10 @@ impl FitObserver for Stop<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use degrau_ident::excitation::Hold;
+    use degrau_ident::fit::guess::auto_guess;
     use degrau_ident::fit::{FitReport, fit};
-    use degrau_ident::guess::auto_guess;
-    use degrau_ident::models::Param;
+    use degrau_ident::model::Param;
+    use degrau_ident::model::excitation::Hold;
 
     fn record(hold: Hold) -> FitData {
         let times: Vec<f64> = (0..10).map(f64::from).collect();
@@ -263,7 +263,7 @@ mod tests {
     /// A heater whose gain grows with its level (0.5 per unit at first, 1.5 at the top):
     /// the per-step fits disagree with the joint one, a linear one agrees.
     fn stepped(gain_of_level: impl Fn(f64) -> f64) -> (FitReport, Vec<StepFit>, f64) {
-        use degrau_ident::models::{Model, Values};
+        use degrau_ident::model::{Model, Values};
         let times: Vec<f64> = (0..400).map(|k| 0.5 * k as f64).collect();
         let levels = [(0.0, 1.0), (20.0, 3.0), (70.0, 5.0), (120.0, 2.0)];
         let u: Vec<f64> = times
@@ -292,7 +292,7 @@ mod tests {
             &mut (),
         )
         .unwrap();
-        let fits = degrau_ident::per_step::per_step_fits(&data, structure, &options);
+        let fits = degrau_ident::diagnose::per_step::per_step_fits(&data, structure, &options);
         (joint, fits, data.sampling_period())
     }
 

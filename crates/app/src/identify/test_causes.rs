@@ -9,7 +9,7 @@ use eframe::egui::{self, Align2, Id, Rect, Sense, Ui};
 use egui_plot::{MarkerShape, PlotPoint, PlotTransform, PlotUi, Points};
 
 use crate::look::Look;
-use degrau_ident::test_causes::{TestCause, TestEvidence};
+use degrau_ident::diagnose::test_causes::{TestCause, TestEvidence};
 use degrau_ident::words::ident::Naming;
 use degrau_ident::words::test_causes::{TestCausePhrase, cause_lines, span_words, test_cause_name};
 use degrau_words::Localize;

@@ -6,20 +6,20 @@
 
 use crate::words::identify::Phrase;
 use degrau_ident::diagnose::Cause;
+use degrau_ident::diagnose::tracker::DiagnoseProgress;
 use degrau_ident::diagnose::{DiagnoseReport, Step};
 use degrau_ident::experiment::ExperimentError;
+use degrau_ident::fit::handles::Handle;
 use degrau_ident::fit::{FitReport, FitWarning, Method, Termination};
-use degrau_ident::handles::Handle;
-use degrau_ident::models::{Model, Param};
-use degrau_ident::tracker::DiagnoseProgress;
+use degrau_ident::model::{Model, Param};
 use degrau_words::{Lang, Localize};
 
 use super::commands::Choice;
 use super::session::{DiagnoseNote, LoadError, LoadMessage, Source, Status};
 use super::steps::{Agreement, agreement, compared_params};
-use degrau_ident::excitation::InputChange;
-use degrau_ident::per_step::StepFit;
-use degrau_ident::test_causes::fit_held;
+use degrau_ident::diagnose::per_step::StepFit;
+use degrau_ident::diagnose::test_causes::fit_held;
+use degrau_ident::model::excitation::InputChange;
 
 /// A number for running text in `lang`.
 fn num(lang: Lang, x: f64, digits: i32) -> String {
@@ -269,7 +269,7 @@ pub fn fit_summary(report: &FitReport, lang: Lang) -> String {
 
 /// A filter's description.
 pub fn filter_description(fc: f64, ts: f64, lang: Lang) -> String {
-    degrau_ident::prepare::Ewma::new(fc, ts).text(lang)
+    degrau_ident::record::prepare::Ewma::new(fc, ts).text(lang)
 }
 
 /// A handle's accessible label.

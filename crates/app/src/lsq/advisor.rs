@@ -1,5 +1,5 @@
 //! The sampling and amplitude advisor, with no egui in it: the course notes' rules for the
-//! sampling period ([`degrau_ident::test_causes::sampling_checks`]: h < 0.1·τmax,
+//! sampling period ([`degrau_ident::diagnose::test_causes::sampling_checks`]: h < 0.1·τmax,
 //! 0.2 < h/θ < 1, 0.01 < h/τ < 0.05, t_s/15 < h < t_s/6) with the record's own h and the time
 //! scales of the Identify mode's model (its fit, or the guess read off the curve before a
 //! fit), and the amplitude rule: the step's effect over the noise above 6.
@@ -8,14 +8,14 @@
 //!   input change (none for a model without a finite static gain, an integrator).
 //! - **The noise**: the standard deviation of a fit's residuals (robust), or before a fit
 //!   the output's white noise read from its first differences
-//!   ([`degrau_ident::rest::difference_noise`], robust to the steps themselves).
+//!   ([`degrau_ident::fit::rest::difference_noise`], robust to the steps themselves).
 
+use degrau_ident::diagnose::test_causes::RuleCheck;
+use degrau_ident::diagnose::test_causes::{TimeScales, sampling_checks};
 use degrau_ident::fit::FitData;
-use degrau_ident::models::Model;
-use degrau_ident::rest::difference_noise;
+use degrau_ident::fit::rest::difference_noise;
+use degrau_ident::model::Model;
 use degrau_ident::stats::robust_scale;
-use degrau_ident::test_causes::RuleCheck;
-use degrau_ident::test_causes::{TimeScales, sampling_checks};
 
 /// The notes' lower bound on the step's effect over the noise.
 pub const AMPLITUDE_RATIO: f64 = 6.0;
@@ -106,25 +106,29 @@ fn noise(data: &FitData, model: &Model, fitted: bool) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use degrau_ident::excitation::Excitation;
-    use degrau_ident::models::{Param, Structure, Values};
+    use degrau_ident::model::excitation::Excitation;
+    use degrau_ident::model::{Param, Structure, Values};
 
     /// A PRBS (clocked every sample) through a fast first order, with 1 % noise: the first
     /// differences hold the response and read it as noise ("too small", issue 23, item 13);
     /// the fit's residuals read the noise itself.
     #[test]
     fn a_prbs_is_judged_on_its_fits_residuals() {
-        let prbs = degrau_ident::prbs::Prbs::for_length(255, 1, 0.0, 1.0).unwrap();
+        let prbs = degrau_ident::lsq::prbs::Prbs::for_length(255, 1, 0.0, 1.0).unwrap();
         let u = prbs.signal(255).unwrap();
         let mut v = Values::default();
         v.set(Param::Kp, 2.0);
         v.set(Param::Tp1, 2.0);
         v.set(Param::Y0, 0.0);
         let model = Model::new(Structure::parse("P1").unwrap(), v);
-        let rec = degrau_ident::prbs::simulate_record(&model, &u, 1.0, 0.02, 5).unwrap();
-        let input =
-            Excitation::measured(&rec.time, &rec.u, None, degrau_ident::excitation::Hold::Zoh)
-                .unwrap();
+        let rec = degrau_ident::lsq::prbs::simulate_record(&model, &u, 1.0, 0.02, 5).unwrap();
+        let input = Excitation::measured(
+            &rec.time,
+            &rec.u,
+            None,
+            degrau_ident::model::excitation::Hold::Zoh,
+        )
+        .unwrap();
         let data = FitData {
             times: rec.time,
             y: rec.y,
@@ -157,7 +161,7 @@ mod tests {
         assert_eq!(a.h, 1.0);
         // h/τ = 0.05 (on the bound of 0.01–0.05), h/θ = 1/3 (within 0.2–1).
         let ratio = |rule| a.checks.iter().find(|c| c.rule == rule).unwrap().value;
-        use degrau_ident::test_causes::SamplingRule as R;
+        use degrau_ident::diagnose::test_causes::SamplingRule as R;
         assert!((ratio(R::TimeConstantRatio) - 0.05).abs() < 1e-15);
         assert!((ratio(R::DeadTimeRatio) - 1.0 / 3.0).abs() < 1e-15);
         let amp = a.amplitude.unwrap();

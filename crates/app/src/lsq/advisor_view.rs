@@ -8,7 +8,7 @@ use egui_plot::{Line, Points};
 
 use crate::look::Look;
 use crate::words::lsq_app::Phrase;
-use degrau_ident::test_causes::{RuleCheck, SamplingRule};
+use degrau_ident::diagnose::test_causes::{RuleCheck, SamplingRule};
 use degrau_ident::words::lsq::LsqPhrase as L;
 use degrau_words::Lang;
 

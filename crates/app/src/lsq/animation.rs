@@ -6,11 +6,11 @@
 //! While running, [`Animation::tick`] takes [`Animation::per_frame`] rows each frame, so any
 //! record plays in about [`FRAMES`] frames; Step takes one row, Reset starts again.
 
-use degrau_ident::arx::{
+use degrau_ident::lsq::arx::{
     ArxModel, ArxOrders, LeastSquares, LsqError, Offset, Regression, arx_regression, least_squares,
     sampling_period,
 };
-use degrau_ident::rls::{Rls, RlsOptions};
+use degrau_ident::lsq::rls::{Rls, RlsOptions};
 
 use super::session::Samples;
 

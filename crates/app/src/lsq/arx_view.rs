@@ -10,7 +10,7 @@ use egui_plot::{Line, Points};
 use crate::field::{LimitReason, Limits, NumberField};
 use crate::look::Look;
 use crate::words::lsq_app::Phrase;
-use degrau_ident::arx::{ArxOrders, Offset, Regression, fit_percent};
+use degrau_ident::lsq::arx::{ArxOrders, Offset, Regression, fit_percent};
 use degrau_ident::words::lsq::{LsqPhrase as L, parameter_name, regressor_symbol};
 use degrau_words::Localize;
 

@@ -2,8 +2,8 @@
 //! of the app in return ([`Outcome`]). A view never changes the session while it draws: it
 //! returns commands, applied once per frame before the next is drawn.
 
-use degrau_ident::arx::{ArxOrders, Offset};
-use degrau_ident::validation::Split;
+use degrau_ident::lsq::arx::{ArxOrders, Offset};
+use degrau_ident::lsq::validation::Split;
 
 use super::designer::PrbsSettings;
 

@@ -2,19 +2,19 @@
 //! levels, periods, sampling period), the model it is simulated on (a procest code and its
 //! values, or the Design mode's G(s)) with noise, and the record it gives.
 //!
-//! - **The signal**: [`degrau_ident::prbs::Prbs`]. With one period, the shortest register
+//! - **The signal**: [`degrau_ident::lsq::prbs::Prbs`]. With one period, the shortest register
 //!   whose period covers the length, cut to the length (idinput's non-periodic PRBS); with
 //!   M ≥ 2 periods, the shortest register whose period covers length/M, repeated M whole
 //!   times (idinput's `[P 1 M]`), so the record may be a little longer than asked.
-//! - **The response**: a procest model through [`degrau_ident::prbs::simulate_record`]
+//! - **The response**: a procest model through [`degrau_ident::lsq::prbs::simulate_record`]
 //!   (exact, the input held between samples, at rest at Y0 with the input at its first
 //!   level); the Design mode's G(s) through its exact ZOH discretisation
 //!   ([`degrau_lti::discrete::c2d`]) driven by u − u(0), so it too starts at rest (at 0).
 //! - **The noise**: white Gaussian, its standard deviation `noise_percent` % of the
 //!   noise-free response's range (max − min), drawn from `seed` (reproducible).
 
-use degrau_ident::models::{Model, ModelError, Param, Structure, Values};
-use degrau_ident::prbs::{self, Prbs, PrbsError, Record};
+use degrau_ident::lsq::prbs::{self, Prbs, PrbsError, Record};
+use degrau_ident::model::{Model, ModelError, Param, Structure, Values};
 use degrau_ident::random::Lcg;
 use degrau_lti::TransferFunction;
 use degrau_lti::discrete::{DiscreteError, c2d};

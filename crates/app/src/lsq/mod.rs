@@ -5,8 +5,8 @@
 //! squares animated sample by sample, a PRBS test designed on a model and exported or used
 //! as the record, estimation on one part of the record with validation on the other, and the
 //! notes' sampling and amplitude rules with the record's own numbers.
-//! Everything computed comes from [`degrau_ident::arx`], [`degrau_ident::rls`],
-//! [`degrau_ident::prbs`], [`degrau_ident::validation`] and [`degrau_lti::discrete`].
+//! Everything computed comes from [`degrau_ident::lsq::arx`], [`degrau_ident::lsq::rls`],
+//! [`degrau_ident::lsq::prbs`], [`degrau_ident::lsq::validation`] and [`degrau_lti::discrete`].
 //!
 //! The mode is a [`Session`] (state and derived data; no egui) and views that read it and
 //! return [`Command`]s: the right panel (the section's controls and tables) and the central

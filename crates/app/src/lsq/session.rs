@@ -11,15 +11,17 @@
 use crate::identify;
 use crate::identify::session::Shown;
 use crate::job::{Job, Waker};
-use degrau_ident::arx::{
+use degrau_ident::fit::{FitData, FitOptions};
+use degrau_ident::lsq::arx::{
     self, ArxFit, ArxOrders, Candidate, LeastSquares, LsqError, Offset, Regression, Regressor,
     Start,
 };
-use degrau_ident::data::StepTest;
-use degrau_ident::fit::{FitData, FitOptions};
-use degrau_ident::models::Model;
-use degrau_ident::rls::RlsOptions;
-use degrau_ident::validation::{self, ArxValidation, ContinuousValidation, Split, ValidationError};
+use degrau_ident::lsq::rls::RlsOptions;
+use degrau_ident::lsq::validation::{
+    self, ArxValidation, ContinuousValidation, Split, ValidationError,
+};
+use degrau_ident::model::Model;
+use degrau_ident::record::data::StepTest;
 use degrau_lti::TransferFunction;
 use degrau_lti::discrete::DiscreteError;
 
@@ -341,7 +343,9 @@ impl Session {
                 if let Some(Ok(d)) = &self.designed {
                     self.export_note = Some(ExportNote::Used);
                     self.section = Section::Arx;
-                    return Some(Outcome::UseRecord(degrau_ident::prbs::to_csv(&d.record)));
+                    return Some(Outcome::UseRecord(degrau_ident::lsq::prbs::to_csv(
+                        &d.record,
+                    )));
                 }
             }
             Command::SetSplit(s) => {
@@ -427,7 +431,7 @@ impl Session {
         let Some(Ok(d)) = &self.designed else { return };
         let shown = path.display().to_string();
         self.export_note = Some(
-            match std::fs::write(path, degrau_ident::prbs::to_csv(&d.record)) {
+            match std::fs::write(path, degrau_ident::lsq::prbs::to_csv(&d.record)) {
                 Ok(()) => ExportNote::Saved(shown),
                 Err(e) => ExportNote::Failed {
                     path: shown,
@@ -557,11 +561,11 @@ mod tests {
     fn the_input_is_sampled_as_the_model_sees_it() {
         let time: Vec<f64> = (0..6).map(f64::from).collect();
         let u = [20.0, 20.0, 35.0, 35.0, 35.0, 35.0];
-        let input = degrau_ident::excitation::Excitation::measured(
+        let input = degrau_ident::model::excitation::Excitation::measured(
             &time,
             &u,
             None,
-            degrau_ident::excitation::Hold::Zoh,
+            degrau_ident::model::excitation::Hold::Zoh,
         )
         .unwrap();
         let data = FitData {

@@ -10,8 +10,8 @@ use egui_plot::{Line, LineStyle, Points, VLine};
 use crate::field::{Limits, NumberField};
 use crate::look::Look;
 use crate::words::lsq_app::Phrase;
-use degrau_ident::residuals::ResidualAnalysis;
-use degrau_ident::validation::{ArxValidation, Split};
+use degrau_ident::diagnose::residuals::ResidualAnalysis;
+use degrau_ident::lsq::validation::{ArxValidation, Split};
 use degrau_ident::words::lsq::LsqPhrase as L;
 use degrau_words::Localize;
 
@@ -120,7 +120,7 @@ fn split(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) {
 fn arx_rows(
     ui: &mut Ui,
     name: Phrase,
-    v: &Result<ArxValidation, degrau_ident::arx::LsqError>,
+    v: &Result<ArxValidation, degrau_ident::lsq::arx::LsqError>,
     look: &Look,
 ) {
     let lang = look.lang;

@@ -1,7 +1,7 @@
 //! The causes a diagnosis names: what a fitted model lacks (a dead time, an offset, an
 //! oscillation, one more pole, a zero, an inverse response, an integrator, a drift), each
 //! with the stable identifier graders read. The test's own flaws are
-//! [`crate::test_causes::TestCauseKind`].
+//! [`crate::diagnose::test_causes::TestCauseKind`].
 
 use serde::{Deserialize, Serialize};
 

@@ -4,12 +4,12 @@
 use super::cause::Cause;
 use super::judge::{analyse, whiteness};
 use super::report::{Artefacts, Bias, Ending, Evidence, Verdict, Whiteness};
-use crate::drift_evidence::read_drift;
+use crate::diagnose::drift_evidence::read_drift;
+use crate::diagnose::residuals::{self};
+use crate::diagnose::staircase::Staircase;
+use crate::fit::guess::features;
 use crate::fit::{FitData, FitReport};
-use crate::guess::features;
-use crate::models::Param;
-use crate::residuals::{self};
-use crate::staircase::Staircase;
+use crate::model::Param;
 
 /// The model's main time constant (Tw for an underdamped pair, else Tp1), at least one
 /// sampling period.
@@ -199,7 +199,7 @@ pub(super) fn explain(
         Cause::Drift => {
             let reading = read_drift(data, &current.model, extended);
             let models = [&current.model, &extended.model];
-            let stretches = crate::drift_evidence::settled_stretches(&models, data);
+            let stretches = crate::diagnose::drift_evidence::settled_stretches(&models, data);
             let span = stretches
                 .iter()
                 .map(|s| (s.start.max(t_first), s.end.min(t_last)))

@@ -7,11 +7,11 @@ use super::cause::Cause;
 use super::explain::characteristic_time;
 use super::judge::bic;
 use super::search::{PAIRS_TAKEN_ON, best_fits};
-use crate::drift_evidence::read_drift;
+use crate::diagnose::drift_evidence::read_drift;
+use crate::diagnose::tracker::Tracker;
+use crate::fit::guess::{auto_guess, features};
 use crate::fit::{FitData, FitOptions, FitReport, fit};
-use crate::guess::{auto_guess, features};
-use crate::models::{Model, Param, Structure, Values};
-use crate::tracker::Tracker;
+use crate::model::{Model, Param, Structure, Values};
 
 /// An underdamped pair fitted with ζ at or above this is taken as two real poles.
 pub(super) const OVERDAMPED_ZETA: f64 = 0.98;
@@ -264,7 +264,7 @@ pub(super) fn oscillates(r: &FitReport) -> bool {
 
 /// Scale (issue 10): on a long record the candidates are fitted on its reduction
 /// ([`search_fit`](crate::fit::search_fit), statistics standing for the whole record's) and only the chosen one is
-/// refitted on every sample, from its optimum; a record [`crate::reduce`] leaves as it is
+/// refitted on every sample, from its optimum; a record [`crate::fit::reduce`] leaves as it is
 /// keeps its fit.
 pub(super) fn on_every_sample(
     data: &FitData,
@@ -276,7 +276,7 @@ pub(super) fn on_every_sample(
 /// A fit found on the record's reduction ([`search_fit`](crate::fit::search_fit)) refitted on every sample from its
 /// optimum; the fit itself when the record is not reduced.
 pub(super) fn full_fit(data: &FitData, r: FitReport) -> Option<FitReport> {
-    if crate::reduce::reduce(&data.times, &data.input).is_none() {
+    if crate::fit::reduce::reduce(&data.times, &data.input).is_none() {
         return Some(r);
     }
     let options = FitOptions {

@@ -3,11 +3,11 @@
 //! candidates no record can back (an alias, a lag beyond the record).
 
 use super::report::Gain;
+use crate::diagnose::residuals::{self, ResidualAnalysis};
+use crate::diagnose::test_causes::time_constants;
 use crate::fit::{FitData, FitReport};
-use crate::models::{Model, Param};
-use crate::residuals::{self, ResidualAnalysis};
+use crate::model::{Model, Param};
 use crate::stats::lag_one;
-use crate::test_causes::time_constants;
 
 /// An extension must lower BIC by more than this to be kept.
 pub const BIC_THRESHOLD: f64 = 10.0;
@@ -42,7 +42,7 @@ pub(super) fn no_longer_pays(current: &FitReport, param: Param, delta: f64) -> b
 }
 
 /// The residuals' RMSE must exceed the white noise read from the output's first differences
-/// ([`crate::rest::difference_noise`]) this many times for pairs to be tried: strongly
+/// ([`crate::fit::rest::difference_noise`]) this many times for pairs to be tried: strongly
 /// coloured noise (AR(1) up to ρ = 0.97) stays below it, a missing pair of effects leaves
 /// tens of times the noise.
 pub(super) const FAR_FROM_WHITE: f64 = 8.0;
@@ -50,7 +50,7 @@ pub(super) const FAR_FROM_WHITE: f64 = 8.0;
 /// Whether what `current` leaves is far from white: not white by the residual analysis, and
 /// its RMSE above [`FAR_FROM_WHITE`] times the output's white noise.
 pub(super) fn far_from_white(data: &FitData, current: &FitReport) -> bool {
-    let noise = crate::rest::difference_noise(&data.y);
+    let noise = crate::fit::rest::difference_noise(&data.y);
     current.rmse > FAR_FROM_WHITE * noise && whiteness(current, data).is_some_and(|w| !w.white)
 }
 

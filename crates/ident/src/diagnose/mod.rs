@@ -20,14 +20,21 @@
 //! A zero and an inverse response are the same extension (Tz): its fitted sign names the cause.
 
 pub(crate) mod cause;
+pub mod drift_evidence;
 mod explain;
 pub(crate) mod extension;
+pub mod holdout;
 pub(crate) mod judge;
+pub mod per_step;
 mod report;
+pub mod residuals;
 mod search;
+pub mod staircase;
 mod step;
+pub mod test_causes;
 #[cfg(test)]
 mod tests;
+pub mod tracker;
 
 pub use cause::Cause;
 pub use extension::{Extensions, StartExtensions};
@@ -38,11 +45,11 @@ pub use report::{
 };
 pub use step::next_step;
 
+use crate::diagnose::test_causes::handling;
+use crate::diagnose::tracker::Tracker;
+use crate::fit::guess::auto_guess;
 use crate::fit::{FitData, FitError, FitReport, fit};
-use crate::guess::auto_guess;
-use crate::models::{Param, Structure, Values};
-use crate::test_causes::handling;
-use crate::tracker::Tracker;
+use crate::model::{Param, Structure, Values};
 use explain::verdict;
 use extension::{EXTENSIONS, Extension, oscillates};
 use report::gain_trade;

@@ -3,9 +3,9 @@
 //! test's artefacts, and the gain traded for a drift when the two cannot be told apart.
 
 use super::cause::Cause;
+use crate::diagnose::test_causes::{TestCause, TestCauseKind};
 use crate::fit::{FitOptions, FitReport};
-use crate::models::{Param, Structure};
-use crate::test_causes::{TestCause, TestCauseKind};
+use crate::model::{Param, Structure};
 use serde::{Deserialize, Serialize};
 
 /// How to run the loop.
@@ -133,7 +133,7 @@ pub enum Ending {
     /// No extension lowers BIC by [`BIC_THRESHOLD`](super::judge::BIC_THRESHOLD), although the residuals are not white.
     NotWhite,
     /// On a staircase (a resolution coarse against the noise), no extension gains more
-    /// than rounding gives a model that lacks nothing ([`Staircase`](crate::staircase::Staircase)).
+    /// than rounding gives a model that lacks nothing ([`Staircase`](crate::diagnose::staircase::Staircase)).
     WithinRounding,
     /// The step limit was reached.
     StepLimit,

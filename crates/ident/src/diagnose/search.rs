@@ -2,9 +2,9 @@
 //! few iterations on the reduced record, the leaders of each carried to convergence.
 
 use super::judge::{aliased, beyond_record, bic};
+use crate::diagnose::tracker::Tracker;
 use crate::fit::{FitData, FitOptions, FitReport, Termination, search_fit};
-use crate::models::{Structure, Values};
-use crate::tracker::Tracker;
+use crate::model::{Structure, Values};
 
 /// Each job's structure fitted from its start (one start, on the record's reduction for a
 /// long record), spread over the cores ([`crate::parallel`]); for each key, in the order the

@@ -12,11 +12,11 @@ use super::judge::{
     BIC_THRESHOLD, bic, far_from_white, gain, judged_change, no_longer_pays, pays, plainly_pays,
 };
 use super::report::{Evidence, Step};
+use crate::diagnose::holdout::Validation;
+use crate::diagnose::staircase::Staircase;
+use crate::diagnose::tracker::Tracker;
 use crate::fit::{FitData, FitOptions, FitReport, search_fit};
-use crate::holdout::Validation;
-use crate::models::{Param, Structure};
-use crate::staircase::Staircase;
-use crate::tracker::Tracker;
+use crate::model::{Param, Structure};
 
 /// The terms of `current` the backward look may take out, but not `added`, the one just
 /// paid for: the first whose term no longer pays ([`no_longer_pays`]), with the step that

@@ -2,9 +2,9 @@ use super::extension::*;
 use super::judge::*;
 use super::step::*;
 use super::*;
-use crate::excitation::Excitation;
 use crate::fit::{FitOptions, FitReport, fit};
-use crate::models::{Model, Param, Structure, Values};
+use crate::model::excitation::Excitation;
+use crate::model::{Model, Param, Structure, Values};
 
 fn model(code: &str, params: &[(Param, f64)]) -> Model {
     let mut v = Values::default();

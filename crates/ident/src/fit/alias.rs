@@ -5,9 +5,9 @@
 use super::problem::Problem;
 use super::report::FitWarning;
 use super::setup::{CHUNK, FitData};
-use crate::models::{Model, Param};
-use crate::reduce;
-use crate::scale::Scale;
+use crate::fit::reduce;
+use crate::model::scale::Scale;
+use crate::model::{Model, Param};
 
 impl Problem {
     /// The alias check of the model at `x`, its frequencies in the data's units.
@@ -139,7 +139,7 @@ pub(super) fn between_sample_swing(
     for start in (first..windows).step_by(per_piece) {
         let end = (start + per_piece).min(windows);
         fine.clear();
-        if let Some((a, b)) = crate::models::uniform_grid(&t[start..=end]) {
+        if let Some((a, b)) = crate::model::uniform_grid(&t[start..=end]) {
             // Evenly spaced by construction, so the fast recurrence evaluates it.
             let m = REFINE * (end - start);
             fine.extend((0..=m).map(|j| a + (b - a) * j as f64 / m as f64));

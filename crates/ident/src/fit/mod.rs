@@ -5,7 +5,7 @@
 //! **Levenberg–Marquardt**, bounded, and **Nelder–Mead** (MATLAB's `fminsearch`, the notes'
 //! method) with the same bounds.
 //!
-//! Every fit runs on the record in its internal units ([`Scale`](crate::scale::Scale): the output about its level
+//! Every fit runs on the record in its internal units ([`Scale`](crate::model::scale::Scale): the output about its level
 //! in half-ranges, the step ±1, time from t0 in record lengths) and scales its results back,
 //! so a record at 1e-300 or 1e300, a step of 1e-200, time in nanoseconds or years, fits as a
 //! unit-sized one does. The sums run over pieces of [`CHUNK`] samples: no N × p Jacobian and no
@@ -16,8 +16,8 @@
 //! and keeps the best: the LECI notes show a single start landing on a spurious alias. A fit
 //! nobody watches ([`FitObserver::watches`]) screens its starts on every core.
 //!
-//! On a long record (more than [`reduce::MIN_SAMPLES`](crate::reduce::MIN_SAMPLES) samples) the starts run on its
-//! reduction ([`reduce`](crate::reduce): every sample just after each input change, block means of doubling
+//! On a long record (more than [`reduce::MIN_SAMPLES`](crate::fit::reduce::MIN_SAMPLES) samples) the starts run on its
+//! reduction ([`reduce`](crate::fit::reduce): every sample just after each input change, block means of doubling
 //! length as the response settles, weighted by the samples they stand for), and the best of
 //! them is refined on every sample, which the report and its intervals use: an 80,000-sample
 //! P1D costs about one local fit on the whole record. [`search_fit`] stops before that last
@@ -35,8 +35,15 @@
 //! does not swing between the samples).
 
 mod alias;
+pub mod guess;
+pub mod handles;
+pub mod lag_pair;
+pub mod landscape;
 mod problem;
+pub mod reduce;
 mod report;
+pub mod rest;
+pub mod robust;
 mod search;
 mod setup;
 mod solver;

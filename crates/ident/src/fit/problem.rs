@@ -9,10 +9,10 @@ use nalgebra::{DMatrix, DVector};
 
 use super::setup::{CHUNK, FitData, FitError, bounds_with};
 use super::solver::{LeastSquaresProblem, Normal};
-use crate::models::{Model, ModelError, Param, Simulator, Structure, Values};
+use crate::fit::reduce::Reduction;
+use crate::model::scale::{Scale, Unrepresentable};
+use crate::model::{Model, ModelError, Param, Simulator, Structure, Values};
 use crate::random::Lcg;
-use crate::reduce::Reduction;
-use crate::scale::{Scale, Unrepresentable};
 
 /// One column of a finite-difference Jacobian: the point moved along it, and the step's
 /// length in the column's parameter.
@@ -56,7 +56,7 @@ pub(super) struct Problem {
     /// The guess, with the values of the parameters that are not estimated (e.g. a fixed Y0),
     /// in internal units.
     pub(super) fixed: Values,
-    /// √weight of each sample on a reduced record (a block mean: see [`reduce`](crate::reduce)); `None`:
+    /// √weight of each sample on a reduced record (a block mean: see [`reduce`](crate::fit::reduce)); `None`:
     /// every sample counts once.
     pub(super) root_weights: Option<Vec<f64>>,
     /// The record's scatter within the blocks of a reduced record ([`Reduction::within`]),

@@ -12,10 +12,10 @@ use nalgebra::DMatrix;
 use super::problem::{Column, Direction, Problem};
 use super::setup::{CHUNK, FitData, FitError, FitOptions, Method};
 use super::solver::{LeastSquaresProblem, Normal, Run, Termination};
-use crate::lag_pair;
-use crate::models::Param;
-use crate::models::{Model, ModelError, Values};
-use crate::scale::Scale;
+use crate::fit::lag_pair;
+use crate::model::Param;
+use crate::model::scale::Scale;
+use crate::model::{Model, ModelError, Values};
 use crate::stats::student_t_quantile;
 
 /// Something a student should know about a fit.

@@ -6,8 +6,8 @@ use super::problem::Problem;
 use super::report::FitReport;
 use super::setup::{FitData, FitError, FitObserver, FitOptions, Method, Progress};
 use super::solver::{LeastSquaresProblem, Run, Termination, lm, nelder_mead};
-use crate::models::{Structure, Values};
-use crate::reduce;
+use crate::fit::reduce;
+use crate::model::{Structure, Values};
 
 /// Fits `structure` to `data` starting from `guess`.
 ///
@@ -34,7 +34,7 @@ pub fn fit(
 }
 
 /// [`fit`] minimising Σ wᵢ(yᵢ − ŷᵢ)², each sample weighted by `weights` (one per sample,
-/// ≥ 0): a step of iteratively reweighted least squares ([`crate::robust`]). It runs on every
+/// ≥ 0): a step of iteratively reweighted least squares ([`crate::fit::robust`]). It runs on every
 /// sample (the weights belong to the samples, not to a reduction's blocks); its n, MSE and
 /// intervals count a sample by its weight.
 pub fn fit_weighted(

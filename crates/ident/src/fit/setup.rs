@@ -4,9 +4,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::excitation::Excitation;
-use crate::models::{Model, ModelError, Param};
-use crate::scale::Unrepresentable;
+use crate::model::excitation::Excitation;
+use crate::model::scale::Unrepresentable;
+use crate::model::{Model, ModelError, Param};
 
 /// Samples per piece of the sums over the record.
 pub const CHUNK: usize = 8192;
@@ -31,7 +31,7 @@ pub struct FitData {
 impl FitData {
     /// The median sampling period (s).
     pub fn sampling_period(&self) -> f64 {
-        crate::timebase::sampling_period(&self.times).unwrap_or(1.0)
+        crate::record::timebase::sampling_period(&self.times).unwrap_or(1.0)
     }
 
     /// The time interval `[a, b]` (s) cut to the record's span, [first sample, last

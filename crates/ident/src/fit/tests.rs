@@ -2,8 +2,8 @@ use super::alias::settled_within;
 use super::problem::{Column, Direction, Problem};
 use super::solver::{LeastSquaresProblem, Normal};
 use super::*;
-use crate::excitation::Excitation;
-use crate::models::{Model, Param, Structure, Values};
+use crate::model::excitation::Excitation;
+use crate::model::{Model, Param, Structure, Values};
 use crate::random::Lcg;
 
 fn synthetic(code: &str, truth: &[(Param, f64)], noise: f64) -> (FitData, Structure, Values) {
@@ -146,7 +146,8 @@ fn intervals_stay_within_what_the_parameters_can_be() {
         .iter()
         .map(|&t| if t >= 2.05 { 2.0 } else { 0.0 })
         .collect();
-    data.input = Excitation::measured(&data.times, &u, None, crate::excitation::Hold::Zoh).unwrap();
+    data.input =
+        Excitation::measured(&data.times, &u, None, crate::model::excitation::Hold::Zoh).unwrap();
     s.lead = true;
     let mut r = fit(&data, s, v, &FitOptions::default(), &mut ()).unwrap();
     let inside = |r: &FitReport| {

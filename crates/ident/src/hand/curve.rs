@@ -13,7 +13,7 @@
 //!   steepest segment between two samples).
 //! - **Smoothed curve**: a running median of 3 (harmless on a monotone curve, removes
 //!   single-sample spikes) then, for n ≥ 3, a centred running mean of n samples. Level
-//!   crossings are read on it as on [`super::super::prepare::SampledPieces`]: straight lines
+//!   crossings are read on it as on [`crate::record::prepare::SampledPieces`]: straight lines
 //!   between samples, the crossing time interpolated.
 
 use super::HandError;
@@ -103,7 +103,7 @@ impl Curve {
 
     /// The median sampling period after t0 (s).
     fn period(&self) -> f64 {
-        crate::timebase::sampling_period(&self.times).unwrap_or(1.0)
+        crate::record::timebase::sampling_period(&self.times).unwrap_or(1.0)
     }
 
     fn choose_window(&self, y0: f64, y_final: f64) -> usize {

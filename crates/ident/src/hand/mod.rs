@@ -40,9 +40,9 @@ mod methods;
 
 use serde::Serialize;
 
-use super::excitation::Excitation;
-use super::fit::FitData;
-use super::models::{Model, ModelError, Param, Structure, Values};
+use crate::fit::FitData;
+use crate::model::excitation::Excitation;
+use crate::model::{Model, ModelError, Param, Structure, Values};
 use curve::Curve;
 
 /// The fewest samples after the step a construction reads.
@@ -259,7 +259,7 @@ impl Record {
             return Err(HandError::SeveralChanges { count });
         }
         let y0 = y0
-            .or_else(|| super::guess::level_before(data))
+            .or_else(|| crate::fit::guess::level_before(data))
             .ok_or(HandError::NoOperatingPoint)?;
         Self::checked(data.clone(), y0)
     }
@@ -519,10 +519,10 @@ pub const COMPARED: [&str; 2] = ["P1D", "P2D"];
 /// is left out), until `cancelled` says stop.
 pub fn least_squares(
     data: &FitData,
-    experiment: &super::experiment::Experiment,
+    experiment: &crate::experiment::Experiment,
     cancelled: impl Fn() -> bool,
-) -> Vec<super::fit::FitReport> {
-    let options = super::fit::FitOptions::default();
+) -> Vec<crate::fit::FitReport> {
+    let options = crate::fit::FitOptions::default();
     COMPARED
         .iter()
         .take_while(|_| !cancelled())
@@ -535,9 +535,9 @@ pub fn least_squares(
 }
 
 /// The fit % of `model` on every sample of `data`: 100·(1 − ‖y − ŷ‖/‖y − ȳ‖), as
-/// [`crate::fit`] reports it, summed as [`super::arx::fit_percent`] sums at any scale
+/// [`crate::fit`] reports it, summed as [`crate::lsq::arx::fit_percent`] sums at any scale
 /// (NaN for a constant record).
 pub fn fit_percent(model: &Model, data: &FitData) -> Result<f64, ModelError> {
     let simulated = model.simulate(&data.input, &data.times)?;
-    Ok(super::arx::fit_percent(&data.y, &simulated))
+    Ok(crate::lsq::arx::fit_percent(&data.y, &simulated))
 }

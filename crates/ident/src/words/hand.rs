@@ -5,7 +5,7 @@
 
 use crate::fit::FitReport;
 use crate::hand::{HandError, HandEstimate, HandMethod, HandWarning};
-use crate::models::{ModelError, Param};
+use crate::model::{ModelError, Param};
 
 use degrau_words::{Lang, Localize, Message};
 

@@ -1,11 +1,11 @@
-//! The words of least squares on samples (`crate::arx`, `rls`, `prbs`, `validation`)
+//! The words of least squares on samples (`crate::lsq::arx`, `rls`, `prbs`, `validation`)
 //! and of discrete models (`degrau_lti::discrete`): the labels of the tables and the refusals,
 //! in English and Brazilian Portuguese with the notes' terms (mínimos quadrados, regressores,
 //! função custo, estimador recursivo, fator de esquecimento, sinal PRBS, validação, …).
 
-use crate::arx::{Cost, LsqError, Regressor};
-use crate::prbs::{MAX_ORDER, MIN_ORDER, PrbsError};
-use crate::validation::{MIN_PART, ValidationError};
+use crate::lsq::arx::{Cost, LsqError, Regressor};
+use crate::lsq::prbs::{MAX_ORDER, MIN_ORDER, PrbsError};
+use crate::lsq::validation::{MIN_PART, ValidationError};
 
 use degrau_words::{Lang, Localize, Message};
 

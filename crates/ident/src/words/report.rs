@@ -9,7 +9,7 @@
 
 use crate::diagnose::{DiagnoseReport, Step};
 use crate::fit::{FitReport, FitWarning};
-use crate::models::{Model, Param, pair_poles};
+use crate::model::{Model, Param, pair_poles};
 
 use super::ident::{Naming, cause_name};
 use degrau_words::{Lang, Localize, Message};
@@ -99,7 +99,7 @@ pub fn chain_rows(
 
 /// What the final row's fit had done to it: `final fit (robust fit, Cauchy; intervals × 2.9)`.
 fn final_handling(d: &DiagnoseReport, lang: Lang) -> String {
-    use crate::test_causes::Handling;
+    use crate::diagnose::test_causes::Handling;
     let done: Vec<String> = d
         .test_causes
         .iter()
@@ -440,7 +440,7 @@ pub fn messages() -> Vec<Message> {
 mod tests {
     use super::*;
     use crate::fit::{Estimate, Method, Termination};
-    use crate::models::{Structure, Values};
+    use crate::model::{Structure, Values};
 
     fn report() -> FitReport {
         let structure = Structure::parse("P2DU").unwrap();
@@ -658,7 +658,7 @@ mod tests {
 
     #[test]
     fn a_final_fit_with_widened_intervals_is_a_row_of_its_own() {
-        use crate::test_causes::{Handling, TestCause, TestCauseKind, TestEvidence};
+        use crate::diagnose::test_causes::{Handling, TestCause, TestCauseKind, TestEvidence};
         let mut d = chain();
         assert_eq!(
             chain_rows(&d, Lang::En).1.len(),

@@ -2,10 +2,10 @@
 //! changes drove the fit, and the table of each change fitted on its own window beside the
 //! joint fit (CLI text; the app draws its own table from the same facts).
 
-use crate::excitation::{Excitation, Hold};
+use crate::diagnose::per_step::StepFit;
 use crate::fit::FitReport;
-use crate::models::Param;
-use crate::per_step::StepFit;
+use crate::model::Param;
+use crate::model::excitation::{Excitation, Hold};
 
 use degrau_words::{Lang, Localize, Message};
 
@@ -126,7 +126,7 @@ fn cell(report: &FitReport, p: Param, lang: Lang) -> String {
 /// The per-step table as text lines: a heading, a header row, one row per change and the
 /// joint fit's row, columns aligned.
 pub fn per_step_lines(fits: &[StepFit], joint: &FitReport, lang: Lang) -> Vec<String> {
-    let params = crate::per_step::compared_params(&joint.model.structure);
+    let params = crate::diagnose::per_step::compared_params(&joint.model.structure);
     let mut header = vec![
         StepsPhrase::Step.get(lang).to_string(),
         "t (s)".into(),
@@ -151,14 +151,14 @@ pub fn per_step_lines(fits: &[StepFit], joint: &FitReport, lang: Lang) -> Vec<St
         match &f.fit {
             Ok(r) => {
                 row.extend(params.iter().map(|&p| {
-                    let q = crate::per_step::same_lag(&joint.model, &r.model, p);
+                    let q = crate::diagnose::per_step::same_lag(&joint.model, &r.model, p);
                     cell(r, q, lang)
                 }));
                 let mut figure = lang.num(r.fit_percent, 4);
                 if f.not_at_rest {
                     figure = format!("{figure} ({})", StepsPhrase::NotAtRest.get(lang));
                 }
-                if !crate::test_causes::fit_held(f, &joint.model) {
+                if !crate::diagnose::test_causes::fit_held(f, &joint.model) {
                     figure = format!("{figure} ({})", StepsPhrase::NotHeld.get(lang));
                 }
                 row.push(figure);

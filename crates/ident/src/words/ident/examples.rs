@@ -537,7 +537,7 @@ pub fn messages() -> Vec<Message> {
             format!("{} / {}", handle_label(h, lang), handle_help(h, lang))
         }));
     }
-    for p in crate::models::ALL_PARAMS {
+    for p in crate::model::ALL_PARAMS {
         all.push(Message::of(format!("ident::Param::{p:?}"), &Meaning(p)));
     }
     let whiteness = Some(Whiteness {
@@ -605,7 +605,7 @@ pub fn messages() -> Vec<Message> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::data::{LoadOptions, load_str};
+    use crate::record::data::{LoadOptions, load_str};
     use std::collections::BTreeSet;
 
     fn distinct<T>(all: &[T], id: fn(&T) -> &'static str) -> usize {

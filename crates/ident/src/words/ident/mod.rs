@@ -7,16 +7,16 @@
 //! Numbers in prose take the language's decimal separator ([`Lang::num`]); a number the
 //! loader read from a file is shown in full (`Lang::localize_number` of its shortest form).
 
-use crate::data::{
+use crate::diagnose::{Bias, Cause, Ending, Evidence, Verdict, Whiteness};
+use crate::experiment::ExperimentError;
+use crate::fit::handles::Handle;
+use crate::fit::{FitError, FitWarning, Termination};
+use crate::model::{ModelError, Param, Requirement, Structure};
+use crate::record::data::{
     Column, ColumnList, Columns, DataError, DataNote, FileKind, HeaderFound, MAX_FILE_BYTES, Role,
     Separator, Source,
 };
-use crate::diagnose::{Bias, Cause, Ending, Evidence, Verdict, Whiteness};
-use crate::experiment::ExperimentError;
-use crate::fit::{FitError, FitWarning, Termination};
-use crate::handles::Handle;
-use crate::models::{ModelError, Param, Requirement, Structure};
-use crate::prepare::{Ewma, PrepareError};
+use crate::record::prepare::{Ewma, PrepareError};
 use degrau_lti::LtiError;
 
 use degrau_words::{Lang, Localize, Message};

@@ -6,12 +6,12 @@
 //! `degrau diagnose` and the app's "What the test got wrong" panel; the verdict line that
 //! names the structure and the artefacts together is here too.
 
-use crate::diagnose::{Cause, DiagnoseReport};
-use crate::rest::Motion;
-use crate::test_causes::{
+use crate::diagnose::test_causes::{
     DisturbanceShape, Handling, Loss, RuleCheck, SamplingRule, Signal, StepGain, StepShape,
     TestCause, TestCauseKind, TestEvidence,
 };
+use crate::diagnose::{Cause, DiagnoseReport};
+use crate::fit::rest::Motion;
 
 use super::ident::Naming;
 use degrau_words::{Lang, Localize, Message};
