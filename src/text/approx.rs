@@ -5,7 +5,9 @@ pub use degrau_lti::words::approx::*;
 
 use crate::cli::approx::ApproxCliError;
 
-use super::{Lang, Localize, Message};
+#[cfg(test)]
+use super::Message;
+use super::{Lang, Localize};
 
 impl Localize for ApproxCliError {
     fn text(&self, lang: Lang) -> String {
@@ -33,6 +35,7 @@ impl Localize for ApproxCliError {
 }
 
 /// An example of every refusal of `degrau approx`, for the test of the words.
+#[cfg(test)]
 pub fn cli_messages() -> Vec<Message> {
     [ApproxCliError::BadOrder("x".into()), ApproxCliError::Batch]
         .iter()

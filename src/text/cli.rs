@@ -12,8 +12,10 @@ use crate::lti::Behaviour;
 use crate::lti::parse::ParseError;
 use crate::lti::tf::Stability;
 
+#[cfg(test)]
+use super::Message;
 use super::ident::{Where, experiment_error, lti_words};
-use super::{Lang, Localize, Message};
+use super::{Lang, Localize};
 
 /// The zeros' label of the step report: the same word in both languages.
 pub const ZEROS: &str = "Zeros";
@@ -357,6 +359,7 @@ impl Localize for CliError {
 
 /// An example of every [`CliError`] variant. No wildcard in [`cli_error_id`]: a new variant
 /// does not compile until it is named there, and a test counts the examples.
+#[cfg(test)]
 fn cli_errors() -> Vec<CliError> {
     use crate::ident::experiment::ExperimentError;
     use crate::ident::fit::FitError;
@@ -424,6 +427,7 @@ fn cli_errors() -> Vec<CliError> {
     ]
 }
 
+#[cfg(test)]
 fn cli_error_id(e: &CliError) -> &'static str {
     match e {
         CliError::Parse { .. } => "Parse",
@@ -466,6 +470,7 @@ const CLI_ERROR_VARIANTS: usize = 32;
 /// Every message of the command line, for the test of both languages. `Options`, `Parse`
 /// and `Lti` carry `crate::lti`'s words (its own catalogue lists them), so their examples
 /// are left out.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let mut all = StepPhrase::messages();
     all.extend(Heading::messages());

@@ -10,8 +10,9 @@
 //! - [`phrases!`] declares a catalogue of fixed phrases, each written once with its English
 //!   and its Portuguese side by side; the compiler refuses a phrase without both.
 //! - [`Localize`] is implemented by every typed fact, with a `match` on the fact whose arms
-//!   write both languages; [`every_message`] lists an example of every phrase and fact so a
-//!   test can check that none is missing or left untranslated.
+//!   write both languages; each crate's tests list an example of every phrase and fact it
+//!   says (`words::messages`, built only for its tests) and check that none is missing or
+//!   left untranslated; [`every_message`] does it for the command line's.
 
 pub use degrau_app::words::{app, code, design, identify, lsq_app};
 pub use degrau_ident::words::{ident, operating_point, report, steps, test_causes};
@@ -24,13 +25,11 @@ pub mod cli;
 pub mod hand;
 pub mod lsq;
 
-/// Every message Degrau can show: every crate's own list (its catalogues' phrases and an
-/// example of every fact it says) and the command line's.
+/// Every message of the command line: its catalogues' phrases and an example of every fact
+/// it says (the lti, ident and app crates' tests check theirs).
+#[cfg(test)]
 pub fn every_message() -> Vec<Message> {
-    let mut all = degrau_lti::words::messages();
-    all.extend(degrau_ident::words::messages());
-    all.extend(degrau_app::words::messages());
-    all.extend(cli::messages());
+    let mut all = cli::messages();
     all.extend(approx::cli_messages());
     all
 }

@@ -5,9 +5,13 @@
 
 use crate::fit::FitReport;
 use crate::hand::{HandError, HandEstimate, HandMethod, HandWarning};
-use crate::model::{ModelError, Param};
+use crate::model::Param;
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use crate::model::ModelError;
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 degrau_words::phrases! {
     /// Labels of the hand methods' construction and table.
@@ -68,8 +72,10 @@ pub fn method_name(method: HandMethod, lang: Lang) -> &'static str {
 }
 
 /// The method in words, for the list of the test of every message.
+#[cfg(test)]
 struct MethodName(HandMethod);
 
+#[cfg(test)]
 impl Localize for MethodName {
     fn text(&self, lang: Lang) -> String {
         method_name(self.0, lang).to_string()
@@ -397,6 +403,7 @@ pub fn estimate_lines(e: &HandEstimate, lang: Lang) -> Vec<String> {
 }
 
 /// Every phrase, method name, warning and error, for the test of both languages.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let mut all = HandPhrase::messages();
     for m in HandMethod::ALL {

@@ -7,7 +7,9 @@ use crate::lsq::arx::{Cost, LsqError, Regressor};
 use crate::lsq::prbs::{MAX_ORDER, MIN_ORDER, PrbsError};
 use crate::lsq::validation::{MIN_PART, ValidationError};
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 degrau_words::phrases! {
     /// The labels of the least-squares tables (CLI and app).
@@ -292,6 +294,7 @@ impl Localize for ValidationError {
 }
 
 /// An example of every phrase and error, for the test of both languages.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let mut all = LsqPhrase::messages();
     let lsq = [

@@ -14,6 +14,7 @@ pub mod test_causes;
 
 /// Every message of the ident crate: the loader's, the fit's, the diagnosis's and the
 /// test causes', the hand methods' and least squares', an example of each. A new catalogue or fact adds its line here.
+#[cfg(test)]
 pub fn messages() -> Vec<degrau_words::Message> {
     let mut all = Vec::new();
     all.extend(ident::messages());

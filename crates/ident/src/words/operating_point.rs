@@ -5,7 +5,9 @@
 
 use crate::experiment::{EstimateReason, Offset, OperatingPoint};
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 degrau_words::phrases! {
     /// The names of the offset choices, as a selector lists them.
@@ -129,6 +131,7 @@ impl Localize for OperatingPoint {
 
 /// The offset choices and an example of every [`OperatingPoint`], for
 /// the test of every message.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let examples = [
         OperatingPoint::MeanBefore {

@@ -12,7 +12,9 @@ use crate::fit::{FitReport, FitWarning};
 use crate::model::{Model, Param, pair_poles};
 
 use super::ident::{Naming, cause_name};
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 /// Columns of the chain table.
 pub const CHAIN_COLUMNS: usize = 5;
@@ -432,6 +434,7 @@ pub fn fit_lines(r: &FitReport, lang: Lang) -> Vec<String> {
 }
 
 /// Every phrase of this module, for the test of both languages.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     ReportPhrase::messages()
 }

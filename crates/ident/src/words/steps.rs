@@ -7,7 +7,9 @@ use crate::fit::FitReport;
 use crate::model::Param;
 use crate::model::excitation::{Excitation, Hold};
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 degrau_words::phrases! {
     /// Words of the input and of the per-step table.
@@ -204,8 +206,10 @@ pub fn per_step_lines(fits: &[StepFit], joint: &FitReport, lang: Lang) -> Vec<St
 }
 
 /// An input said by [`input_line`], as a fact for the test of every message.
+#[cfg(test)]
 struct InputWords(Excitation);
 
+#[cfg(test)]
 impl Localize for InputWords {
     fn text(&self, lang: Lang) -> String {
         input_line(&self.0, lang)
@@ -213,6 +217,7 @@ impl Localize for InputWords {
 }
 
 /// Every message of this module, for the test of every message.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let mut all = StepsPhrase::messages();
     for hold in [Hold::Zoh, Hold::Foh] {

@@ -11,7 +11,9 @@ use crate::approx::{
 use crate::words::step::Metric;
 use crate::{C64, TransferFunction, fmt_c};
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 degrau_words::phrases! {
     /// The labels of the approximation view and of `degrau approx`.
@@ -425,6 +427,7 @@ pub fn comparison_table(rows: &[Row], lang: Lang) -> String {
 }
 
 /// Every phrase and an example of every refusal and name, for the test of the text layer.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let mut all = ApproxPhrase::messages();
     let errors = [

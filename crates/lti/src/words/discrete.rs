@@ -1,10 +1,12 @@
 //! The words of discrete models' refusals ([`DiscreteError`]: c2d, d2c and H(z) as typed),
 //! in English and Brazilian Portuguese.
 
-use degrau_words::{Lang, Localize, Message};
+use degrau_words::{Lang, Localize};
 
 use crate::discrete::DiscreteError;
 use crate::{C64, fmt_c};
+#[cfg(test)]
+use degrau_words::Message;
 
 /// A pole as text in `lang`.
 fn pole_text(p: C64, lang: Lang) -> String {
@@ -127,6 +129,7 @@ impl Localize for DiscreteError {
 }
 
 /// An example of every refusal, for the test of the words.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let discrete = [
         DiscreteError::BadSamplingPeriod(0.0),

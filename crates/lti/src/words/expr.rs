@@ -2,7 +2,9 @@
 //! and the note on a form written with repeated poles in place of a cluster of distinct
 //! ones, in English and Brazilian Portuguese (the numbers come already written).
 
-use degrau_words::{Lang, Message};
+use degrau_words::Lang;
+#[cfg(test)]
+use degrau_words::Message;
 
 /// "for t ≥ θ (y = 0 before θ)", with θ as written.
 pub fn after_the_delay(delay: &str, lang: Lang) -> String {
@@ -54,6 +56,7 @@ pub fn approximation_note(clusters: &[String], error: Option<&str>, lang: Lang) 
 }
 
 /// An example of each, for the test of every message.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let poles = ["-1".to_string(), "-1.0001".to_string()];
     let pair = |lang| cluster(&poles, 2, "-1.00005", lang);

@@ -5,7 +5,9 @@
 
 use crate::feedback::{Input, InverseError};
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 impl Localize for InverseError {
     fn text(&self, lang: Lang) -> String {
@@ -393,6 +395,7 @@ degrau_words::phrases! {
 }
 
 /// Every phrase and an example of every fact of this module.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let mut all = Loop::messages();
     all.push(Message::of(

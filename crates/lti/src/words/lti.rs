@@ -10,7 +10,9 @@
 use crate::parse::ParseError;
 use crate::{LtiError, Polynomial, Quantity, RootRole, exact, fmt_c, tf};
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 /// `x` with every digit it has, in `lang`'s decimal separator.
 fn num(lang: Lang, x: f64) -> String {
@@ -416,6 +418,7 @@ impl Localize for ParseError {
 /// `match` it writes on the patterns is exhaustive, so a new variant does not compile until
 /// it has a pair here; each message's id is its pattern, and the test below checks that no
 /// two examples fall on the same pattern (so each pattern has its example).
+#[cfg(test)]
 macro_rules! every_variant {
     ($ty:ty; $( $pat:pat => $example:expr ),+ $(,)?) => {{
         fn variant(e: &$ty) -> &'static str {
@@ -433,6 +436,7 @@ macro_rules! every_variant {
 
 /// An example of every [`LtiError`], [`Quantity`] and [`ParseError`], for
 /// the test of every message.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     use crate::C64;
     let coefficient = Quantity::Coefficient {

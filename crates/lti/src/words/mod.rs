@@ -11,6 +11,7 @@ pub mod step;
 
 /// Every message of the lti crate: its catalogues' phrases and an example of each fact it
 /// says (errors, metrics, approximations, loops, discrete models, y(t)). A new catalogue or fact adds its line here.
+#[cfg(test)]
 pub fn messages() -> Vec<degrau_words::Message> {
     let mut all = Vec::new();
     all.extend(lti::messages());

@@ -7,7 +7,9 @@
 use crate::tf::Stability;
 use crate::{Behaviour, StepInfo, StepInfoOptions};
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 /// A step metric of [`StepInfo`], in the order the table lists them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -307,6 +309,7 @@ pub fn static_gain_words(value: f64, pole: IntegratorPole, lang: Lang) -> Option
 }
 
 /// Every metric name, definition, absence, behaviour and stability, for the catalogue test.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let options = StepInfoOptions::default();
     let mut all = Vec::new();

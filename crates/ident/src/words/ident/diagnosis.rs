@@ -110,8 +110,10 @@ pub fn remedy(cause: Cause, lang: Lang) -> &'static str {
 }
 
 /// A cause's remedy as a fact, for the test of every message.
+#[cfg(test)]
 pub(super) struct Remedy(pub(super) Cause);
 
+#[cfg(test)]
 impl Localize for Remedy {
     fn text(&self, lang: Lang) -> String {
         remedy(self.0, lang).to_string()

@@ -467,6 +467,7 @@ fn examples<T: Localize>(kind: &str, all: Vec<T>, id: fn(&T) -> &'static str) ->
 }
 
 /// Every message of this module: an example of every variant of every fact.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let mut all = examples("DataNote", data_notes(), data_note_id);
     all.extend(examples("DataError", data_errors(), data_error_id));

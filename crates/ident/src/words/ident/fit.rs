@@ -40,8 +40,10 @@ pub fn param_meaning(p: Param, lang: Lang) -> &'static str {
 }
 
 /// A parameter's meaning as a fact, for the test of every message.
+#[cfg(test)]
 pub(super) struct Meaning(pub(super) Param);
 
+#[cfg(test)]
 impl Localize for Meaning {
     fn text(&self, lang: Lang) -> String {
         param_meaning(self.0, lang).to_string()

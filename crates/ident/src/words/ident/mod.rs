@@ -19,7 +19,9 @@ use crate::record::data::{
 use crate::record::prepare::{Ewma, PrepareError};
 use degrau_lti::LtiError;
 
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 /// A number as read, in full, with the language's separator.
 fn full(lang: Lang, x: f64) -> String {
@@ -54,11 +56,13 @@ fn and_list(lang: Lang, items: &[String]) -> String {
 mod data;
 mod diagnosis;
 mod errors;
+#[cfg(test)]
 mod examples;
 mod fit;
 
 pub use data::*;
 pub use diagnosis::*;
 pub use errors::*;
+#[cfg(test)]
 pub use examples::*;
 pub use fit::*;

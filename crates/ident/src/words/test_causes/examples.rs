@@ -3,6 +3,7 @@
 use super::*;
 
 /// An example of every cause, for the test of every message.
+#[cfg(test)]
 pub fn examples() -> Vec<TestCause> {
     let motion = Motion {
         change: 5.2,
@@ -243,6 +244,7 @@ pub fn examples() -> Vec<TestCause> {
 }
 
 /// Every phrase, cause name, evidence, handling and remedy, in both languages.
+#[cfg(test)]
 pub fn messages() -> Vec<Message> {
     let mut all = TestCausePhrase::messages();
     all.extend(

@@ -6,15 +6,19 @@
 //! `degrau diagnose` and the app's "What the test got wrong" panel; the verdict line that
 //! names the structure and the artefacts together is here too.
 
+#[cfg(test)]
+use crate::diagnose::test_causes::Loss;
 use crate::diagnose::test_causes::{
-    DisturbanceShape, Handling, Loss, RuleCheck, SamplingRule, Signal, StepGain, StepShape,
-    TestCause, TestCauseKind, TestEvidence,
+    DisturbanceShape, Handling, RuleCheck, SamplingRule, Signal, StepGain, StepShape, TestCause,
+    TestCauseKind, TestEvidence,
 };
 use crate::diagnose::{Cause, DiagnoseReport};
 use crate::fit::rest::Motion;
 
 use super::ident::Naming;
-use degrau_words::{Lang, Localize, Message};
+#[cfg(test)]
+use degrau_words::Message;
+use degrau_words::{Lang, Localize};
 
 /// `x` with four significant digits.
 fn n4(lang: Lang, x: f64) -> String {
@@ -116,8 +120,10 @@ impl Localize for TestCauseKind {
 }
 
 mod evidence;
+#[cfg(test)]
 mod examples;
 mod remedies;
 
+#[cfg(test)]
 pub use examples::*;
 pub use remedies::*;
