@@ -1,7 +1,8 @@
 //! The egui desktop app, over the lti and ident crates (the only crate of the workspace that
-//! links egui, eframe and rfd); its own words are in [`words`]. The top level is thin: one [`Saved`] (what is kept between runs),
-//! the sessions of the modes (Design: [`design`]; Identify: [`identify`]), the notices and
-//! the saver. Each frame the views draw from the sessions and return commands (egui's own
+//! links egui, eframe and rfd); its own words are in [`words`]. The top level is thin: one
+//! [`Saved`] (what is kept between runs, with each mode's own: [`design::Saved`],
+//! [`identify::Saved`]), the sessions of the modes (Design: [`design`]; Identify:
+//! [`identify`]), the notices and the saver. Each frame the views draw from the sessions and return commands (egui's own
 //! `wrap_app.rs` pattern): the menu's and the keys' commands are applied before the mode
 //! draws, the mode views' commands once after they have all drawn, and the derived data is
 //! brought up to date at once, so every view of a frame shows one state and nothing
@@ -46,7 +47,7 @@ pub fn run() -> eframe::Result {
 
 /// Opens the window; with a step test (path and how to read it), in the identification
 /// mode with that file loaded.
-pub fn run_with(test: Option<identify::IdentSettings>, lang: Option<Lang>) -> eframe::Result {
+pub fn run_with(test: Option<identify::Saved>, lang: Option<Lang>) -> eframe::Result {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("Degrau")
@@ -89,9 +90,9 @@ pub enum Mode {
 #[serde(default)]
 pub struct Saved {
     pub mode: Mode,
-    pub ident: identify::IdentSettings,
+    pub ident: identify::Saved,
     #[serde(flatten)]
-    pub design: design::Kept,
+    pub design: design::Saved,
     pub dark: bool,
     /// The language of every label.
     pub lang: Lang,
@@ -103,8 +104,8 @@ impl Default for Saved {
     fn default() -> Self {
         Self {
             mode: Mode::default(),
-            ident: identify::IdentSettings::default(),
-            design: design::Kept::default(),
+            ident: identify::Saved::default(),
+            design: design::Saved::default(),
             dark: false,
             lang: Lang::default(),
             scale: 1.0,
@@ -210,11 +211,11 @@ impl DegrauApp {
     /// open FILE` and its flags) in place of the saved one: the flags win over the last
     /// session, which would otherwise load its own record first and then clear the new
     /// record's column choices as left over from it.
-    pub fn opening(path: std::path::PathBuf, test: identify::IdentSettings) -> Self {
+    pub fn opening(path: std::path::PathBuf, test: identify::Saved) -> Self {
         Self::from_state_file(path, Some(test))
     }
 
-    fn from_state_file(path: std::path::PathBuf, test: Option<identify::IdentSettings>) -> Self {
+    fn from_state_file(path: std::path::PathBuf, test: Option<identify::Saved>) -> Self {
         let mut restored = persist::restore(&path);
         if let Some(test) = test {
             restored.saved.ident = test;
@@ -240,7 +241,7 @@ impl DegrauApp {
 
     /// [`Self::restore`], with the step test named on the command line in place of the
     /// saved one ([`Self::opening`]).
-    pub fn restore_opening(test: Option<identify::IdentSettings>) -> Self {
+    pub fn restore_opening(test: Option<identify::Saved>) -> Self {
         match persist::default_path() {
             Some(path) => Self::from_state_file(path, test),
             None => {

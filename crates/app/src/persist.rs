@@ -23,10 +23,10 @@ use serde_json::{Map, Value};
 use degrau_words::Localize;
 
 use super::Saved;
-use super::design::Kept;
+use super::design;
 use super::design::splane::{SPlaneState, View};
 use super::design::state::{self, RootRole, System};
-use super::identify::IdentSettings;
+use super::identify;
 use super::look::clamp_scale;
 use degrau_ident::experiment::{Experiment, Offset};
 use degrau_ident::fit::MAX_STARTS;
@@ -190,7 +190,7 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
     let d = Saved::default();
     let mut f = Fields::new(Some(obj), "", &mut problems);
     let system = restore_system(f.nested("system"), d.design.system);
-    let design = Kept {
+    let design = design::Saved {
         compare: f.checked("compare", d.design.compare, |c| {
             c.as_ref().map_or(Ok(()), |(_, s)| {
                 s.check()?;
@@ -274,8 +274,8 @@ fn check_view(v: &View) -> Result<(), String> {
     }
 }
 
-fn restore_ident(mut f: Fields<'_>, d: IdentSettings) -> IdentSettings {
-    IdentSettings {
+fn restore_ident(mut f: Fields<'_>, d: identify::Saved) -> identify::Saved {
+    identify::Saved {
         path: f.take("path", d.path),
         example: f.take("example", d.example),
         experiment: f.checked("experiment", d.experiment, |e| {
@@ -616,7 +616,7 @@ mod tests {
         );
         assert!(back.dark);
         assert_eq!(back.ident.code, "P1D");
-        assert_eq!(back.ident.starts, IdentSettings::default().starts);
+        assert_eq!(back.ident.starts, identify::Saved::default().starts);
         assert_eq!(
             back.design.splane.view, None,
             "an absurd view is fitted again"

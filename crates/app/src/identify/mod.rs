@@ -26,7 +26,7 @@ use eframe::egui;
 use crate::look::Look;
 
 pub use commands::{Command, Outcome};
-pub use session::{CODES, IdentSettings, Session};
+pub use session::{CODES, Saved, Session};
 
 /// The width the right panel starts with (px).
 const PANEL_WIDTH: f32 = 380.0;

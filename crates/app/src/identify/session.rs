@@ -45,7 +45,7 @@ pub const CODES: [&str; 13] = [
 /// Choices kept between runs.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
-pub struct IdentSettings {
+pub struct Saved {
     pub path: String,
     /// The shipped example is what is loaded (it has no path).
     pub example: bool,
@@ -70,7 +70,7 @@ pub struct IdentSettings {
     pub starts: usize,
 }
 
-impl Default for IdentSettings {
+impl Default for Saved {
     fn default() -> Self {
         Self {
             path: String::new(),
@@ -91,7 +91,7 @@ impl Default for IdentSettings {
     }
 }
 
-impl IdentSettings {
+impl Saved {
     /// The reading choices that are not automatic, as typed.
     fn reading_choices(&self) -> Vec<(Choice, String)> {
         [
@@ -290,7 +290,7 @@ type FitJob = Job<Progress, Result<FitReport, FitError>>;
 /// The identification mode's state.
 #[derive(Default)]
 pub struct Session {
-    pub settings: IdentSettings,
+    pub settings: Saved,
     pub loaded: Option<Loaded>,
     /// The last message about loading.
     pub message: Option<LoadMessage>,
@@ -374,7 +374,7 @@ fn suggested_code(test: &StepTest, experiment: &Experiment) -> String {
 impl Session {
     /// A session with the given settings, with the test they name loaded again (the example
     /// or the file, with the choices made on it), as it was when the app was closed.
-    pub fn with_settings(settings: IdentSettings) -> Self {
+    pub fn with_settings(settings: Saved) -> Self {
         let mut session = Self {
             settings: settings.clone(),
             ..Default::default()
@@ -392,8 +392,8 @@ impl Session {
     }
 
     /// The settings to keep between runs, with the loaded test's choices.
-    pub fn settings_to_save(&self) -> IdentSettings {
-        IdentSettings {
+    pub fn settings_to_save(&self) -> Saved {
+        Saved {
             experiment: self.loaded.as_ref().map(|l| l.experiment.clone()),
             ..self.settings.clone()
         }
