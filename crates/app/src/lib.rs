@@ -2,11 +2,17 @@
 //! links egui, eframe and rfd); its own words are in [`words`]. The top level is thin: one
 //! [`Saved`] (what is kept between runs, with each mode's own: [`design::Saved`],
 //! [`identify::Saved`]), the sessions of the modes (Design: [`design`]; Identify:
-//! [`identify`]), the notices and the saver. Each frame the views draw from the sessions and return commands (egui's own
-//! `wrap_app.rs` pattern): the menu's and the keys' commands are applied before the mode
-//! draws, the mode views' commands once after they have all drawn, and the derived data is
-//! brought up to date at once, so every view of a frame shows one state and nothing
-//! changes while drawing.
+//! [`identify`]; least squares: [`lsq`]), the export window, the notices and the saver.
+//!
+//! Each frame the views draw from the sessions and return [`Command`]s (egui's own
+//! `wrap_app.rs` pattern), and one function applies them: the menu's, the keys', the
+//! notices' and what was dropped or pasted are applied before the mode draws; the mode's
+//! jobs are polled, its views and the export window's draw, and their commands are applied
+//! once after they have all drawn. What a mode's command asks of the app (open the fitted
+//! model in Design, load a designed record, open a file dialog) comes back as further
+//! commands, applied in turn. The derived data is brought up to date at once, so every
+//! view of a frame shows one state; no view changes the state, writes a file or opens a
+//! dialog while drawing ([`dialog`] opens them while commands are applied).
 //!
 //! Every change to the design system is one undoable edit (a drag is one edit; a typed
 //! number is one edit when committed). The session ([`Saved`]) is kept in the app's own
@@ -17,6 +23,7 @@
 //! and line widths scale together; the language ([`Saved::lang`]) picks every label.
 
 pub mod design;
+pub mod dialog;
 pub mod export;
 pub mod field;
 pub mod grid;
@@ -29,12 +36,14 @@ pub mod persist;
 pub mod plot_span;
 pub mod words;
 
+use std::collections::VecDeque;
 use std::time::Instant;
 
 use eframe::egui::{self, Ui};
 use serde::{Deserialize, Serialize};
 
 use design::state::System;
+use dialog::Pick;
 use export::ExportState;
 use look::{Look, clamp_scale};
 
@@ -114,7 +123,9 @@ impl Default for Saved {
     }
 }
 
-/// A change the top level makes (the menu, the notices, the keys), or a mode's command.
+/// What the app is asked to do: a change the top level makes (the menu, the notices, the
+/// keys, a file dropped or text pasted, a file dialog), or a mode's or the export window's
+/// command. Every change goes through [`DegrauApp`]'s `apply`, once per frame.
 #[must_use = "a command does nothing until it is applied"]
 #[derive(Debug, Clone, PartialEq)]
 pub enum Command {
@@ -123,12 +134,41 @@ pub enum Command {
     SetLang(Lang),
     SetScale(f32),
     Dismiss(usize),
-    OpenExport,
     /// Choose a step test with the file dialog and open it in the Identify mode.
     OpenTestFile,
     /// The design system as code, to the clipboard.
     CopyCode(CodeKind),
+    /// A file dropped on the window: loaded as a step test in the Identify mode.
+    LoadPath(String),
+    /// Columns pasted as text (or a designed record): loaded as the Identify mode's test.
+    LoadText(String),
+    /// A file dialog; what is chosen in it is applied as the command it makes.
+    Pick(Pick),
+    Export(export::Command),
     Design(design::Command),
+    Identify(identify::Command),
+    Lsq(lsq::Command),
+}
+
+/// What the Identify mode asks of the app after a command.
+fn after_identify(outcome: identify::Outcome) -> Vec<Command> {
+    match outcome {
+        identify::Outcome::ShowOnSPlane { tf, du } => vec![
+            Command::Design(design::Command::SetSystem(System::from_transfer_function(
+                &tf, du,
+            ))),
+            Command::SetMode(Mode::Design),
+        ],
+        identify::Outcome::Pick(pick) => vec![Command::Pick(pick)],
+    }
+}
+
+/// What the least-squares mode asks of the app after a command.
+fn after_lsq(outcome: lsq::Outcome) -> Vec<Command> {
+    match outcome {
+        lsq::Outcome::UseRecord(csv) => vec![Command::LoadText(csv)],
+        lsq::Outcome::Pick(pick) => vec![Command::Pick(pick)],
+    }
 }
 
 /// The app: saved state, the mode sessions, the notices and the saver.
@@ -334,35 +374,86 @@ impl DegrauApp {
                     .inner,
             );
         }
-        // The menu, the keys and the notices are the frame's input: applied before the mode
-        // draws, so a mode chosen in the menu is the one drawn this frame.
+        commands.extend(self.dropped_and_pasted(ui));
+        // The menu, the keys, the notices and what was dropped or pasted are the frame's
+        // input: applied before the mode draws, so a mode chosen in the menu is the one
+        // drawn this frame.
         self.apply(ui.ctx(), commands);
         let look = self.look();
-        let mut commands = Vec::new();
-        self.dropped_and_pasted(ui);
+        let mut commands = self.show_mode(ui, &look);
+        // A PNG asked for last frame is taken now, with the export window not drawn.
+        if !self.export.poll(ui.ctx(), self.plot_rect) {
+            commands.extend(
+                self.export
+                    .show(ui.ctx(), look.lang)
+                    .into_iter()
+                    .map(Command::Export),
+            );
+        }
+        self.apply(ui.ctx(), commands);
+        // A job that ended may have changed what is kept (a diagnosis adopts its model).
+        if self.ident.settings_to_save() != self.saved.ident {
+            self.dirty = true;
+        }
+        self.autosave(ui.ctx());
+    }
+
+    /// The mode: its jobs polled (what finished taken in), then its views drawn from its
+    /// session. Returns what the views asked.
+    fn show_mode(&mut self, ui: &mut Ui, look: &Look) -> Vec<Command> {
         match self.saved.mode {
-            Mode::Identify => self.identify_frame(ui, &look),
-            Mode::LeastSquares => self.lsq_frame(ui, &look),
+            Mode::Identify => {
+                self.poll_identify(ui.ctx());
+                identify::show(ui, &self.ident, look)
+                    .into_iter()
+                    .map(Command::Identify)
+                    .collect()
+            }
+            Mode::LeastSquares => {
+                self.poll_lsq(ui.ctx());
+                let design = self.design.analysis.tf.as_ref().ok();
+                lsq::show(ui, &self.lsq, design, look)
+                    .into_iter()
+                    .map(Command::Lsq)
+                    .collect()
+            }
             Mode::Design => {
-                let shown = design::show(ui, &self.design, &self.saved.design, &look);
+                let shown = design::show(ui, &self.design, &self.saved.design, look);
                 self.plot_rect = shown.plot_rect;
-                commands.extend(shown.commands.into_iter().map(Command::Design));
+                shown.commands.into_iter().map(Command::Design).collect()
             }
         }
-        let compare_curve = self
-            .design
-            .compare_analysis
-            .as_ref()
-            .map(|a| a.curve.as_slice());
-        self.export.show(
-            ui.ctx(),
-            self.plot_rect,
-            &self.design.analysis.curve,
-            compare_curve,
-            look.lang,
-        );
-        self.apply(ui.ctx(), commands);
-        self.autosave(ui.ctx());
+    }
+
+    /// The Identify mode's jobs: what finished is taken in, and frames are asked while one
+    /// runs.
+    fn poll_identify(&mut self, ctx: &egui::Context) {
+        if !self.ident.has_waker() {
+            let ctx = ctx.clone();
+            self.ident
+                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
+        }
+        if self.ident.poll() {
+            ctx.request_repaint();
+        }
+    }
+
+    /// The least-squares mode: the Identify mode's record and fit taken in, the background
+    /// validation polled and the RLS animation advanced (frames asked only while it runs).
+    fn poll_lsq(&mut self, ctx: &egui::Context) {
+        if !self.lsq.has_waker() {
+            let ctx = ctx.clone();
+            self.lsq
+                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
+        }
+        if self.ident.poll() {
+            ctx.request_repaint();
+        }
+        let design = self.design.analysis.tf.as_ref().ok();
+        self.lsq.sync(&self.ident, design);
+        if self.lsq.poll() | self.lsq.tick() {
+            ctx.request_repaint();
+        }
     }
 
     /// Fonts, theme and the presentation size, before anything is laid out.
@@ -395,12 +486,16 @@ impl DegrauApp {
         self.zoom_set = fitted;
     }
 
-    /// Applies the frame's commands, in order, and asks for the next frame to show them.
-    fn apply(&mut self, ctx: &egui::Context, commands: Vec<Command>) {
+    /// Applies the frame's commands, in order (what one asks next is done before the
+    /// next), and asks for the next frame to show them.
+    pub fn apply(&mut self, ctx: &egui::Context, commands: Vec<Command>) {
         let mut changed = false;
-        for command in commands {
+        let mut queue: VecDeque<Command> = commands.into();
+        while let Some(command) = queue.pop_front() {
             changed |= !matches!(command, Command::Design(design::Command::Readout(_)));
-            self.apply_one(ctx, command);
+            for next in self.apply_one(ctx, command).into_iter().rev() {
+                queue.push_front(next);
+            }
         }
         if changed {
             self.dirty = true;
@@ -408,7 +503,8 @@ impl DegrauApp {
         }
     }
 
-    fn apply_one(&mut self, ctx: &egui::Context, command: Command) {
+    /// Carries out one command; returns what it asks the app to do next.
+    fn apply_one(&mut self, ctx: &egui::Context, command: Command) -> Vec<Command> {
         match command {
             Command::SetMode(mode) => self.saved.mode = mode,
             Command::SetDark(dark) => self.saved.dark = dark,
@@ -419,112 +515,91 @@ impl DegrauApp {
                     self.notices.remove(i);
                 }
             }
-            Command::OpenExport => self.export.open = true,
             Command::OpenTestFile => {
-                self.saved.mode = Mode::Identify;
-                if let Some(p) = rfd::FileDialog::new().pick_file() {
-                    self.ident.load_path(&p.display().to_string());
-                }
+                return vec![
+                    Command::SetMode(Mode::Identify),
+                    Command::Pick(Pick::AnyTest),
+                ];
             }
-            Command::CopyCode(kind) => {
-                if let Ok(tf) = &self.design.analysis.tf {
-                    let (num, den) = (tf.num(), tf.den());
-                    let a = self.saved.design.system.amplitude;
-                    let code = match kind {
-                        CodeKind::Matlab => crate::words::code::matlab(&num, &den, tf.delay(), a),
-                        CodeKind::PythonControl => {
-                            crate::words::code::python_control(&num, &den, tf.delay(), a)
-                        }
-                    };
-                    ctx.copy_text(code);
-                    let when = ctx.input(|i| i.time);
-                    self.confirmation = Some((kind.copied(), when));
-                }
+            Command::CopyCode(kind) => self.copy_code(ctx, kind),
+            Command::LoadPath(path) => {
+                return vec![
+                    Command::SetMode(Mode::Identify),
+                    Command::Identify(identify::Command::Open(path)),
+                ];
+            }
+            Command::LoadText(text) => {
+                return vec![Command::Identify(identify::Command::LoadText(text))];
+            }
+            Command::Pick(pick) => return dialog::choose(pick).into_iter().collect(),
+            Command::Export(c) => {
+                let curves = export::Curves {
+                    curve: &self.design.analysis.curve,
+                    compare: self
+                        .design
+                        .compare_analysis
+                        .as_ref()
+                        .map(|a| a.curve.as_slice()),
+                };
+                return match self.export.apply(c, curves) {
+                    Some(export::Outcome::Browse) => vec![Command::Pick(Pick::ExportPath)],
+                    None => Vec::new(),
+                };
             }
             Command::Design(c) => self.design.apply(&mut self.saved.design, c),
-        }
-    }
-
-    /// The identification mode: its session polled (finished jobs taken in), its views
-    /// drawn from it, then their commands applied.
-    fn identify_frame(&mut self, ui: &mut Ui, look: &Look) {
-        if !self.ident.has_waker() {
-            let ctx = ui.ctx().clone();
-            self.ident
-                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
-        }
-        if self.ident.poll() {
-            ui.ctx().request_repaint();
-        }
-        for command in identify::show(ui, &self.ident, look) {
-            if let Some(identify::Outcome::ShowOnSPlane { tf, du }) = self.ident.apply(command) {
-                self.set_system(System::from_transfer_function(&tf, du));
-                self.saved.mode = Mode::Design;
+            Command::Identify(c) => {
+                return self.ident.apply(c).map_or_else(Vec::new, after_identify);
+            }
+            Command::Lsq(c) => {
+                let design = self.design.analysis.tf.as_ref().ok();
+                return self
+                    .lsq
+                    .apply(c, &self.ident, design)
+                    .map_or_else(Vec::new, after_lsq);
             }
         }
-        // Its settings are offered to the saver when they changed (it writes only what
-        // differs from the last file).
-        if self.ident.settings_to_save() != self.saved.ident {
-            self.dirty = true;
-        }
+        Vec::new()
     }
 
-    /// The least-squares mode: the Identify mode's record and fit taken in, the background
-    /// validation polled and the RLS animation advanced (repaints asked only while it
-    /// runs), its views drawn, then their commands applied.
-    fn lsq_frame(&mut self, ui: &mut Ui, look: &Look) {
-        if !self.lsq.has_waker() {
-            let ctx = ui.ctx().clone();
-            self.lsq
-                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
-        }
-        if self.ident.poll() {
-            ui.ctx().request_repaint();
-        }
-        let design = self.design.analysis.tf.as_ref().ok();
-        self.lsq.sync(&self.ident, design);
-        if self.lsq.poll() | self.lsq.tick() {
-            ui.ctx().request_repaint();
-        }
-        for command in lsq::show(ui, &self.lsq, design, look) {
-            if let Some(lsq::Outcome::UseRecord(csv)) = self.lsq.apply(command, &self.ident, design)
-            {
-                self.ident.load_text(&csv);
-                self.lsq.sync(&self.ident, design);
-                self.dirty = true;
+    /// The design system as code for `kind`, to the clipboard, with a confirmation.
+    fn copy_code(&mut self, ctx: &egui::Context, kind: CodeKind) {
+        let Ok(tf) = &self.design.analysis.tf else {
+            return;
+        };
+        let (num, den) = (tf.num(), tf.den());
+        let a = self.saved.design.system.amplitude;
+        let code = match kind {
+            CodeKind::Matlab => crate::words::code::matlab(&num, &den, tf.delay(), a),
+            CodeKind::PythonControl => {
+                crate::words::code::python_control(&num, &den, tf.delay(), a)
             }
-            ui.ctx().request_repaint();
-        }
+        };
+        ctx.copy_text(code);
+        let when = ctx.input(|i| i.time);
+        self.confirmation = Some((kind.copied(), when));
     }
 
-    /// Files dropped on the window load as step tests; text pasted in the identification
+    /// A file dropped on the window loads as a step test; text pasted in the identification
     /// mode (outside a text field) loads as columns.
-    fn dropped_and_pasted(&mut self, ui: &Ui) {
-        let dropped: Vec<String> = ui.input(|i| {
+    fn dropped_and_pasted(&self, ui: &Ui) -> Vec<Command> {
+        let dropped = ui.input(|i| {
             i.raw
                 .dropped_files
-                .iter()
+                .first()
                 .map(|f| f.path().display().to_string())
-                .collect()
         });
-        if let Some(path) = dropped.first() {
-            self.saved.mode = Mode::Identify;
-            self.ident.load_path(path);
-            self.dirty = true;
-        }
+        let mut out: Vec<Command> = dropped.into_iter().map(Command::LoadPath).collect();
         let typing = ui.ctx().memory(|m| m.focused().is_some());
         if self.saved.mode == Mode::Identify && !typing {
-            let pasted: Option<String> = ui.input(|i| {
+            let pasted = ui.input(|i| {
                 i.events.iter().find_map(|e| match e {
                     egui::Event::Paste(text) => Some(text.clone()),
                     _ => None,
                 })
             });
-            if let Some(text) = pasted {
-                self.ident.load_text(&text);
-                self.dirty = true;
-            }
+            out.extend(pasted.map(Command::LoadText));
         }
+        out
     }
 
     /// Hands the session to the saver when something changed (during a drag at most once

@@ -71,7 +71,12 @@ impl DegrauApp {
                     }
                 };
                 item(ui, T::OpenTest, true, Command::OpenTestFile);
-                item(ui, T::Export, true, Command::OpenExport);
+                item(
+                    ui,
+                    T::Export,
+                    true,
+                    Command::Export(crate::export::Command::Open),
+                );
                 let has_tf = self.design.analysis.tf.is_ok();
                 item(
                     ui,

@@ -35,6 +35,7 @@ use std::sync::Arc;
 use super::commands::{Choice, Command, Gesture, OffsetChoice, Outcome};
 use super::cost::LandscapeState;
 use super::steps::{InputPlot, PerStepState, input_plot};
+use crate::dialog::Pick;
 use crate::job::{Job, Waker};
 use degrau_ident::diagnose::{DiagnoseReport, Step};
 use degrau_ident::excitation::{Excitation, Hold};
@@ -334,6 +335,9 @@ impl Session {
                 self.load_path(&path);
             }
             Command::Open(path) => self.load_path(&path),
+            Command::BrowseTest => return Some(Outcome::Pick(Pick::StepTest)),
+            Command::BrowseInputFile => return Some(Outcome::Pick(Pick::InputFile)),
+            Command::LoadText(text) => self.load_text(&text),
             Command::LoadExample => self.load_example(),
             Command::SetChoice(choice, text) => self.set_choice(choice, text),
             Command::SetStepTime(t0) => self.set_step_time(t0),
