@@ -2,13 +2,15 @@
 //! only there and not while a field is typed in; a file dropped loads from any mode; the
 //! Identify mode's outcome (its fitted model on the s-plane) and the least-squares mode's
 //! (a designed record used as the test) come back as the app's own commands; the export
-//! window's view only asks, and only its apply writes.
+//! window's view only asks, and only its apply writes; what a state file could not restore
+//! is said in the window's language.
 
 use crate::kit;
 
 use std::path::PathBuf;
 
 use degrau::app::export::{self, Ask, Curves, ExportState};
+use degrau::app::persist::FILE_NAME;
 use degrau::app::{Command, DegrauApp, Mode, identify, lsq};
 use degrau::text::Lang;
 use eframe::egui;
@@ -199,5 +201,32 @@ fn the_export_window_only_asks_and_its_apply_writes() {
         [export::Command::Browse],
         "the app opens the dialog"
     );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn what_was_not_restored_is_said_in_the_windows_language() {
+    let dir = temp_dir("pt-notice");
+    let path = dir.join(FILE_NAME);
+    let file = serde_json::json!({
+        "lang": "pt",
+        "scale": 7.0,
+        "system": {"amplitude": "two"},
+        "feedback": {"kp": 2e12},
+    });
+    std::fs::write(&path, file.to_string()).expect("write");
+    let h = harness(DegrauApp::with_state_file(path));
+    assert_eq!(h.state().saved.lang, Lang::Pt);
+    h.get_by_label_contains("Parte da última sessão não pôde ser restaurada");
+    h.get_by_label_contains("system.amplitude (\"two\" não é um valor que este campo aceite)");
+    h.get_by_label_contains("scale (o tamanho de apresentação 7 não está entre 1 e 2)");
+    h.get_by_label_contains("feedback (o ganho Kp = 2000000000000 está além de ±1e12)");
+    for english in ["is not", "expected", "beyond", "could not"] {
+        assert!(
+            h.query_by_label_contains(english).is_none(),
+            "English in the Portuguese window: {english}"
+        );
+    }
+    drop(h);
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -47,6 +47,7 @@ use dialog::Pick;
 use export::ExportState;
 use look::{Look, clamp_scale};
 
+use crate::persist::SaveFailure;
 use crate::words::app::{App as T, CodeKind, Notice};
 use degrau_words::Lang;
 
@@ -220,11 +221,11 @@ impl DegrauApp {
     pub fn new(saved: Saved) -> Self {
         let (saved, problems) = match serde_json::to_value(&saved) {
             Ok(value) => persist::restore_value(&value),
-            Err(e) => (
+            Err(_) => (
                 Saved::default(),
                 vec![persist::FieldProblem {
-                    field: "the whole session".into(),
-                    reason: e.to_string(),
+                    field: persist::Field::WholeSession,
+                    reason: persist::Reason::NotWritable,
                 }],
             ),
         };
@@ -253,7 +254,9 @@ impl DegrauApp {
             restored.saved.ident = test;
             restored.saved.mode = Mode::Identify;
             // What could not be restored of the last record's settings is replaced whole.
-            restored.problems.retain(|p| !p.field.starts_with("ident"));
+            restored
+                .problems
+                .retain(|p| !matches!(&p.field, persist::Field::Path(f) if f.starts_with("ident")));
         }
         let mut app = Self::unchecked(restored.saved);
         app.notices.extend(restore_notice(
@@ -617,12 +620,12 @@ impl DegrauApp {
             self.dirty = false;
             self.last_offer = Some(Instant::now());
             serde_json::to_string_pretty(&self.saved)
-                .map_err(|e| e.to_string())
+                .map_err(|_| SaveFailure::NotWritable)
                 .and_then(|json| {
                     saver
                         .offer(json, Some(ctx))
                         .then_some(())
-                        .ok_or_else(|| "the saver has stopped".to_string())
+                        .ok_or(SaveFailure::Stopped)
                 })
                 .err()
         } else {
@@ -631,7 +634,8 @@ impl DegrauApp {
             }
             None
         };
-        if let Some(reason) = failure.or_else(|| saver.take_error()) {
+        let failure = failure.or_else(|| saver.take_error().map(SaveFailure::File));
+        if let Some(reason) = failure {
             let notice = Notice::SaveFailed(reason);
             if !self.notices.contains(&notice) {
                 self.notices.push(notice);
@@ -650,10 +654,7 @@ fn restore_notice(
         return None;
     }
     Some(Notice::NotRestored {
-        fields: problems
-            .iter()
-            .map(|p| format!("{} ({})", p.field, p.reason))
-            .collect(),
+        fields: problems.to_vec(),
         backup: backup.map(|p| p.display().to_string()),
         backup_error: backup_error.map(str::to_string),
     })
