@@ -4,7 +4,9 @@
 use std::path::PathBuf;
 
 use crate::identify::commands::Choice;
+use crate::words::app::App as T;
 use crate::{Command, export, identify, lsq};
+use degrau_words::Lang;
 
 /// A file the student is asked to choose.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -24,17 +26,22 @@ pub enum Pick {
 /// The file kinds a step test or an input is read from.
 const TABLES: [&str; 4] = ["csv", "tsv", "txt", "dat"];
 
-/// Opens the dialog; the command the choice makes, none when it was cancelled.
-pub fn choose(pick: Pick) -> Option<Command> {
+/// Opens the dialog (its kinds of file named in `lang`); the command the choice makes, none
+/// when it was cancelled.
+pub fn choose(pick: Pick, lang: Lang) -> Option<Command> {
     let dialog = rfd::FileDialog::new();
     Some(match pick {
         Pick::AnyTest => Command::Identify(identify::Command::Open(text(dialog.pick_file()?))),
         Pick::StepTest => {
-            let chosen = dialog.add_filter("step tests", &TABLES).pick_file()?;
+            let chosen = dialog
+                .add_filter(T::StepTestFiles.get(lang), &TABLES)
+                .pick_file()?;
             Command::Identify(identify::Command::Open(text(chosen)))
         }
         Pick::InputFile => {
-            let chosen = dialog.add_filter("input", &TABLES).pick_file()?;
+            let chosen = dialog
+                .add_filter(T::InputFiles.get(lang), &TABLES)
+                .pick_file()?;
             Command::Identify(identify::Command::SetChoice(
                 Choice::InputFile,
                 text(chosen),

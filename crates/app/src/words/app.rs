@@ -7,7 +7,8 @@ use degrau_words::{Lang, Localize, Message};
 use crate::persist::{Field, FieldProblem, Reason, SaveFailure};
 
 degrau_words::phrases! {
-    /// The labels of the menu, the notices and the export dialog.
+    /// The labels of the menu, the notices, the export dialog and the file dialogs' kinds
+    /// of file.
     pub enum App {
         ModeDesign => ("Poles and zeros", "Polos e zeros"),
         ModeIdentify => ("Identify a step test", "Identificar um ensaio ao degrau"),
@@ -75,6 +76,8 @@ degrau_words::phrases! {
             "não há curva para salvar: o sistema não é válido"
         ),
         NoPath => ("type a file name first", "digite primeiro um nome de arquivo"),
+        StepTestFiles => ("step tests", "ensaios ao degrau"),
+        InputFiles => ("input", "entrada"),
     }
 }
 
