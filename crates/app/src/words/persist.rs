@@ -16,7 +16,7 @@ use degrau_ident::fit::MAX_STARTS;
 use degrau_lti::feedback::PadeOrder;
 
 /// A number as the program wrote it, with `lang`'s decimal separator.
-fn n(x: impl std::fmt::Display, lang: Lang) -> String {
+fn number(x: impl std::fmt::Display, lang: Lang) -> String {
     lang.localize_number(&x.to_string())
 }
 
@@ -95,21 +95,21 @@ impl Localize for SystemProblem {
                 value,
                 limit: l,
             } => {
-                let (what, value, l) = (what.text(lang), n(value, lang), limit(*l, lang));
+                let (what, value, l) = (what.text(lang), number(value, lang), limit(*l, lang));
                 match lang {
                     Lang::En => format!("{what} = {value} is not a finite number within ±{l}"),
                     Lang::Pt => format!("{what} = {value} não é um número finito dentro de ±{l}"),
                 }
             }
             SystemProblem::RealWithOmega { root, omega } => {
-                let (root, omega) = (root.label(lang), n(omega, lang));
+                let (root, omega) = (root.label(lang), number(omega, lang));
                 match lang {
                     Lang::En => format!("{root} is real but has ω = {omega}"),
                     Lang::Pt => format!("{root} é real mas tem ω = {omega}"),
                 }
             }
             SystemProblem::NegativeOmega { root, omega } => {
-                let (root, omega) = (root.label(lang), n(omega, lang));
+                let (root, omega) = (root.label(lang), number(omega, lang));
                 match lang {
                     Lang::En => format!("{root} has ω = {omega} < 0"),
                     Lang::Pt => format!("{root} tem ω = {omega} < 0"),
@@ -125,7 +125,7 @@ impl Localize for SystemProblem {
                 }
             }
             SystemProblem::NegativeDelay(delay) => {
-                let delay = n(delay, lang);
+                let delay = number(delay, lang);
                 match lang {
                     Lang::En => format!("dead time = {delay} s is negative"),
                     Lang::Pt => format!("tempo morto = {delay} s é negativo"),
@@ -140,10 +140,10 @@ impl Localize for LoopProblem {
         let l = limit(KP_LIMIT, lang);
         match (self, lang) {
             (LoopProblem::Gain(kp), Lang::En) => {
-                format!("the gain Kp = {} is beyond ±{l}", n(kp, lang))
+                format!("the gain Kp = {} is beyond ±{l}", number(kp, lang))
             }
             (LoopProblem::Gain(kp), Lang::Pt) => {
-                format!("o ganho Kp = {} está além de ±{l}", n(kp, lang))
+                format!("o ganho Kp = {} está além de ±{l}", number(kp, lang))
             }
             (LoopProblem::Pade(PadeOrder { m, n }), Lang::En) => {
                 format!("the Padé order ({m}, {n}) is not one offered")
@@ -158,9 +158,9 @@ impl Localize for LoopProblem {
 /// The view's words: out of range, fitted to the roots again.
 fn view_text(v: &View, lang: Lang) -> String {
     let (re, im, ppu) = (
-        n(v.center_re, lang),
-        n(v.center_im, lang),
-        n(v.pixels_per_unit, lang),
+        number(v.center_re, lang),
+        number(v.center_im, lang),
+        number(v.pixels_per_unit, lang),
     );
     match lang {
         Lang::En => format!(
@@ -194,33 +194,41 @@ impl Localize for ExperimentProblem {
                 format!(
                     "{} = {} is not a finite number",
                     what.text(lang),
-                    n(value, lang)
+                    number(value, lang)
                 )
             }
             (ExperimentProblem::NotFinite { what, value }, Lang::Pt) => {
                 format!(
                     "{} = {} não é um número finito",
                     what.text(lang),
-                    n(value, lang)
+                    number(value, lang)
                 )
             }
             (ExperimentProblem::ZeroStep, Lang::En) => "the step size Δu is 0".into(),
             (ExperimentProblem::ZeroStep, Lang::Pt) => "o tamanho do degrau Δu é 0".into(),
             (ExperimentProblem::EmptyWindow(a, b), Lang::En) => {
-                format!("the window {}…{} is empty", n(a, lang), n(b, lang))
+                format!(
+                    "the window {}…{} is empty",
+                    number(a, lang),
+                    number(b, lang)
+                )
             }
             (ExperimentProblem::EmptyWindow(a, b), Lang::Pt) => {
-                format!("a janela {}…{} está vazia", n(a, lang), n(b, lang))
+                format!(
+                    "a janela {}…{} está vazia",
+                    number(a, lang),
+                    number(b, lang)
+                )
             }
             (ExperimentProblem::Filter(fc), Lang::En) => {
                 format!(
                     "the filter cut-off {} Hz is not a positive number",
-                    n(fc, lang)
+                    number(fc, lang)
                 )
             }
             (ExperimentProblem::Filter(fc), Lang::Pt) => format!(
                 "a frequência de corte do filtro, {} Hz, não é um número positivo",
-                n(fc, lang)
+                number(fc, lang)
             ),
         }
     }
@@ -267,10 +275,13 @@ impl Localize for Reason {
                 format!("{starts} partidas, não de 1 a {MAX_STARTS}"),
             ),
             Reason::Scale(s) => say(
-                format!("the presentation size {} is not from 1 to 2", n(s, lang)),
+                format!(
+                    "the presentation size {} is not from 1 to 2",
+                    number(s, lang)
+                ),
                 format!(
                     "o tamanho de apresentação {} não está entre 1 e 2",
-                    n(s, lang)
+                    number(s, lang)
                 ),
             ),
         }
