@@ -169,8 +169,8 @@ pub struct OpenArgs {
 
 impl OpenArgs {
     /// The identification settings the app starts with.
-    pub fn settings(&self) -> crate::app::identify::IdentSettings {
-        crate::app::identify::IdentSettings {
+    pub fn settings(&self) -> crate::app::identify::Saved {
+        crate::app::identify::Saved {
             path: self.file.display().to_string(),
             time_col: self.time_col.clone().unwrap_or_default(),
             y_col: self.y_col.clone().unwrap_or_default(),

@@ -474,7 +474,7 @@ fn finish(result: Result<(), CliError>, lang: Lang) -> ExitCode {
 /// Opens the window (with a step test loaded), in `window_lang` when one was asked for;
 /// a failure is said in `lang`.
 fn open_app_with(
-    test: Option<crate::app::identify::IdentSettings>,
+    test: Option<crate::app::identify::Saved>,
     lang: Lang,
     window_lang: Option<Lang>,
 ) -> ExitCode {

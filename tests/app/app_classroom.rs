@@ -498,7 +498,7 @@ fn in_portuguese_no_plot_paints_a_decimal_point() {
     let app = DegrauApp::new(Saved {
         mode,
         lang: Lang::Pt,
-        ident: degrau::app::identify::IdentSettings {
+        ident: degrau::app::identify::Saved {
             path: file.display().to_string(),
             time_col: "t".into(),
             y_col: "y".into(),

@@ -8,7 +8,7 @@ use kit::{load, wait_for};
 use std::time::{Duration, Instant};
 
 use degrau::app::DegrauApp;
-use degrau::app::identify::IdentSettings;
+use degrau::app::identify;
 use degrau::app::identify::commands::{CodeKind, Command, OffsetChoice};
 use degrau::app::identify::session::{Shown, Status};
 use degrau::ident::model::Param;
@@ -52,7 +52,7 @@ fn with_example() -> Harness<'static, DegrauApp> {
 }
 
 /// The app with the TCLab record loaded (output T1, input Q1), after `edit` on the settings.
-fn tclab_with(edit: impl FnOnce(&mut IdentSettings)) -> Harness<'static, DegrauApp> {
+fn tclab_with(edit: impl FnOnce(&mut identify::Saved)) -> Harness<'static, DegrauApp> {
     let mut h = harness();
     let settings = &mut h.state_mut().ident.settings;
     settings.y_col = "T1".into();

@@ -116,9 +116,25 @@ fn the_fitted_model_goes_to_the_s_plane_with_its_step() {
             assert_eq!(du, 10.0);
             assert!((tf.dc_gain() - kp).abs() < 1e-9 * kp.abs());
         }
-        None => panic!("no outcome"),
+        other => panic!("{other:?}"),
     }
     assert!(Session::default().apply(Command::ShowOnSPlane).is_none());
+}
+
+/// The file dialogs are the app's: the session asks for them and opens none.
+#[test]
+fn the_file_dialogs_are_asked_of_the_app() {
+    use degrau::app::dialog::Pick;
+    let mut s = Session::default();
+    assert!(matches!(
+        s.apply(Command::BrowseTest),
+        Some(Outcome::Pick(Pick::StepTest))
+    ));
+    assert!(matches!(
+        s.apply(Command::BrowseInputFile),
+        Some(Outcome::Pick(Pick::InputFile))
+    ));
+    assert!(s.loaded.is_none() && s.settings.u_path.is_empty());
 }
 
 #[test]

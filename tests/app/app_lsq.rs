@@ -28,7 +28,7 @@ fn harness() -> Harness<'static, DegrauApp> {
 
 /// The app in the Identify mode with its reading settings `set`.
 fn identify_with(
-    set: impl FnOnce(&mut degrau::app::identify::IdentSettings),
+    set: impl FnOnce(&mut degrau::app::identify::Saved),
 ) -> Harness<'static, DegrauApp> {
     let mut h = harness();
     h.get_by_label("Identify a step test").click();

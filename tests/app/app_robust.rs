@@ -12,7 +12,7 @@ use std::time::{Duration, Instant};
 
 use degrau::app::design::splane::View;
 use degrau::app::design::state::{ROOT_LIMIT, Root, System};
-use degrau::app::identify::IdentSettings;
+use degrau::app::identify;
 use degrau::app::persist::FILE_NAME;
 use degrau::app::{DegrauApp, Saved};
 use eframe::egui::{self, Vec2};
@@ -271,7 +271,7 @@ fn an_edit_followed_by_no_frame_is_on_disk_within_a_second() {
 
 /// The record and flags of `degrau open FILE --time-col … --initial-input …` parsed as the
 /// command line parses them.
-fn open_flags(args: &[&str]) -> degrau::app::identify::IdentSettings {
+fn open_flags(args: &[&str]) -> degrau::app::identify::Saved {
     use clap::Parser;
     let mut line = vec!["degrau", "open"];
     line.extend_from_slice(args);
@@ -296,11 +296,11 @@ fn flags_on_the_command_line_win_over_the_saved_session() {
     let records = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/records/");
     let saved = Saved {
         mode: degrau::app::Mode::Identify,
-        ident: IdentSettings {
+        ident: identify::Saved {
             path: format!("{records}multistep_heater_synthetic.csv"),
             code: "P2DZ".into(),
             initial_input: "3".into(),
-            ..IdentSettings::default()
+            ..identify::Saved::default()
         },
         ..Saved::default()
     };
@@ -451,7 +451,7 @@ proptest::proptest! {
         scale in proptest::sample::select(vec![1.0f32, 1.2, 1.3, 1.4, 1.6, 1.8, 2.0]),
     ) {
         let saved = Saved {
-            ident: IdentSettings { code: structure.clone(), drift, ..IdentSettings::default() },
+            ident: identify::Saved { code: structure.clone(), drift, ..identify::Saved::default() },
             mode,
             lang: if pt { degrau::text::Lang::Pt } else { degrau::text::Lang::En },
             dark,
@@ -560,10 +560,10 @@ fn a_diagnosis_ending_on_p3z_starts_again_on_it() {
     let path = dir.join(FILE_NAME);
     let saved = Saved {
         mode: degrau::app::Mode::Identify,
-        ident: IdentSettings {
+        ident: identify::Saved {
             example: true,
             code: "P3Z".into(),
-            ..IdentSettings::default()
+            ..identify::Saved::default()
         },
         ..Saved::default()
     };

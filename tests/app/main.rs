@@ -4,6 +4,7 @@
 mod app;
 mod app_approx;
 mod app_classroom;
+mod app_commands;
 mod app_design;
 mod app_hand;
 mod app_identify;

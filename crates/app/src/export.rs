@@ -2,6 +2,10 @@
 //! the real window, taken once the dialog has closed) and the sampled curve as CSV. The
 //! path is typed or chosen with a file dialog; a file that exists is overwritten only when
 //! the student confirms; the outcome is reported in words, in the app's language.
+//!
+//! The window is a view like the modes': [`ExportState::show`] reads the state and returns
+//! [`Command`]s, and [`ExportState::apply`] carries them out (the only place a file is
+//! written); the app opens the file dialog when asked ([`Outcome::Browse`]).
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -107,6 +111,40 @@ pub enum Figure {
     Window,
 }
 
+/// What a button of the window asks to save, to the typed path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ask {
+    Png(Figure),
+    Csv,
+}
+
+/// What the export window asks ([`ExportState::show`] returns them; [`ExportState::apply`]
+/// carries them out, the only place a file is written).
+#[must_use = "a command does nothing until it is applied"]
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    Open,
+    /// The window's close button.
+    Close,
+    /// The path field's text.
+    SetPath(String),
+    /// Choose the path with the file dialog.
+    Browse,
+    /// Save to the typed path; a file that exists waits for [`Command::Overwrite`].
+    Save(Ask),
+    /// Save what waits for the student's word over the file that exists.
+    Overwrite,
+    /// Drop what waits for the student's word.
+    Cancel,
+}
+
+/// What the export window asks of the app after a command.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    /// Choose the path with the file dialog (the app opens it).
+    Browse,
+}
+
 /// What the dialog was asked to save.
 #[derive(Debug, Clone, PartialEq)]
 enum Save {
@@ -120,26 +158,41 @@ impl Save {
             Save::Png(_, p) | Save::Csv(p) => p,
         }
     }
+
+    /// What `ask` saves to the typed `path`, with the figure's extension.
+    fn of(ask: Ask, path: &str) -> Result<Self, ExportError> {
+        Ok(match ask {
+            Ask::Png(figure) => Save::Png(figure, with_extension(path, "png")?),
+            Ask::Csv => Save::Csv(with_extension(path, "csv")?),
+        })
+    }
 }
 
 /// What happened, said in the dialog.
 #[derive(Debug)]
-enum Outcome {
+enum Said {
     Taking,
     SavedPng(PathBuf),
     SavedCurve(PathBuf),
     Failed(ExportError),
 }
 
-impl Outcome {
+impl Said {
     fn text(&self, lang: Lang) -> String {
         match self {
-            Outcome::Taking => T::Taking.get(lang).to_string(),
-            Outcome::SavedPng(p) => format!("{} {}", T::Saved.get(lang), p.display()),
-            Outcome::SavedCurve(p) => format!("{} {}", T::SavedCurve.get(lang), p.display()),
-            Outcome::Failed(e) => format!("{} {}", T::NotSaved.get(lang), e.text(lang)),
+            Said::Taking => T::Taking.get(lang).to_string(),
+            Said::SavedPng(p) => format!("{} {}", T::Saved.get(lang), p.display()),
+            Said::SavedCurve(p) => format!("{} {}", T::SavedCurve.get(lang), p.display()),
+            Said::Failed(e) => format!("{} {}", T::NotSaved.get(lang), e.text(lang)),
         }
     }
+}
+
+/// The curves a CSV export writes: the step response and the comparison's, if any.
+#[derive(Debug, Clone, Copy)]
+pub struct Curves<'a> {
+    pub curve: &'a [[f64; 2]],
+    pub compare: Option<&'a [[f64; 2]]>,
 }
 
 /// The export window's state. A PNG is taken on the first frame after the window has
@@ -148,12 +201,12 @@ impl Outcome {
 pub struct ExportState {
     pub open: bool,
     pub path: String,
-    status: Option<Outcome>,
+    status: Option<Said>,
     /// A save waiting for "Overwrite".
     confirm: Option<Save>,
     /// A PNG to take once the window is closed.
     pending: Option<(Figure, PathBuf)>,
-    results: (Sender<Outcome>, Receiver<Outcome>),
+    results: (Sender<Said>, Receiver<Said>),
 }
 
 impl Default for ExportState {
@@ -183,88 +236,83 @@ impl ExportState {
         self.status.as_ref().map(|s| s.text(lang))
     }
 
-    /// Shows the window; `plot_rect` is where the step plot was drawn this frame.
-    pub fn show(
-        &mut self,
-        ctx: &egui::Context,
-        plot_rect: Option<Rect>,
-        curve: &[[f64; 2]],
-        compare: Option<&[[f64; 2]]>,
-        lang: Lang,
-    ) {
-        while let Ok(outcome) = self.results.1.try_recv() {
-            self.status = Some(outcome);
+    /// The path a save waits on for "Overwrite", if one does.
+    pub fn waiting(&self) -> Option<&Path> {
+        self.confirm.as_ref().map(Save::path)
+    }
+
+    /// Takes in the screenshots' outcomes (the window opens again to say them) and takes the
+    /// PNG asked for last frame, now that the window is not drawn; `plot_rect` is where the
+    /// step plot was drawn this frame. Whether a PNG is being taken (the window is not shown
+    /// this frame).
+    pub fn poll(&mut self, ctx: &egui::Context, plot_rect: Option<Rect>) -> bool {
+        while let Ok(said) = self.results.1.try_recv() {
+            self.status = Some(said);
             self.open = true;
         }
-        if let Some((figure, path)) = self.pending.take() {
-            // The window was not drawn this frame: the screenshot shows the app alone.
-            self.take_png(ctx, figure, path, plot_rect);
-            return;
+        match self.pending.take() {
+            Some((figure, path)) => {
+                self.take_png(ctx, figure, path, plot_rect);
+                true
+            }
+            None => false,
         }
+    }
+
+    /// Draws the window, if it is open; returns what the student asked.
+    pub fn show(&self, ctx: &egui::Context, lang: Lang) -> Vec<Command> {
+        let mut out = Vec::new();
         // A closed window is not shown at all: egui keeps showing a window whose `open` is
         // false until its fade-out animation ends (at full opacity with `fade_out(false)`),
         // which put the dialog, "Taking the screenshot…", into "Save window as PNG".
         if !self.open {
-            return;
+            return out;
         }
-        let mut open = self.open;
+        let mut open = true;
         egui::Window::new(T::ExportTitle.get(lang))
             .open(&mut open)
             .resizable(false)
-            .show(ctx, |ui| {
-                self.contents(ui, curve, compare, lang);
-            });
-        self.open = open && self.open;
+            .show(ctx, |ui| self.contents(ui, lang, &mut out));
+        if !open {
+            out.push(Command::Close);
+        }
+        out
     }
 
-    fn contents(
-        &mut self,
-        ui: &mut Ui,
-        curve: &[[f64; 2]],
-        compare: Option<&[[f64; 2]]>,
-        lang: Lang,
-    ) {
+    fn contents(&self, ui: &mut Ui, lang: Lang, out: &mut Vec<Command>) {
         ui.horizontal(|ui| {
             let name = ui.label(T::FileLabel.get(lang));
-            ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(360.0))
-                .labelled_by(name.id);
-            if ui.button(T::Browse.get(lang)).clicked()
-                && let Some(p) = rfd::FileDialog::new()
-                    .set_file_name("degrau_step.png")
-                    .save_file()
-            {
-                self.path = p.display().to_string();
+            let mut path = self.path.clone();
+            let edited = ui
+                .add(egui::TextEdit::singleline(&mut path).desired_width(360.0))
+                .labelled_by(name.id)
+                .changed();
+            if edited {
+                out.push(Command::SetPath(path));
+            }
+            if ui.button(T::Browse.get(lang)).clicked() {
+                out.push(Command::Browse);
             }
         });
-        let mut asked = None;
         ui.horizontal_wrapped(|ui| {
-            if ui.button(T::SavePlotPng.get(lang)).clicked() {
-                asked =
-                    Some(with_extension(&self.path, "png").map(|p| Save::Png(Figure::StepPlot, p)));
-            }
-            if ui.button(T::SaveWindowPng.get(lang)).clicked() {
-                asked =
-                    Some(with_extension(&self.path, "png").map(|p| Save::Png(Figure::Window, p)));
-            }
-            if ui.button(T::SaveCsv.get(lang)).clicked() {
-                asked = Some(with_extension(&self.path, "csv").map(Save::Csv));
+            for (text, ask) in [
+                (T::SavePlotPng, Ask::Png(Figure::StepPlot)),
+                (T::SaveWindowPng, Ask::Png(Figure::Window)),
+                (T::SaveCsv, Ask::Csv),
+            ] {
+                if ui.button(text.get(lang)).clicked() {
+                    out.push(Command::Save(ask));
+                }
             }
         });
-        match asked {
-            Some(Ok(save)) if save.path().exists() => self.confirm = Some(save),
-            Some(Ok(save)) => self.save(ui.ctx(), save, curve, compare),
-            Some(Err(e)) => self.status = Some(Outcome::Failed(e)),
-            None => {}
-        }
-        if let Some(save) = self.confirm.clone() {
+        if let Some(path) = self.waiting() {
             ui.horizontal_wrapped(|ui| {
-                ui.label(format!("{} {}", save.path().display(), T::Exists.get(lang)));
+                ui.label(format!("{} {}", path.display(), T::Exists.get(lang)));
                 if ui.button(T::Overwrite.get(lang)).clicked() {
-                    self.confirm = None;
-                    self.save(ui.ctx(), save, curve, compare);
+                    out.push(Command::Overwrite);
                 }
                 if ui.button(T::Cancel.get(lang)).clicked() {
-                    self.confirm = None;
+                    out.push(Command::Cancel);
                 }
             });
         }
@@ -273,26 +321,42 @@ impl ExportState {
         }
     }
 
-    fn save(
-        &mut self,
-        ctx: &egui::Context,
-        save: Save,
-        curve: &[[f64; 2]],
-        compare: Option<&[[f64; 2]]>,
-    ) {
+    /// Carries out one command: a CSV is written here, a PNG is asked for the next frame
+    /// (after the window has closed), a file that exists waits for the student's word.
+    pub fn apply(&mut self, command: Command, curves: Curves<'_>) -> Option<Outcome> {
+        match command {
+            Command::Open => self.open = true,
+            Command::Close => self.open = false,
+            Command::SetPath(path) => self.path = path,
+            Command::Browse => return Some(Outcome::Browse),
+            Command::Save(ask) => match Save::of(ask, &self.path) {
+                Ok(save) if save.path().exists() => self.confirm = Some(save),
+                Ok(save) => self.save(save, curves),
+                Err(e) => self.status = Some(Said::Failed(e)),
+            },
+            Command::Overwrite => {
+                if let Some(save) = self.confirm.take() {
+                    self.save(save, curves);
+                }
+            }
+            Command::Cancel => self.confirm = None,
+        }
+        None
+    }
+
+    fn save(&mut self, save: Save, curves: Curves<'_>) {
         match save {
             Save::Csv(path) => {
-                self.status = Some(match save_csv(&path, curve, compare) {
-                    Ok(()) => Outcome::SavedCurve(path),
-                    Err(e) => Outcome::Failed(e),
+                self.status = Some(match save_csv(&path, curves.curve, curves.compare) {
+                    Ok(()) => Said::SavedCurve(path),
+                    Err(e) => Said::Failed(e),
                 });
             }
             Save::Png(figure, path) => {
                 // Close the window first; the PNG is taken on the next frame.
                 self.open = false;
-                self.status = Some(Outcome::Taking);
+                self.status = Some(Said::Taking);
                 self.pending = Some((figure, path));
-                ctx.request_repaint();
             }
         }
     }
@@ -322,11 +386,11 @@ impl ExportState {
                 Some(r) if r.is_positive() => image.region(&r, Some(pixels_per_point)),
                 _ => (*image).clone(),
             };
-            let outcome = match save_png(&path, &cropped) {
-                Ok(()) => Outcome::SavedPng(path),
-                Err(e) => Outcome::Failed(e),
+            let said = match save_png(&path, &cropped) {
+                Ok(()) => Said::SavedPng(path),
+                Err(e) => Said::Failed(e),
             };
-            let _ = sender.send(outcome);
+            let _ = sender.send(said);
             repaint.request_repaint();
         });
     }
@@ -375,5 +439,99 @@ mod tests {
             save_csv(Path::new("/tmp/x.csv"), &[], None),
             Err(ExportError::NoCurve)
         ));
+    }
+
+    /// A temporary directory of its own for one test.
+    fn temp_dir(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("degrau-export-{name}-{}", std::process::id()));
+        std::fs::remove_dir_all(&dir).ok();
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    const CURVES: Curves<'static> = Curves {
+        curve: &[[0.0, 0.0], [1.0, 0.5]],
+        compare: None,
+    };
+
+    #[test]
+    fn a_csv_is_written_by_apply_and_an_existing_file_waits_for_overwrite() {
+        let dir = temp_dir("apply");
+        let path = dir.join("curve.csv");
+        let mut export = ExportState::default();
+        let apply = |e: &mut ExportState, c| e.apply(c, CURVES);
+        assert_eq!(apply(&mut export, Command::Open), None);
+        assert!(export.open);
+        let typed = dir.join("curve.png").display().to_string();
+        assert_eq!(apply(&mut export, Command::SetPath(typed)), None);
+        assert_eq!(apply(&mut export, Command::Save(Ask::Csv)), None);
+        assert_eq!(
+            std::fs::read_to_string(&path).unwrap(),
+            "t_s,y\n0,0\n1,0.5\n"
+        );
+        assert!(
+            export
+                .status(Lang::En)
+                .unwrap()
+                .starts_with("Saved the curve to")
+        );
+
+        std::fs::write(&path, "kept\n").unwrap();
+        assert_eq!(apply(&mut export, Command::Save(Ask::Csv)), None);
+        assert_eq!(export.waiting(), Some(path.as_path()));
+        assert_eq!(apply(&mut export, Command::Cancel), None);
+        assert_eq!(export.waiting(), None);
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "kept\n");
+        assert_eq!(apply(&mut export, Command::Save(Ask::Csv)), None);
+        assert_eq!(apply(&mut export, Command::Overwrite), None);
+        assert!(
+            std::fs::read_to_string(&path)
+                .unwrap()
+                .starts_with("t_s,y\n")
+        );
+
+        assert_eq!(apply(&mut export, Command::Browse), Some(Outcome::Browse));
+        assert_eq!(apply(&mut export, Command::Close), None);
+        assert!(!export.open);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_png_closes_the_window_and_waits_for_the_next_frame() {
+        let dir = temp_dir("png");
+        let mut export = ExportState {
+            open: true,
+            path: dir.join("plot").display().to_string(),
+            ..ExportState::default()
+        };
+        assert_eq!(
+            export.apply(Command::Save(Ask::Png(Figure::StepPlot)), CURVES),
+            None
+        );
+        assert!(!export.open, "closed before the screenshot");
+        assert_eq!(
+            export.pending,
+            Some((Figure::StepPlot, dir.join("plot.png"))),
+            "taken on the next frame"
+        );
+        assert!(!dir.join("plot.png").exists(), "nothing written yet");
+        assert_eq!(
+            export.status(Lang::Pt).as_deref(),
+            Some("Capturando a tela…")
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_save_without_a_path_says_so_in_the_window_language() {
+        let mut export = ExportState {
+            path: "  ".into(),
+            ..ExportState::default()
+        };
+        assert_eq!(export.apply(Command::Save(Ask::Csv), CURVES), None);
+        assert_eq!(
+            export.status(Lang::Pt).as_deref(),
+            Some("Não salvo: digite primeiro um nome de arquivo")
+        );
     }
 }

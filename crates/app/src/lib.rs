@@ -1,11 +1,18 @@
 //! The egui desktop app, over the lti and ident crates (the only crate of the workspace that
-//! links egui, eframe and rfd); its own words are in [`words`]. The top level is thin: one [`Saved`] (what is kept between runs),
-//! the sessions of the modes (Design: [`design`]; Identify: [`identify`]), the notices and
-//! the saver. Each frame the views draw from the sessions and return commands (egui's own
-//! `wrap_app.rs` pattern): the menu's and the keys' commands are applied before the mode
-//! draws, the mode views' commands once after they have all drawn, and the derived data is
-//! brought up to date at once, so every view of a frame shows one state and nothing
-//! changes while drawing.
+//! links egui, eframe and rfd); its own words are in [`words`]. The top level is thin: one
+//! [`Saved`] (what is kept between runs, with each mode's own: [`design::Saved`],
+//! [`identify::Saved`]), the sessions of the modes (Design: [`design`]; Identify:
+//! [`identify`]; least squares: [`lsq`]), the export window, the notices and the saver.
+//!
+//! Each frame the views draw from the sessions and return [`Command`]s (egui's own
+//! `wrap_app.rs` pattern), and one function applies them: the menu's, the keys', the
+//! notices' and what was dropped or pasted are applied before the mode draws; the mode's
+//! jobs are polled, its views and the export window's draw, and their commands are applied
+//! once after they have all drawn. What a mode's command asks of the app (open the fitted
+//! model in Design, load a designed record, open a file dialog) comes back as further
+//! commands, applied in turn. The derived data is brought up to date at once, so every
+//! view of a frame shows one state; no view changes the state, writes a file or opens a
+//! dialog while drawing ([`dialog`] opens them while commands are applied).
 //!
 //! Every change to the design system is one undoable edit (a drag is one edit; a typed
 //! number is one edit when committed). The session ([`Saved`]) is kept in the app's own
@@ -16,6 +23,7 @@
 //! and line widths scale together; the language ([`Saved::lang`]) picks every label.
 
 pub mod design;
+pub mod dialog;
 pub mod export;
 pub mod field;
 pub mod grid;
@@ -23,21 +31,25 @@ pub mod identify;
 pub mod job;
 pub mod look;
 pub mod lsq;
+mod menu;
 pub mod persist;
 pub mod plot_span;
+mod state_file;
 pub mod words;
 
+use std::collections::VecDeque;
 use std::time::Instant;
 
-use eframe::egui::{self, Key, KeyboardShortcut, Modifiers, RichText, Ui};
+use eframe::egui::{self, Ui};
 use serde::{Deserialize, Serialize};
 
 use design::state::System;
+use dialog::Pick;
 use export::ExportState;
-use look::{Look, SCALE_RANGE, clamp_scale};
+use look::{Look, clamp_scale};
 
 use crate::words::app::{App as T, CodeKind, Notice};
-use degrau_words::{Lang, Localize};
+use degrau_words::Lang;
 
 /// Opens the Degrau window and blocks until it is closed.
 pub fn run() -> eframe::Result {
@@ -46,7 +58,7 @@ pub fn run() -> eframe::Result {
 
 /// Opens the window; with a step test (path and how to read it), in the identification
 /// mode with that file loaded.
-pub fn run_with(test: Option<identify::IdentSettings>, lang: Option<Lang>) -> eframe::Result {
+pub fn run_with(test: Option<identify::Saved>, lang: Option<Lang>) -> eframe::Result {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("Degrau")
@@ -89,9 +101,9 @@ pub enum Mode {
 #[serde(default)]
 pub struct Saved {
     pub mode: Mode,
-    pub ident: identify::IdentSettings,
+    pub ident: identify::Saved,
     #[serde(flatten)]
-    pub design: design::Kept,
+    pub design: design::Saved,
     pub dark: bool,
     /// The language of every label.
     pub lang: Lang,
@@ -103,8 +115,8 @@ impl Default for Saved {
     fn default() -> Self {
         Self {
             mode: Mode::default(),
-            ident: identify::IdentSettings::default(),
-            design: design::Kept::default(),
+            ident: identify::Saved::default(),
+            design: design::Saved::default(),
             dark: false,
             lang: Lang::default(),
             scale: 1.0,
@@ -112,7 +124,9 @@ impl Default for Saved {
     }
 }
 
-/// A change the top level makes (the menu, the notices, the keys), or a mode's command.
+/// What the app is asked to do: a change the top level makes (the menu, the notices, the
+/// keys, a file dropped or text pasted, a file dialog), or a mode's or the export window's
+/// command. Every change goes through [`DegrauApp`]'s `apply`, once per frame.
 #[must_use = "a command does nothing until it is applied"]
 #[derive(Debug, Clone, PartialEq)]
 pub enum Command {
@@ -121,12 +135,41 @@ pub enum Command {
     SetLang(Lang),
     SetScale(f32),
     Dismiss(usize),
-    OpenExport,
     /// Choose a step test with the file dialog and open it in the Identify mode.
     OpenTestFile,
     /// The design system as code, to the clipboard.
     CopyCode(CodeKind),
+    /// A file dropped on the window: loaded as a step test in the Identify mode.
+    LoadPath(String),
+    /// Columns pasted as text (or a designed record): loaded as the Identify mode's test.
+    LoadText(String),
+    /// A file dialog; what is chosen in it is applied as the command it makes.
+    Pick(Pick),
+    Export(export::Command),
     Design(design::Command),
+    Identify(identify::Command),
+    Lsq(lsq::Command),
+}
+
+/// What the Identify mode asks of the app after a command.
+fn after_identify(outcome: identify::Outcome) -> Vec<Command> {
+    match outcome {
+        identify::Outcome::ShowOnSPlane { tf, du } => vec![
+            Command::Design(design::Command::SetSystem(System::from_transfer_function(
+                &tf, du,
+            ))),
+            Command::SetMode(Mode::Design),
+        ],
+        identify::Outcome::Pick(pick) => vec![Command::Pick(pick)],
+    }
+}
+
+/// What the least-squares mode asks of the app after a command.
+fn after_lsq(outcome: lsq::Outcome) -> Vec<Command> {
+    match outcome {
+        lsq::Outcome::UseRecord(csv) => vec![Command::LoadText(csv)],
+        lsq::Outcome::Pick(pick) => vec![Command::Pick(pick)],
+    }
 }
 
 /// The app: saved state, the mode sessions, the notices and the saver.
@@ -166,15 +209,6 @@ fn use_math_fallback_font(ctx: &egui::Context) {
     ctx.set_fonts(fonts);
 }
 
-const UNDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
-const REDO: KeyboardShortcut =
-    KeyboardShortcut::new(Modifiers::COMMAND.plus(Modifiers::SHIFT), Key::Z);
-const REDO_Y: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
-/// How long a confirmation stays in the menu bar (s).
-const CONFIRMATION_SECONDS: f64 = 4.0;
-/// The presentation sizes the menu offers.
-const SCALES: [f32; 6] = [1.0, 1.2, 1.4, 1.6, 1.8, 2.0];
-
 impl Default for DegrauApp {
     fn default() -> Self {
         Self::new(Saved::default())
@@ -182,80 +216,6 @@ impl Default for DegrauApp {
 }
 
 impl DegrauApp {
-    /// An app showing `saved`, checked field by field as a restored file is (a bad field
-    /// falls back to its default with a notice); nothing is written to disk.
-    pub fn new(saved: Saved) -> Self {
-        let (saved, problems) = match serde_json::to_value(&saved) {
-            Ok(value) => persist::restore_value(&value),
-            Err(e) => (
-                Saved::default(),
-                vec![persist::FieldProblem {
-                    field: "the whole session".into(),
-                    reason: e.to_string(),
-                }],
-            ),
-        };
-        let mut app = Self::unchecked(saved);
-        app.notices.extend(restore_notice(&problems, None, None));
-        app
-    }
-
-    /// The session kept in the state file at `path` (restored field by field; a file that
-    /// could not be restored whole is copied aside first), saved there after every change.
-    pub fn with_state_file(path: std::path::PathBuf) -> Self {
-        Self::from_state_file(path, None)
-    }
-
-    /// [`Self::with_state_file`] with the step test named on the command line (`degrau
-    /// open FILE` and its flags) in place of the saved one: the flags win over the last
-    /// session, which would otherwise load its own record first and then clear the new
-    /// record's column choices as left over from it.
-    pub fn opening(path: std::path::PathBuf, test: identify::IdentSettings) -> Self {
-        Self::from_state_file(path, Some(test))
-    }
-
-    fn from_state_file(path: std::path::PathBuf, test: Option<identify::IdentSettings>) -> Self {
-        let mut restored = persist::restore(&path);
-        if let Some(test) = test {
-            restored.saved.ident = test;
-            restored.saved.mode = Mode::Identify;
-            // What could not be restored of the last record's settings is replaced whole.
-            restored.problems.retain(|p| !p.field.starts_with("ident"));
-        }
-        let mut app = Self::unchecked(restored.saved);
-        app.notices.extend(restore_notice(
-            &restored.problems,
-            restored.backup.as_deref(),
-            restored.backup_error.as_deref(),
-        ));
-        app.saver = Some(persist::Saver::spawn(path));
-        app
-    }
-
-    /// The last session from the state file in its usual place ([`persist::default_path`]),
-    /// or the built-in example.
-    pub fn restore() -> Self {
-        Self::restore_opening(None)
-    }
-
-    /// [`Self::restore`], with the step test named on the command line in place of the
-    /// saved one ([`Self::opening`]).
-    pub fn restore_opening(test: Option<identify::IdentSettings>) -> Self {
-        match persist::default_path() {
-            Some(path) => Self::from_state_file(path, test),
-            None => {
-                let mut saved = Saved::default();
-                if let Some(test) = test {
-                    saved.ident = test;
-                    saved.mode = Mode::Identify;
-                }
-                let mut app = Self::new(saved);
-                app.notices.push(Notice::NoHome);
-                app
-            }
-        }
-    }
-
     /// An app showing `saved` as it is (the callers check it first).
     fn unchecked(saved: Saved) -> Self {
         let ident = identify::Session::with_settings(saved.ident.clone());
@@ -274,11 +234,6 @@ impl DegrauApp {
             dirty: true,
             last_offer: None,
         }
-    }
-
-    /// The state file the session is saved to, if it is saved.
-    pub fn state_file(&self) -> Option<&std::path::Path> {
-        self.saver.as_ref().map(|s| s.path())
     }
 
     /// The system being edited.
@@ -341,35 +296,86 @@ impl DegrauApp {
                     .inner,
             );
         }
-        // The menu, the keys and the notices are the frame's input: applied before the mode
-        // draws, so a mode chosen in the menu is the one drawn this frame.
+        commands.extend(self.dropped_and_pasted(ui));
+        // The menu, the keys, the notices and what was dropped or pasted are the frame's
+        // input: applied before the mode draws, so a mode chosen in the menu is the one
+        // drawn this frame.
         self.apply(ui.ctx(), commands);
         let look = self.look();
-        let mut commands = Vec::new();
-        self.dropped_and_pasted(ui);
+        let mut commands = self.show_mode(ui, &look);
+        // A PNG asked for last frame is taken now, with the export window not drawn.
+        if !self.export.poll(ui.ctx(), self.plot_rect) {
+            commands.extend(
+                self.export
+                    .show(ui.ctx(), look.lang)
+                    .into_iter()
+                    .map(Command::Export),
+            );
+        }
+        self.apply(ui.ctx(), commands);
+        // A job that ended may have changed what is kept (a diagnosis adopts its model).
+        if self.ident.settings_to_save() != self.saved.ident {
+            self.dirty = true;
+        }
+        self.autosave(ui.ctx());
+    }
+
+    /// The mode: its jobs polled (what finished taken in), then its views drawn from its
+    /// session. Returns what the views asked.
+    fn show_mode(&mut self, ui: &mut Ui, look: &Look) -> Vec<Command> {
         match self.saved.mode {
-            Mode::Identify => self.identify_frame(ui, &look),
-            Mode::LeastSquares => self.lsq_frame(ui, &look),
+            Mode::Identify => {
+                self.poll_identify(ui.ctx());
+                identify::show(ui, &self.ident, look)
+                    .into_iter()
+                    .map(Command::Identify)
+                    .collect()
+            }
+            Mode::LeastSquares => {
+                self.poll_lsq(ui.ctx());
+                let design = self.design.analysis.tf.as_ref().ok();
+                lsq::show(ui, &self.lsq, design, look)
+                    .into_iter()
+                    .map(Command::Lsq)
+                    .collect()
+            }
             Mode::Design => {
-                let shown = design::show(ui, &self.design, &self.saved.design, &look);
+                let shown = design::show(ui, &self.design, &self.saved.design, look);
                 self.plot_rect = shown.plot_rect;
-                commands.extend(shown.commands.into_iter().map(Command::Design));
+                shown.commands.into_iter().map(Command::Design).collect()
             }
         }
-        let compare_curve = self
-            .design
-            .compare_analysis
-            .as_ref()
-            .map(|a| a.curve.as_slice());
-        self.export.show(
-            ui.ctx(),
-            self.plot_rect,
-            &self.design.analysis.curve,
-            compare_curve,
-            look.lang,
-        );
-        self.apply(ui.ctx(), commands);
-        self.autosave(ui.ctx());
+    }
+
+    /// The Identify mode's jobs: what finished is taken in, and frames are asked while one
+    /// runs.
+    fn poll_identify(&mut self, ctx: &egui::Context) {
+        if !self.ident.has_waker() {
+            let ctx = ctx.clone();
+            self.ident
+                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
+        }
+        if self.ident.poll() {
+            ctx.request_repaint();
+        }
+    }
+
+    /// The least-squares mode: the Identify mode's record and fit taken in, the background
+    /// validation polled and the RLS animation advanced (frames asked only while it runs).
+    fn poll_lsq(&mut self, ctx: &egui::Context) {
+        if !self.lsq.has_waker() {
+            let ctx = ctx.clone();
+            self.lsq
+                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
+        }
+        if self.ident.poll() {
+            ctx.request_repaint();
+        }
+        let design = self.design.analysis.tf.as_ref().ok();
+        self.lsq.sync(&self.ident, design);
+        if self.lsq.poll() | self.lsq.tick() {
+            ctx.request_repaint();
+        }
     }
 
     /// Fonts, theme and the presentation size, before anything is laid out.
@@ -402,12 +408,16 @@ impl DegrauApp {
         self.zoom_set = fitted;
     }
 
-    /// Applies the frame's commands, in order, and asks for the next frame to show them.
-    fn apply(&mut self, ctx: &egui::Context, commands: Vec<Command>) {
+    /// Applies the frame's commands, in order (what one asks next is done before the
+    /// next), and asks for the next frame to show them.
+    pub fn apply(&mut self, ctx: &egui::Context, commands: Vec<Command>) {
         let mut changed = false;
-        for command in commands {
+        let mut queue: VecDeque<Command> = commands.into();
+        while let Some(command) = queue.pop_front() {
             changed |= !matches!(command, Command::Design(design::Command::Readout(_)));
-            self.apply_one(ctx, command);
+            for next in self.apply_one(ctx, command).into_iter().rev() {
+                queue.push_front(next);
+            }
         }
         if changed {
             self.dirty = true;
@@ -415,7 +425,8 @@ impl DegrauApp {
         }
     }
 
-    fn apply_one(&mut self, ctx: &egui::Context, command: Command) {
+    /// Carries out one command; returns what it asks the app to do next.
+    fn apply_one(&mut self, ctx: &egui::Context, command: Command) -> Vec<Command> {
         match command {
             Command::SetMode(mode) => self.saved.mode = mode,
             Command::SetDark(dark) => self.saved.dark = dark,
@@ -426,394 +437,94 @@ impl DegrauApp {
                     self.notices.remove(i);
                 }
             }
-            Command::OpenExport => self.export.open = true,
             Command::OpenTestFile => {
-                self.saved.mode = Mode::Identify;
-                if let Some(p) = rfd::FileDialog::new().pick_file() {
-                    self.ident.load_path(&p.display().to_string());
-                }
+                return vec![
+                    Command::SetMode(Mode::Identify),
+                    Command::Pick(Pick::AnyTest),
+                ];
             }
-            Command::CopyCode(kind) => {
-                if let Ok(tf) = &self.design.analysis.tf {
-                    let (num, den) = (tf.num(), tf.den());
-                    let a = self.saved.design.system.amplitude;
-                    let code = match kind {
-                        CodeKind::Matlab => crate::words::code::matlab(&num, &den, tf.delay(), a),
-                        CodeKind::PythonControl => {
-                            crate::words::code::python_control(&num, &den, tf.delay(), a)
-                        }
-                    };
-                    ctx.copy_text(code);
-                    let when = ctx.input(|i| i.time);
-                    self.confirmation = Some((kind.copied(), when));
-                }
+            Command::CopyCode(kind) => self.copy_code(ctx, kind),
+            Command::LoadPath(path) => {
+                return vec![
+                    Command::SetMode(Mode::Identify),
+                    Command::Identify(identify::Command::Open(path)),
+                ];
+            }
+            Command::LoadText(text) => {
+                return vec![Command::Identify(identify::Command::LoadText(text))];
+            }
+            Command::Pick(pick) => {
+                return dialog::choose(pick, self.saved.lang).into_iter().collect();
+            }
+            Command::Export(c) => {
+                let curves = export::Curves {
+                    curve: &self.design.analysis.curve,
+                    compare: self
+                        .design
+                        .compare_analysis
+                        .as_ref()
+                        .map(|a| a.curve.as_slice()),
+                };
+                return match self.export.apply(c, curves) {
+                    Some(export::Outcome::Browse) => vec![Command::Pick(Pick::ExportPath)],
+                    None => Vec::new(),
+                };
             }
             Command::Design(c) => self.design.apply(&mut self.saved.design, c),
+            Command::Identify(c) => {
+                return self.ident.apply(c).map_or_else(Vec::new, after_identify);
+            }
+            Command::Lsq(c) => {
+                let design = self.design.analysis.tf.as_ref().ok();
+                return self
+                    .lsq
+                    .apply(c, &self.ident, design)
+                    .map_or_else(Vec::new, after_lsq);
+            }
         }
+        Vec::new()
     }
 
-    /// Undo and redo (both modes' menus and keys act on the design system), then the
-    /// Design mode's own keys.
-    fn keyboard(&mut self, ui: &mut Ui) -> Vec<Command> {
-        // Ctrl+Z matches Ctrl+Shift+Z too in egui's logical matching: consume redo first.
-        let redo = ui.input_mut(|i| i.consume_shortcut(&REDO) || i.consume_shortcut(&REDO_Y));
-        let undo = ui.input_mut(|i| i.consume_shortcut(&UNDO));
-        let mut out = Vec::new();
-        if redo {
-            out.push(Command::Design(design::Command::Redo));
-        } else if undo {
-            out.push(Command::Design(design::Command::Undo));
-        }
-        if self.saved.mode == Mode::Design {
-            out.extend(
-                design::keyboard(ui, &self.saved.design)
-                    .into_iter()
-                    .map(Command::Design),
-            );
-        }
-        out
-    }
-
-    fn menu_bar(&self, ui: &mut Ui, look: &Look) -> Vec<Command> {
-        let lang = look.lang;
-        let mut out = Vec::new();
-        let history = &self.design.history;
-        let kept = &self.saved.design;
-        egui::MenuBar::new().ui(ui, |ui| {
-            let mut mode = self.saved.mode;
-            ui.selectable_value(&mut mode, Mode::Design, T::ModeDesign.get(lang));
-            ui.selectable_value(&mut mode, Mode::Identify, T::ModeIdentify.get(lang));
-            ui.selectable_value(
-                &mut mode,
-                Mode::LeastSquares,
-                crate::words::lsq_app::Phrase::ModeName.get(lang),
-            );
-            if mode != self.saved.mode {
-                out.push(Command::SetMode(mode));
-            }
-            ui.separator();
-            ui.menu_button(T::File.get(lang), |ui| {
-                let mut item = |ui: &mut Ui, text: T, enabled: bool, command: Command| {
-                    if ui
-                        .add_enabled(enabled, egui::Button::new(text.get(lang)))
-                        .clicked()
-                    {
-                        out.push(command);
-                        ui.close();
-                    }
-                };
-                item(ui, T::OpenTest, true, Command::OpenTestFile);
-                item(ui, T::Export, true, Command::OpenExport);
-                let has_tf = self.design.analysis.tf.is_ok();
-                item(
-                    ui,
-                    T::CopyMatlab,
-                    has_tf,
-                    Command::CopyCode(CodeKind::Matlab),
-                );
-                item(
-                    ui,
-                    T::CopyPython,
-                    has_tf,
-                    Command::CopyCode(CodeKind::PythonControl),
-                );
-                item(
-                    ui,
-                    T::Reset,
-                    true,
-                    Command::Design(design::Command::SetSystem(System::default())),
-                );
-            });
-            ui.menu_button(T::Edit.get(lang), |ui| {
-                let undo = egui::Button::new(T::Undo.get(lang))
-                    .shortcut_text(ui.ctx().format_shortcut(&UNDO));
-                if ui.add_enabled(history.can_undo(), undo).clicked() {
-                    out.push(Command::Design(design::Command::Undo));
-                    ui.close();
-                }
-                let redo = egui::Button::new(T::Redo.get(lang))
-                    .shortcut_text(ui.ctx().format_shortcut(&REDO));
-                if ui.add_enabled(history.can_redo(), redo).clicked() {
-                    out.push(Command::Design(design::Command::Redo));
-                    ui.close();
-                }
-                let delete = egui::Button::new(T::DeleteSelected.get(lang))
-                    .shortcut_text(T::DeleteKey.get(lang));
-                if let Some(id) = kept.splane.selected
-                    && ui.add(delete).clicked()
-                {
-                    out.push(Command::Design(design::Command::RemoveRoot(id)));
-                    ui.close();
-                }
-            });
-            ui.menu_button(T::View.get(lang), |ui| {
-                let mut dark = self.saved.dark;
-                if ui.checkbox(&mut dark, T::DarkTheme.get(lang)).changed() {
-                    out.push(Command::SetDark(dark));
-                }
-                let mut grid = kept.splane.damping_grid;
-                if ui.checkbox(&mut grid, T::DampingLines.get(lang)).changed() {
-                    out.push(Command::Design(design::Command::SetDampingGrid(grid)));
-                }
-                let mut snap = kept.splane.snap;
-                if ui.checkbox(&mut snap, T::SnapRoots.get(lang)).changed() {
-                    out.push(Command::Design(design::Command::SetSnap(snap)));
-                }
-                if ui.button(T::FitSPlane.get(lang)).clicked() {
-                    out.push(Command::Design(design::Command::SetView(None)));
-                    ui.close();
-                }
-                ui.separator();
-                ui.label(T::PresentationSize.get(lang));
-                for scale in SCALES {
-                    let text = format!("{}×", lang.num(scale as f64, 2));
-                    let on = (self.saved.scale - scale).abs() < 0.05;
-                    if ui.selectable_label(on, text).clicked() {
-                        out.push(Command::SetScale(scale));
-                        ui.close();
-                    }
-                }
-                ui.separator();
-                ui.label(T::Language.get(lang));
-                for l in Lang::ALL {
-                    if ui.selectable_label(l == lang, l.name()).clicked() {
-                        out.push(Command::SetLang(l));
-                        ui.close();
-                    }
-                }
-            });
-            if ui
-                .add_enabled(history.can_undo(), egui::Button::new(T::Undo.get(lang)))
-                .clicked()
-            {
-                out.push(Command::Design(design::Command::Undo));
-            }
-            if ui
-                .add_enabled(history.can_redo(), egui::Button::new(T::Redo.get(lang)))
-                .clicked()
-            {
-                out.push(Command::Design(design::Command::Redo));
-            }
-            ui.separator();
-            out.extend(self.size_and_language(ui, look));
-            if let Some((text, _)) = self.confirmation_now(ui.ctx()) {
-                ui.label(RichText::new(text.get(lang)).color(look.palette.main));
-            }
-        });
-        out
-    }
-
-    /// The visible presentation-size control (A− size A+) and the language switch.
-    fn size_and_language(&self, ui: &mut Ui, look: &Look) -> Vec<Command> {
-        let lang = look.lang;
-        let mut out = Vec::new();
-        let scale = self.saved.scale;
-        let step = 0.2;
-        if ui
-            .add_enabled(scale > *SCALE_RANGE.start() + 1e-3, egui::Button::new("A−"))
-            .on_hover_text(T::Smaller.get(lang))
-            .clicked()
-        {
-            out.push(Command::SetScale(scale - step));
-        }
-        // The size drawn at: less than the one asked for when the window is too small.
-        let capped = self.zoom_set < scale - 1e-3;
-        let hint = if capped {
-            T::SizeCapped
-        } else {
-            T::PresentationSize
+    /// The design system as code for `kind`, to the clipboard, with a confirmation.
+    fn copy_code(&mut self, ctx: &egui::Context, kind: CodeKind) {
+        let Ok(tf) = &self.design.analysis.tf else {
+            return;
         };
-        ui.label(format!("{}×", lang.num(self.zoom_set as f64, 2)))
-            .on_hover_text(hint.get(lang));
-        if ui
-            .add_enabled(scale < *SCALE_RANGE.end() - 1e-3, egui::Button::new("A+"))
-            .on_hover_text(T::Larger.get(lang))
-            .clicked()
-        {
-            out.push(Command::SetScale(scale + step));
-        }
-        egui::ComboBox::from_id_salt("language")
-            .selected_text(lang.name())
-            .show_ui(ui, |ui| {
-                for l in Lang::ALL {
-                    if ui.selectable_label(l == lang, l.name()).clicked() {
-                        out.push(Command::SetLang(l));
-                    }
-                }
-            })
-            .response
-            .on_hover_text(T::Language.get(lang));
-        out
-    }
-
-    /// The confirmation to show now, if one was given in the last few seconds.
-    fn confirmation_now(&self, ctx: &egui::Context) -> Option<(T, f64)> {
-        let (text, when) = self.confirmation?;
-        let left = CONFIRMATION_SECONDS - (ctx.input(|i| i.time) - when);
-        if left > 0.0 {
-            ctx.request_repaint_after(std::time::Duration::from_secs_f64(left));
-            Some((text, when))
-        } else {
-            None
-        }
-    }
-
-    /// The identification mode: its session polled (finished jobs taken in), its views
-    /// drawn from it, then their commands applied.
-    fn identify_frame(&mut self, ui: &mut Ui, look: &Look) {
-        if !self.ident.has_waker() {
-            let ctx = ui.ctx().clone();
-            self.ident
-                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
-        }
-        if self.ident.poll() {
-            ui.ctx().request_repaint();
-        }
-        for command in identify::show(ui, &self.ident, look) {
-            if let Some(identify::Outcome::ShowOnSPlane { tf, du }) = self.ident.apply(command) {
-                self.set_system(System::from_transfer_function(&tf, du));
-                self.saved.mode = Mode::Design;
+        let (num, den) = (tf.num(), tf.den());
+        let a = self.saved.design.system.amplitude;
+        let code = match kind {
+            CodeKind::Matlab => crate::words::code::matlab(&num, &den, tf.delay(), a),
+            CodeKind::PythonControl => {
+                crate::words::code::python_control(&num, &den, tf.delay(), a)
             }
-        }
-        // Its settings are offered to the saver when they changed (it writes only what
-        // differs from the last file).
-        if self.ident.settings_to_save() != self.saved.ident {
-            self.dirty = true;
-        }
+        };
+        ctx.copy_text(code);
+        let when = ctx.input(|i| i.time);
+        self.confirmation = Some((kind.copied(), when));
     }
 
-    /// The least-squares mode: the Identify mode's record and fit taken in, the background
-    /// validation polled and the RLS animation advanced (repaints asked only while it
-    /// runs), its views drawn, then their commands applied.
-    fn lsq_frame(&mut self, ui: &mut Ui, look: &Look) {
-        if !self.lsq.has_waker() {
-            let ctx = ui.ctx().clone();
-            self.lsq
-                .set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
-        }
-        if self.ident.poll() {
-            ui.ctx().request_repaint();
-        }
-        let design = self.design.analysis.tf.as_ref().ok();
-        self.lsq.sync(&self.ident, design);
-        if self.lsq.poll() | self.lsq.tick() {
-            ui.ctx().request_repaint();
-        }
-        for command in lsq::show(ui, &self.lsq, design, look) {
-            if let Some(lsq::Outcome::UseRecord(csv)) = self.lsq.apply(command, &self.ident, design)
-            {
-                self.ident.load_text(&csv);
-                self.lsq.sync(&self.ident, design);
-                self.dirty = true;
-            }
-            ui.ctx().request_repaint();
-        }
-    }
-
-    /// Files dropped on the window load as step tests; text pasted in the identification
+    /// A file dropped on the window loads as a step test; text pasted in the identification
     /// mode (outside a text field) loads as columns.
-    fn dropped_and_pasted(&mut self, ui: &Ui) {
-        let dropped: Vec<String> = ui.input(|i| {
+    fn dropped_and_pasted(&self, ui: &Ui) -> Vec<Command> {
+        let dropped = ui.input(|i| {
             i.raw
                 .dropped_files
-                .iter()
+                .first()
                 .map(|f| f.path().display().to_string())
-                .collect()
         });
-        if let Some(path) = dropped.first() {
-            self.saved.mode = Mode::Identify;
-            self.ident.load_path(path);
-            self.dirty = true;
-        }
+        let mut out: Vec<Command> = dropped.into_iter().map(Command::LoadPath).collect();
         let typing = ui.ctx().memory(|m| m.focused().is_some());
         if self.saved.mode == Mode::Identify && !typing {
-            let pasted: Option<String> = ui.input(|i| {
+            let pasted = ui.input(|i| {
                 i.events.iter().find_map(|e| match e {
                     egui::Event::Paste(text) => Some(text.clone()),
                     _ => None,
                 })
             });
-            if let Some(text) = pasted {
-                self.ident.load_text(&text);
-                self.dirty = true;
-            }
-        }
-    }
-
-    /// The notices, each with a button to dismiss it.
-    fn show_notices(&self, ui: &mut Ui, look: &Look) -> Vec<Command> {
-        let mut out = Vec::new();
-        for (i, notice) in self.notices.iter().enumerate() {
-            ui.horizontal_wrapped(|ui| {
-                if ui.button(T::Dismiss.get(look.lang)).clicked() {
-                    out.push(Command::Dismiss(i));
-                }
-                ui.add(
-                    egui::Label::new(
-                        RichText::new(notice.text(look.lang)).color(look.palette.warning),
-                    )
-                    .wrap(),
-                );
-            });
+            out.extend(pasted.map(Command::LoadText));
         }
         out
     }
-
-    /// Hands the session to the saver when something changed (during a drag at most once
-    /// per [`persist::DEBOUNCE`]), and shows a notice when writing failed.
-    fn autosave(&mut self, ctx: &egui::Context) {
-        let Some(saver) = self.saver.as_mut() else {
-            return;
-        };
-        let recent = self
-            .last_offer
-            .is_some_and(|t| t.elapsed() < persist::DEBOUNCE);
-        let dragging = ctx.input(|i| i.pointer.any_down());
-        let failure = if self.dirty && !(dragging && recent) {
-            self.saved.ident = self.ident.settings_to_save();
-            self.dirty = false;
-            self.last_offer = Some(Instant::now());
-            serde_json::to_string_pretty(&self.saved)
-                .map_err(|e| e.to_string())
-                .and_then(|json| {
-                    saver
-                        .offer(json, Some(ctx))
-                        .then_some(())
-                        .ok_or_else(|| "the saver has stopped".to_string())
-                })
-                .err()
-        } else {
-            if self.dirty {
-                ctx.request_repaint_after(persist::DEBOUNCE);
-            }
-            None
-        };
-        if let Some(reason) = failure.or_else(|| saver.take_error()) {
-            let notice = Notice::SaveFailed(reason);
-            if !self.notices.contains(&notice) {
-                self.notices.push(notice);
-            }
-        }
-    }
-}
-
-/// The notice of what could not be restored, naming each field, if anything.
-fn restore_notice(
-    problems: &[persist::FieldProblem],
-    backup: Option<&std::path::Path>,
-    backup_error: Option<&str>,
-) -> Option<Notice> {
-    if problems.is_empty() {
-        return None;
-    }
-    Some(Notice::NotRestored {
-        fields: problems
-            .iter()
-            .map(|p| format!("{} ({})", p.field, p.reason))
-            .collect(),
-        backup: backup.map(|p| p.display().to_string()),
-        backup_error: backup_error.map(str::to_string),
-    })
 }
 
 impl eframe::App for DegrauApp {

@@ -9,6 +9,15 @@
 //! disk, then renamed over the old one, so a kill at any moment leaves either the old or the
 //! new state whole. A file that cannot be restored whole is copied aside
 //! (`state.json.bad-<unix seconds>`) before anything overwrites it.
+//!
+//! What could not be restored or saved is told as typed facts ([`problem`]), said in the
+//! window's language by [`crate::words::persist`].
+
+mod problem;
+
+pub use problem::{
+    ExperimentProblem, Field, FieldProblem, FileAction, Reason, SaveFailure, StateError, TestValue,
+};
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -20,13 +29,11 @@ use eframe::egui;
 use serde::de::DeserializeOwned;
 use serde_json::{Map, Value};
 
-use degrau_words::Localize;
-
 use super::Saved;
-use super::design::Kept;
+use super::design;
 use super::design::splane::{SPlaneState, View};
 use super::design::state::{self, RootRole, System};
-use super::identify::IdentSettings;
+use super::identify;
 use super::look::clamp_scale;
 use degrau_ident::experiment::{Experiment, Offset};
 use degrau_ident::fit::MAX_STARTS;
@@ -42,21 +49,6 @@ const MAX_STATE_BYTES: u64 = 16 << 20;
 /// How long the saver waits for further changes before writing (a drag writes a few times
 /// a second, not every frame).
 pub const DEBOUNCE: Duration = Duration::from_millis(200);
-
-/// Why the state file could not be read or written, in plain words.
-#[derive(Debug, thiserror::Error)]
-pub enum StateError {
-    #[error("{what} {}: {source}", path.display())]
-    Io {
-        what: &'static str,
-        path: PathBuf,
-        source: std::io::Error,
-    },
-    #[error("{} is not a regular file", .0.display())]
-    NotAFile(PathBuf),
-    #[error("{path} is {1} bytes, more than a saved session can be", path = .0.display())]
-    TooLarge(PathBuf, u64),
-}
 
 /// The state file's path: in [`STATE_DIR_VAR`] if set, else in the platform data directory;
 /// `None` when there is no home to put it in.
@@ -76,14 +68,6 @@ pub fn default_path() -> Option<PathBuf> {
     Some(dir.join(FILE_NAME))
 }
 
-/// A part of a saved session that could not be restored and was reset to its default.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FieldProblem {
-    /// Its path in the file, e.g. `splane.view` or `system.poles`.
-    pub field: String,
-    pub reason: String,
-}
-
 /// A session restored from a file.
 #[derive(Debug)]
 pub struct Restored {
@@ -101,7 +85,7 @@ pub fn restore(path: &Path) -> Restored {
     let (saved, problems) = match read(path) {
         Ok(None) => (Saved::default(), Vec::new()),
         Ok(Some(text)) => restore_text(&text),
-        Err(e) => (Saved::default(), vec![whole_file(e.to_string())]),
+        Err(e) => (Saved::default(), vec![whole_file(Reason::File(e))]),
     };
     let (mut backup, mut backup_error) = (None, None);
     if !problems.is_empty() && path.is_file() {
@@ -121,15 +105,10 @@ pub fn restore(path: &Path) -> Restored {
 /// The file's text; `None` when there is no file. A FIFO or device is refused before it is
 /// opened (opening one could block), and so is a file past [`MAX_STATE_BYTES`].
 fn read(path: &Path) -> Result<Option<String>, StateError> {
-    let io = |what, source| StateError::Io {
-        what,
-        path: path.to_path_buf(),
-        source,
-    };
     let meta = match std::fs::metadata(path) {
         Ok(m) => m,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => return Err(io("could not look at", e)),
+        Err(e) => return Err(StateError::io(FileAction::LookAt, path, &e)),
     };
     if !meta.is_file() {
         return Err(StateError::NotAFile(path.to_path_buf()));
@@ -137,13 +116,13 @@ fn read(path: &Path) -> Result<Option<String>, StateError> {
     if meta.len() > MAX_STATE_BYTES {
         return Err(StateError::TooLarge(path.to_path_buf(), meta.len()));
     }
-    let bytes = std::fs::read(path).map_err(|e| io("could not read", e))?;
+    let bytes = std::fs::read(path).map_err(|e| StateError::io(FileAction::Read, path, &e))?;
     Ok(Some(String::from_utf8_lossy(&bytes).into_owned()))
 }
 
-fn whole_file(reason: String) -> FieldProblem {
+fn whole_file(reason: Reason) -> FieldProblem {
     FieldProblem {
-        field: "the whole file".into(),
+        field: Field::WholeFile,
         reason,
     }
 }
@@ -171,7 +150,10 @@ pub fn restore_text(text: &str) -> (Saved, Vec<FieldProblem>) {
         Ok(value) => restore_value(&value),
         Err(e) => (
             Saved::default(),
-            vec![whole_file(format!("not a saved session (not JSON: {e})"))],
+            vec![whole_file(Reason::NotJson {
+                line: e.line(),
+                column: e.column(),
+            })],
         ),
     }
 }
@@ -182,27 +164,27 @@ pub fn restore_text(text: &str) -> (Saved, Vec<FieldProblem>) {
 pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
     let mut problems = Vec::new();
     let Some(obj) = value.as_object() else {
-        return (
-            Saved::default(),
-            vec![whole_file("not a saved session (not a JSON object)".into())],
-        );
+        return (Saved::default(), vec![whole_file(Reason::NotAnObject)]);
     };
     let d = Saved::default();
     let mut f = Fields::new(Some(obj), "", &mut problems);
     let system = restore_system(f.nested("system"), d.design.system);
-    let design = Kept {
+    let design = design::Saved {
         compare: f.checked("compare", d.design.compare, |c| {
             c.as_ref().map_or(Ok(()), |(_, s)| {
-                s.check()?;
-                s.placement()
-                    .map_err(|why| why.text(degrau_words::Lang::En))
+                s.check().map_err(Reason::System)?;
+                s.placement().map_err(Reason::Placement)
             })
         }),
         splane: restore_splane(f.nested("splane"), d.design.splane),
         markers: f.take("markers", d.design.markers),
-        options: f.checked("options", d.design.options, |o| o.validate()),
+        options: f.checked("options", d.design.options, |o| {
+            o.check().map_err(Reason::Options)
+        }),
         phase_form: f.take("phase_form", d.design.phase_form),
-        feedback: f.checked("feedback", d.design.feedback, |l| l.validate()),
+        feedback: f.checked("feedback", d.design.feedback, |l| {
+            l.validate().map_err(Reason::Loop)
+        }),
         approx: f.take("approx", d.design.approx),
         approx_table: f.take("approx_table", d.design.approx_table),
         system,
@@ -217,7 +199,7 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
             if clamp_scale(*s) == *s {
                 Ok(())
             } else {
-                Err(format!("the presentation size {s} is not from 1 to 2"))
+                Err(Reason::Scale(*s))
             }
         }),
     };
@@ -233,12 +215,22 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
 fn restore_system(mut f: Fields<'_>, d: System) -> System {
     let fallback = d.clone();
     let system = System {
-        poles: f.checked("poles", d.poles, |l| state::check_roots(RootRole::Pole, l)),
-        zeros: f.checked("zeros", d.zeros, |l| state::check_roots(RootRole::Zero, l)),
-        gain: f.checked("gain", d.gain, |g| state::check_gain(*g)),
+        poles: f.checked("poles", d.poles, |l| {
+            state::check_roots(RootRole::Pole, l).map_err(Reason::System)
+        }),
+        zeros: f.checked("zeros", d.zeros, |l| {
+            state::check_roots(RootRole::Zero, l).map_err(Reason::System)
+        }),
+        gain: f.checked("gain", d.gain, |g| {
+            state::check_gain(*g).map_err(Reason::System)
+        }),
         gain_mode: f.take("gain_mode", d.gain_mode),
-        delay: f.checked("delay", d.delay, |t| state::check_delay(*t)),
-        amplitude: f.checked("amplitude", d.amplitude, |a| state::check_amplitude(*a)),
+        delay: f.checked("delay", d.delay, |t| {
+            state::check_delay(*t).map_err(Reason::System)
+        }),
+        amplitude: f.checked("amplitude", d.amplitude, |a| {
+            state::check_amplitude(*a).map_err(Reason::System)
+        }),
     };
     // Roots each within range but too far apart for the exact response fall back whole.
     match system.placement() {
@@ -246,7 +238,7 @@ fn restore_system(mut f: Fields<'_>, d: System) -> System {
         Err(why) => {
             f.problems.push(FieldProblem {
                 field: f.name("poles"),
-                reason: why.text(degrau_words::Lang::En),
+                reason: Reason::Placement(why),
             });
             fallback
         }
@@ -263,23 +255,21 @@ fn restore_splane(mut f: Fields<'_>, d: SPlaneState) -> SPlaneState {
 }
 
 /// A restored view must already be sane: one that is not is fitted to the roots again.
-fn check_view(v: &View) -> Result<(), String> {
+fn check_view(v: &View) -> Result<(), Reason> {
     if v.is_sane() {
         Ok(())
     } else {
-        Err(format!(
-            "the view (centre {} + {}j, {} pixels per unit) is out of range; fitted to the roots",
-            v.center_re, v.center_im, v.pixels_per_unit
-        ))
+        Err(Reason::View(*v))
     }
 }
 
-fn restore_ident(mut f: Fields<'_>, d: IdentSettings) -> IdentSettings {
-    IdentSettings {
+fn restore_ident(mut f: Fields<'_>, d: identify::Saved) -> identify::Saved {
+    identify::Saved {
         path: f.take("path", d.path),
         example: f.take("example", d.example),
         experiment: f.checked("experiment", d.experiment, |e| {
-            e.as_ref().map_or(Ok(()), check_experiment)
+            e.as_ref()
+                .map_or(Ok(()), |e| check_experiment(e).map_err(Reason::Experiment))
         }),
         time_col: f.take("time_col", d.time_col),
         y_col: f.take("y_col", d.y_col),
@@ -289,9 +279,9 @@ fn restore_ident(mut f: Fields<'_>, d: IdentSettings) -> IdentSettings {
         u_path: f.take("u_path", d.u_path),
         // Any structure: the diagnosis ends on ones the menu does not list (P3Z, P3DU…).
         code: f.checked("code", d.code, |c| {
-            Structure::parse(c).map(|_| ()).map_err(|_| {
-                format!("\"{c}\" is not a model code (P, 1 to 3 poles, then any of D, U, Z, I)")
-            })
+            Structure::parse(c)
+                .map(|_| ())
+                .map_err(|_| Reason::Code(c.clone()))
         }),
         drift: f.take("drift", d.drift),
         method: f.take("method", d.method),
@@ -300,7 +290,7 @@ fn restore_ident(mut f: Fields<'_>, d: IdentSettings) -> IdentSettings {
             if (1..=MAX_STARTS).contains(&n) {
                 Ok(())
             } else {
-                Err(format!("{n} starts, not 1 to {MAX_STARTS}"))
+                Err(Reason::Starts(n))
             }
         }),
     }
@@ -308,35 +298,33 @@ fn restore_ident(mut f: Fields<'_>, d: IdentSettings) -> IdentSettings {
 
 /// The choices on a test: every number finite, Δu ≠ 0, a window with start < end and a
 /// filter cut-off > 0.
-fn check_experiment(e: &Experiment) -> Result<(), String> {
-    let finite = |what: &str, x: f64| {
-        if x.is_finite() {
+fn check_experiment(e: &Experiment) -> Result<(), ExperimentProblem> {
+    let finite = |what, value: f64| {
+        if value.is_finite() {
             Ok(())
         } else {
-            Err(format!("{what} = {x} is not a finite number"))
+            Err(ExperimentProblem::NotFinite { what, value })
         }
     };
-    finite("the step time t0", e.t0)?;
-    finite("the step size Δu", e.du)?;
+    finite(TestValue::StepTime, e.t0)?;
+    finite(TestValue::StepSize, e.du)?;
     if e.du == 0.0 {
-        return Err("the step size Δu is 0".into());
+        return Err(ExperimentProblem::ZeroStep);
     }
     if let Offset::Fixed(y0) = e.offset {
-        finite("the operating point y0", y0)?;
+        finite(TestValue::OperatingPoint, y0)?;
     }
     if let Some((a, b)) = e.window {
-        finite("the window start", a)?;
-        finite("the window end", b)?;
+        finite(TestValue::WindowStart, a)?;
+        finite(TestValue::WindowEnd, b)?;
         if a >= b {
-            return Err(format!("the window {a}…{b} is empty"));
+            return Err(ExperimentProblem::EmptyWindow(a, b));
         }
     }
     if let Some(fc) = e.filter_hz
         && !(fc.is_finite() && fc > 0.0)
     {
-        return Err(format!(
-            "the filter cut-off {fc} Hz is not a positive number"
-        ));
+        return Err(ExperimentProblem::Filter(fc));
     }
     Ok(())
 }
@@ -361,8 +349,8 @@ impl<'a> Fields<'a> {
         }
     }
 
-    fn name(&self, field: &str) -> String {
-        format!("{}{field}", self.prefix)
+    fn name(&self, field: &str) -> Field {
+        Field::Path(format!("{}{field}", self.prefix))
     }
 
     /// The field, or `default` when it is missing (a file from another version) or bad.
@@ -376,13 +364,15 @@ impl<'a> Fields<'a> {
         &mut self,
         field: &str,
         default: T,
-        check: impl Fn(&T) -> Result<(), String>,
+        check: impl Fn(&T) -> Result<(), Reason>,
     ) -> T {
         let Some(value) = self.obj.and_then(|o| o.get(field)) else {
             return default;
         };
         let read = T::deserialize(value)
-            .map_err(|e| e.to_string())
+            .map_err(|_| Reason::Unreadable {
+                found: problem::quoted(value),
+            })
             .and_then(|t| check(&t).map(|()| t));
         match read {
             Ok(t) => t,
@@ -405,13 +395,15 @@ impl<'a> Fields<'a> {
             Some(other) => {
                 self.problems.push(FieldProblem {
                     field: self.name(field),
-                    reason: format!("expected an object, found {other}"),
+                    reason: Reason::ExpectedObject {
+                        found: problem::quoted(other),
+                    },
                 });
                 None
             }
             None => None,
         };
-        let prefix = format!("{}.", self.name(field));
+        let prefix = format!("{}{field}.", self.prefix);
         Fields::new(obj, &prefix, self.problems)
     }
 }
@@ -419,13 +411,9 @@ impl<'a> Fields<'a> {
 /// Writes `contents` to `path` atomically: a temporary file in the same directory, flushed
 /// to disk, then renamed over `path` (and the directory flushed, where that is possible).
 pub fn write_atomically(path: &Path, contents: &[u8]) -> Result<(), StateError> {
-    let io = |what, path: &Path, source| StateError::Io {
-        what,
-        path: path.to_path_buf(),
-        source,
-    };
+    let io = |action, path: &Path, e: std::io::Error| StateError::io(action, path, &e);
     let dir = path.parent().unwrap_or_else(|| Path::new("."));
-    std::fs::create_dir_all(dir).map_err(|e| io("could not create", dir, e))?;
+    std::fs::create_dir_all(dir).map_err(|e| io(FileAction::Create, dir, e))?;
     let name = path
         .file_name()
         .map_or_else(|| FILE_NAME.into(), |n| n.to_string_lossy().into_owned());
@@ -436,11 +424,11 @@ pub fn write_atomically(path: &Path, contents: &[u8]) -> Result<(), StateError> 
     });
     if let Err(e) = written {
         std::fs::remove_file(&temp).ok();
-        return Err(io("could not write", &temp, e));
+        return Err(io(FileAction::Write, &temp, e));
     }
     if let Err(e) = std::fs::rename(&temp, path) {
         std::fs::remove_file(&temp).ok();
-        return Err(io("could not replace", path, e));
+        return Err(io(FileAction::Replace, path, e));
     }
     // The rename is durable once the directory is flushed (Unix; elsewhere it cannot be
     // opened and the rename stands as it is).
@@ -462,7 +450,7 @@ struct Snapshot {
 pub struct Saver {
     path: PathBuf,
     tx: Option<Sender<Snapshot>>,
-    errors: Receiver<String>,
+    errors: Receiver<StateError>,
     thread: Option<JoinHandle<()>>,
     /// The last snapshot offered, so an unchanged session is not sent again.
     last: Option<String>,
@@ -516,7 +504,7 @@ impl Saver {
     }
 
     /// The latest failure to write, if any happened since the last call.
-    pub fn take_error(&self) -> Option<String> {
+    pub fn take_error(&self) -> Option<StateError> {
         self.errors.try_iter().last()
     }
 }
@@ -533,7 +521,7 @@ impl Drop for Saver {
 
 /// The saver thread: wait for a snapshot, let later ones replace it for up to [`DEBOUNCE`],
 /// write the latest, repeat until the app drops its end.
-fn save_loop(path: &Path, rx: &Receiver<Snapshot>, errors: &Sender<String>) {
+fn save_loop(path: &Path, rx: &Receiver<Snapshot>, errors: &Sender<StateError>) {
     while let Ok(mut latest) = rx.recv() {
         let deadline = Instant::now() + DEBOUNCE;
         let mut open = true;
@@ -548,7 +536,7 @@ fn save_loop(path: &Path, rx: &Receiver<Snapshot>, errors: &Sender<String>) {
             }
         }
         if let Err(e) = write_atomically(path, latest.json.as_bytes()) {
-            errors.send(e.to_string()).ok();
+            errors.send(e).ok();
             if let Some(ctx) = &latest.ctx {
                 ctx.request_repaint();
             }
@@ -560,124 +548,4 @@ fn save_loop(path: &Path, rx: &Receiver<Snapshot>, errors: &Sender<String>) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::design::state::Root;
-
-    fn temp_dir(name: &str) -> PathBuf {
-        let dir =
-            std::env::temp_dir().join(format!("degrau-persist-{name}-{}", std::process::id()));
-        std::fs::remove_dir_all(&dir).ok();
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
-    }
-
-    #[test]
-    fn a_session_round_trips_with_no_problem() {
-        let mut saved = Saved::default();
-        saved.design.system.poles.push(Root::real(-7.5));
-        saved.dark = true;
-        saved.design.splane.view = Some(View {
-            center_re: -2.0,
-            center_im: 0.5,
-            pixels_per_unit: 40.0,
-        });
-        let text = serde_json::to_string(&saved).unwrap();
-        let (back, problems) = restore_text(&text);
-        assert!(problems.is_empty(), "{problems:?}");
-        assert_eq!(serde_json::to_string(&back).unwrap(), text);
-    }
-
-    #[test]
-    fn each_bad_field_falls_back_alone() {
-        let mut saved = Saved::default();
-        saved.design.system.gain = 3.0;
-        saved.dark = true;
-        saved.ident.code = "P1D".into();
-        let mut value = serde_json::to_value(&saved).unwrap();
-        value["system"]["poles"] = serde_json::json!("three");
-        value["splane"]["view"] =
-            serde_json::json!({"center_re": -5e29, "center_im": 0.0, "pixels_per_unit": 1e-300});
-        value["ident"]["starts"] = serde_json::json!(100000);
-        value["options"] =
-            serde_json::json!({"settling_threshold": 7.0, "rise_limits": [0.1, 0.9]});
-        let (back, problems) = restore_value(&value);
-        let mut fields: Vec<&str> = problems.iter().map(|p| p.field.as_str()).collect();
-        fields.sort_unstable();
-        assert_eq!(
-            fields,
-            ["ident.starts", "options", "splane.view", "system.poles"],
-            "{problems:?}"
-        );
-        assert_eq!(back.design.system.poles, System::default().poles);
-        assert_eq!(
-            back.design.system.gain, 3.0,
-            "the rest of the system is kept"
-        );
-        assert!(back.dark);
-        assert_eq!(back.ident.code, "P1D");
-        assert_eq!(back.ident.starts, IdentSettings::default().starts);
-        assert_eq!(
-            back.design.splane.view, None,
-            "an absurd view is fitted again"
-        );
-    }
-
-    #[test]
-    fn not_json_is_one_problem_with_defaults() {
-        let (back, problems) = restore_text("{\"dark\": tru");
-        assert_eq!(problems.len(), 1);
-        assert_eq!(problems[0].field, "the whole file");
-        assert!(!back.dark);
-    }
-
-    #[test]
-    fn a_bad_file_is_kept_aside_and_a_missing_one_is_a_fresh_start() {
-        let dir = temp_dir("aside");
-        let path = dir.join(FILE_NAME);
-        let fresh = restore(&path);
-        assert!(fresh.problems.is_empty() && fresh.backup.is_none());
-        std::fs::write(&path, "{\"dark\": true, \"mode\": 12}").unwrap();
-        let r = restore(&path);
-        assert!(r.saved.dark);
-        assert_eq!(r.problems[0].field, "mode");
-        let backup = r.backup.expect("a backup");
-        assert_eq!(
-            std::fs::read_to_string(&backup).unwrap(),
-            "{\"dark\": true, \"mode\": 12}"
-        );
-        std::fs::remove_dir_all(&dir).ok();
-    }
-
-    #[test]
-    fn the_saver_writes_atomically_and_flushes_on_drop() {
-        let dir = temp_dir("saver");
-        let path = dir.join("nested").join(FILE_NAME);
-        let mut saver = Saver::spawn(path.clone());
-        assert!(saver.offer("{\"a\": 1}".into(), None));
-        assert!(saver.offer("{\"a\": 2}".into(), None));
-        drop(saver);
-        assert_eq!(std::fs::read_to_string(&path).unwrap(), "{\"a\": 2}");
-        let leftovers: Vec<_> = std::fs::read_dir(path.parent().unwrap())
-            .unwrap()
-            .filter_map(|e| e.ok())
-            .map(|e| e.file_name())
-            .filter(|n| n != FILE_NAME)
-            .collect();
-        assert!(
-            leftovers.is_empty(),
-            "no temporary file left: {leftovers:?}"
-        );
-        std::fs::remove_dir_all(&dir).ok();
-    }
-
-    #[test]
-    fn a_directory_as_the_state_file_is_refused_in_words() {
-        let dir = temp_dir("notafile");
-        let r = restore(&dir);
-        assert_eq!(r.problems.len(), 1);
-        assert!(r.problems[0].reason.contains("not a regular file"));
-        assert!(r.backup.is_none(), "nothing to copy");
-        std::fs::remove_dir_all(&dir).ok();
-    }
-}
+mod tests;

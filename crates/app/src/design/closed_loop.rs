@@ -92,16 +92,24 @@ pub struct LoopSettings {
 impl LoopSettings {
     /// Why these settings cannot be restored, if they cannot: Kp not finite or beyond
     /// ±[`KP_LIMIT`], a Padé order out of range.
-    pub fn validate(&self) -> Result<(), String> {
+    pub fn validate(&self) -> Result<(), LoopProblem> {
         if !(self.kp.is_finite() && self.kp.abs() <= KP_LIMIT) {
-            return Err(format!("the gain Kp = {} is beyond ±{KP_LIMIT:e}", self.kp));
+            return Err(LoopProblem::Gain(self.kp));
         }
         if !self.pade.is_valid() {
-            let PadeOrder { m, n } = self.pade;
-            return Err(format!("the Padé order ({m}, {n}) is not one offered"));
+            return Err(LoopProblem::Pade(self.pade));
         }
         Ok(())
     }
+}
+
+/// Why saved loop settings cannot be restored; said in words by [`crate::words::persist`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LoopProblem {
+    /// Kp not finite or beyond ±[`KP_LIMIT`].
+    Gain(f64),
+    /// A Padé order the menu does not offer.
+    Pade(PadeOrder),
 }
 
 impl Default for LoopSettings {

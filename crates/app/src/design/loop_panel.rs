@@ -20,13 +20,13 @@ use degrau_words::Localize;
 
 use super::closed_loop::{Found, KP_LIMIT, LoopSettings, Specs};
 use super::commands::Command;
-use super::session::{Kept, Session};
+use super::session::{Saved, Session};
 
 /// Width of a number field (points).
 const FIELD_WIDTH: f32 = 70.0;
 
 /// Draws the loop's section; the commands it asks for.
-pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
+pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let mut out = Vec::new();
     let settings = &kept.feedback;

@@ -10,7 +10,7 @@ use degrau_lti::words::step::{Metric, stability};
 
 use super::analysis::Analysis;
 use super::commands::Command;
-use super::session::{Kept, Session};
+use super::session::{Saved, Session};
 
 /// The text of one cell: the value with its unit, or why it does not exist ("—" without a
 /// response).
@@ -22,7 +22,7 @@ pub fn cell_text(analysis: &Analysis, metric: Metric, lang: degrau_words::Lang) 
 }
 
 /// Draws the strip; the closed form's toggle is its only command.
-pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
+pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let analysis = &session.analysis;
     let compare = session.compare(kept);
@@ -113,7 +113,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Com
 /// The closed loop's name and analysis, when the loop is closed and has one.
 fn closed_loop<'a>(
     session: &'a Session,
-    kept: &Kept,
+    kept: &Saved,
     lang: degrau_words::Lang,
 ) -> Option<(String, &'a Analysis)> {
     let c = session

@@ -22,7 +22,7 @@ pub mod system_panel;
 use eframe::egui::{self, Key, RichText, Ui};
 
 pub use commands::Command;
-pub use session::{Kept, Session};
+pub use session::{Saved, Session};
 
 use crate::look::Look;
 use crate::words::design::Design as P;
@@ -50,7 +50,7 @@ pub struct Shown {
 /// Draws the Design mode in `ui` (the area below the menu and notices): the system panel on
 /// the right, the metrics at the bottom, the s-plane on the left and the step plot in the
 /// middle.
-pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
+pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Shown {
     let mut commands = Vec::new();
     let full = ui.available_rect_before_wrap();
     // The approximation takes the whole width at the bottom: its plots and its words side by
@@ -118,7 +118,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Shown {
 }
 
 /// The metrics table at the bottom, resizable.
-fn metrics_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
+fn metrics_panel(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Vec<Command> {
     let full = ui.available_rect_before_wrap().height();
     let bottom_max = (full - PLOT_MIN - 80.0).max(90.0);
     egui::Panel::bottom("metrics")
@@ -136,7 +136,7 @@ fn metrics_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Ve
 /// Points kept around the step plot's area in its PNG.
 const PNG_MARGIN: f32 = 8.0;
 
-fn splane_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
+fn splane_panel(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let mut out = Vec::new();
     let state = &kept.splane;
@@ -200,7 +200,7 @@ fn splane_panel(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec
 fn plot_panel(
     ui: &mut Ui,
     session: &Session,
-    kept: &Kept,
+    kept: &Saved,
     look: &Look,
 ) -> (Vec<Command>, egui::Rect) {
     let out = step_plot::controls(ui, kept, look);
@@ -223,7 +223,7 @@ fn plot_panel(
 
 /// The Design mode's keys: Delete removes the selected root, the arrows nudge it (by a
 /// tenth of the s-plane's grid step). Nothing while a text field has focus.
-pub fn keyboard(ui: &Ui, kept: &Kept) -> Vec<Command> {
+pub fn keyboard(ui: &Ui, kept: &Saved) -> Vec<Command> {
     let typing = ui.ctx().memory(|m| m.focused().is_some());
     let Some(id) = kept.splane.selected.filter(|_| !typing) else {
         return Vec::new();

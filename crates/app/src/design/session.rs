@@ -1,4 +1,4 @@
-//! The Design mode's session: the state it keeps between runs ([`Kept`]: the system, the
+//! The Design mode's session: the state it keeps between runs ([`Saved`]: the system, the
 //! comparison, the s-plane view, the markers and thresholds), the undo history, and what is
 //! derived from them (the analysis of the system and of the comparison, the ghost of the
 //! response before the last edit), recomputed only when an input changed. No egui here: the
@@ -21,7 +21,7 @@ use super::step_plot::Markers;
 /// level).
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
-pub struct Kept {
+pub struct Saved {
     pub system: System,
     /// A system kept for comparison, with its name.
     pub compare: Option<(String, System)>,
@@ -59,7 +59,7 @@ pub struct Session {
 
 impl Session {
     /// The session of `kept` (its analyses computed now).
-    pub fn new(kept: &Kept) -> Self {
+    pub fn new(kept: &Saved) -> Self {
         Self {
             history: History::default(),
             analysis: Analysis::new(&kept.system, kept.options),
@@ -87,7 +87,7 @@ impl Session {
     }
 
     /// The comparison's name and analysis, when comparing.
-    pub fn compare<'a>(&'a self, kept: &'a Kept) -> Option<(&'a str, &'a Analysis)> {
+    pub fn compare<'a>(&'a self, kept: &'a Saved) -> Option<(&'a str, &'a Analysis)> {
         match (&kept.compare, &self.compare_analysis) {
             (Some((name, _)), Some(a)) => Some((name.as_str(), a)),
             _ => None,
@@ -95,7 +95,7 @@ impl Session {
     }
 
     /// Re-analyses what changed in `kept` (nothing when nothing did).
-    pub fn refresh(&mut self, kept: &Kept) {
+    pub fn refresh(&mut self, kept: &Saved) {
         self.analysis.refresh(&kept.system, kept.options);
         match (&kept.compare, &mut self.compare_analysis) {
             (Some((_, s)), Some(a)) => a.refresh(s, kept.options),
@@ -109,12 +109,12 @@ impl Session {
     }
 
     /// Applies one command to `kept`, then brings the derived data up to date.
-    pub fn apply(&mut self, kept: &mut Kept, command: Command) {
+    pub fn apply(&mut self, kept: &mut Saved, command: Command) {
         self.apply_one(kept, command);
         self.refresh(kept);
     }
 
-    fn apply_one(&mut self, kept: &mut Kept, command: Command) {
+    fn apply_one(&mut self, kept: &mut Saved, command: Command) {
         match command {
             Command::SetGain(gain) => self.edit(kept, |s| s.gain = gain),
             Command::SetGainMode(mode) => self.edit(kept, |s| keep_system_in_mode(s, mode)),
@@ -272,7 +272,7 @@ impl Session {
 
     /// One undoable edit of the system: `change` applied to a copy, kept if it changed
     /// something and every root is placeable ([`System::placement`]).
-    fn edit(&mut self, kept: &mut Kept, change: impl FnOnce(&mut System)) {
+    fn edit(&mut self, kept: &mut Saved, change: impl FnOnce(&mut System)) {
         let before = kept.system.clone();
         if change_if_placeable(&mut kept.system, change) {
             self.history.record(&before);
@@ -283,7 +283,7 @@ impl Session {
 
     /// The system replaced whole (a preset, a model from the Identify mode), one undoable
     /// edit; the s-plane is fitted to it again.
-    fn replace(&mut self, kept: &mut Kept, system: System) {
+    fn replace(&mut self, kept: &mut Saved, system: System) {
         if system.check().is_err() || system.placement().is_err() {
             return;
         }
@@ -302,7 +302,7 @@ impl Session {
     /// Before a change of the loop's gain: the closed-loop curve it changes is the previous
     /// response (the open loop's does not move with Kp, so its ghost would be a system two
     /// edits old beside a closed loop that moves).
-    fn keep_loop_ghost(&mut self, kept: &Kept) {
+    fn keep_loop_ghost(&mut self, kept: &Saved) {
         if let Some(c) = self
             .feedback
             .closed
@@ -313,7 +313,7 @@ impl Session {
         }
     }
 
-    fn after_history_jump(&mut self, kept: &mut Kept) {
+    fn after_history_jump(&mut self, kept: &mut Saved) {
         self.keep_ghost();
         self.dragging = None;
         if let Some(sel) = kept.splane.selected
@@ -397,7 +397,7 @@ mod tests {
 
     #[test]
     fn a_drag_is_one_undoable_edit_and_the_analysis_follows_at_once() {
-        let mut kept = Kept::default();
+        let mut kept = Saved::default();
         let mut s = Session::new(&kept);
         let rise = s.analysis.info.as_ref().and_then(|i| i.rise_time);
         for k in 1..=5 {
@@ -426,7 +426,7 @@ mod tests {
 
     #[test]
     fn a_root_beyond_the_limits_is_never_applied() {
-        let mut kept = Kept::default();
+        let mut kept = Saved::default();
         let mut s = Session::new(&kept);
         let typed = [
             (-1e300, 0.0),
@@ -483,7 +483,7 @@ mod tests {
 
     #[test]
     fn a_preset_brings_its_comparison_and_its_analysis() {
-        let mut kept = Kept::default();
+        let mut kept = Saved::default();
         let mut s = Session::new(&kept);
         let last = s.presets.len() - 1;
         s.apply(&mut kept, Command::LoadPreset(last));

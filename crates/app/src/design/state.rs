@@ -27,14 +27,48 @@ fn bounded(x: f64) -> f64 {
     x.clamp(-ROOT_LIMIT, ROOT_LIMIT)
 }
 
-/// Whether `x` is finite with |x| ≤ `limit`, in words when not.
-fn check_number(what: &str, x: f64, limit: f64) -> Result<(), String> {
+/// A number of a system, as a problem with it names it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Quantity {
+    /// A root's real part σ.
+    Sigma(RootId),
+    /// A root's imaginary part ω.
+    Omega(RootId),
+    Gain,
+    Amplitude,
+    Delay,
+}
+
+/// Why a system (or a part of it) is not one the app can hold; said in words by
+/// [`crate::words::persist`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum SystemProblem {
+    /// Not a finite number within ±`limit`.
+    OutOfRange {
+        what: Quantity,
+        value: f64,
+        limit: f64,
+    },
+    /// A real root with ω ≠ 0.
+    RealWithOmega { root: RootId, omega: f64 },
+    /// A pair with ω < 0.
+    NegativeOmega { root: RootId, omega: f64 },
+    /// More handles in a list than the app holds ([`MAX_ROOTS`]).
+    TooMany { role: RootRole, count: usize },
+    /// A dead time below 0 (s).
+    NegativeDelay(f64),
+}
+
+/// Whether `x` is finite with |x| ≤ `limit`, the problem when not.
+fn check_number(what: Quantity, x: f64, limit: f64) -> Result<(), SystemProblem> {
     if x.is_finite() && x.abs() <= limit {
         Ok(())
     } else {
-        Err(format!(
-            "{what} = {x} is not a finite number within ±{limit:e}"
-        ))
+        Err(SystemProblem::OutOfRange {
+            what,
+            value: x,
+            limit,
+        })
     }
 }
 
@@ -102,15 +136,14 @@ impl Root {
     }
 
     /// Whether the root is one the app can hold: finite, within ±[`ROOT_LIMIT`], a real
-    /// root on the axis and a pair's ω ≥ 0. `name` is the handle's label ("pole 2").
-    pub fn check(&self, name: &str) -> Result<(), String> {
-        check_number(&format!("{name}: σ"), self.re, ROOT_LIMIT)?;
-        check_number(&format!("{name}: ω"), self.im, ROOT_LIMIT)?;
+    /// root on the axis and a pair's ω ≥ 0. `id` is where the root is in its system.
+    pub fn check(&self, id: RootId) -> Result<(), SystemProblem> {
+        check_number(Quantity::Sigma(id), self.re, ROOT_LIMIT)?;
+        check_number(Quantity::Omega(id), self.im, ROOT_LIMIT)?;
+        let omega = self.im;
         match self.kind {
-            RootKind::Real if self.im != 0.0 => {
-                Err(format!("{name} is real but has ω = {}", self.im))
-            }
-            RootKind::Pair if self.im < 0.0 => Err(format!("{name} has ω = {} < 0", self.im)),
+            RootKind::Real if omega != 0.0 => Err(SystemProblem::RealWithOmega { root: id, omega }),
+            RootKind::Pair if omega < 0.0 => Err(SystemProblem::NegativeOmega { root: id, omega }),
             _ => Ok(()),
         }
     }
@@ -147,11 +180,6 @@ impl RootRole {
     /// "pole" or "zero" in `lang`.
     pub fn name_in(self, lang: degrau_words::Lang) -> &'static str {
         crate::words::design::role_name(self == RootRole::Pole, lang)
-    }
-
-    /// "pole" or "zero", as the state file's problems name them.
-    pub fn name(self) -> &'static str {
-        self.name_in(degrau_words::Lang::En)
     }
 }
 
@@ -330,8 +358,8 @@ impl System {
     }
 
     /// Whether every number is one the app can hold (see the limits at the top of this
-    /// module), in words naming the first that is not.
-    pub fn check(&self) -> Result<(), String> {
+    /// module), the problem of the first that is not.
+    pub fn check(&self) -> Result<(), SystemProblem> {
         check_roots(RootRole::Pole, &self.poles)?;
         check_roots(RootRole::Zero, &self.zeros)?;
         check_gain(self.gain)?;
@@ -376,34 +404,33 @@ impl System {
 
 /// Whether a pole or zero list is one the app can hold: at most [`MAX_ROOTS`] handles, each
 /// passing [`Root::check`].
-pub fn check_roots(role: RootRole, list: &[Root]) -> Result<(), String> {
+pub fn check_roots(role: RootRole, list: &[Root]) -> Result<(), SystemProblem> {
     if list.len() > MAX_ROOTS {
-        return Err(format!(
-            "{} {}s, more than the {MAX_ROOTS} the app holds",
-            list.len(),
-            role.name()
-        ));
+        return Err(SystemProblem::TooMany {
+            role,
+            count: list.len(),
+        });
     }
-    list.iter().enumerate().try_for_each(|(index, root)| {
-        root.check(&RootId { role, index }.label(degrau_words::Lang::En))
-    })
+    list.iter()
+        .enumerate()
+        .try_for_each(|(index, root)| root.check(RootId { role, index }))
 }
 
 /// Whether a gain is finite within ±[`GAIN_LIMIT`].
-pub fn check_gain(gain: f64) -> Result<(), String> {
-    check_number("gain", gain, GAIN_LIMIT)
+pub fn check_gain(gain: f64) -> Result<(), SystemProblem> {
+    check_number(Quantity::Gain, gain, GAIN_LIMIT)
 }
 
 /// Whether a step amplitude is finite within ±[`AMPLITUDE_LIMIT`].
-pub fn check_amplitude(amplitude: f64) -> Result<(), String> {
-    check_number("step amplitude", amplitude, AMPLITUDE_LIMIT)
+pub fn check_amplitude(amplitude: f64) -> Result<(), SystemProblem> {
+    check_number(Quantity::Amplitude, amplitude, AMPLITUDE_LIMIT)
 }
 
 /// Whether a dead time is finite in [0, [`DELAY_LIMIT`]] s.
-pub fn check_delay(delay: f64) -> Result<(), String> {
-    check_number("dead time", delay, DELAY_LIMIT)?;
+pub fn check_delay(delay: f64) -> Result<(), SystemProblem> {
+    check_number(Quantity::Delay, delay, DELAY_LIMIT)?;
     if delay < 0.0 {
-        return Err(format!("dead time = {delay} s is negative"));
+        return Err(SystemProblem::NegativeDelay(delay));
     }
     Ok(())
 }
@@ -464,6 +491,7 @@ impl History {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use degrau_words::Localize;
 
     #[test]
     fn default_is_the_notes_example() {
@@ -521,23 +549,24 @@ mod tests {
         assert!(System::default().check().is_ok());
         let mut s = System::default();
         s.poles[1].re = f64::NAN;
-        let e = s.check().unwrap_err();
+        let said = |s: &System| s.check().map_err(|e| e.text(degrau_words::Lang::En));
+        let e = said(&s).unwrap_err();
         assert!(e.contains("pole 2: σ"), "{e}");
         let s = System {
             delay: -1.0,
             ..System::default()
         };
-        assert!(s.check().unwrap_err().contains("dead time"));
+        assert!(said(&s).unwrap_err().contains("dead time"));
         let s = System {
             gain: f64::INFINITY,
             ..System::default()
         };
-        assert!(s.check().unwrap_err().contains("gain"));
+        assert!(said(&s).unwrap_err().contains("gain"));
         let s = System {
             zeros: vec![Root::real(-1.0); MAX_ROOTS + 1],
             ..System::default()
         };
-        assert!(s.check().unwrap_err().contains("zeros"));
+        assert!(said(&s).unwrap_err().contains("zeros"));
     }
 
     #[test]

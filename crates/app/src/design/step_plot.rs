@@ -24,7 +24,7 @@ use degrau_words::Lang;
 
 use super::analysis::Analysis;
 use super::commands::Command;
-use super::session::{Kept, Session};
+use super::session::{Saved, Session};
 
 /// Which markers are drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -63,7 +63,7 @@ fn pct(f: f64, lang: Lang) -> String {
 }
 
 /// The toggles and thresholds above the plot; the commands they ask for.
-pub fn controls(ui: &mut Ui, kept: &Kept, look: &Look) -> Vec<Command> {
+pub fn controls(ui: &mut Ui, kept: &Saved, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let (markers, options) = (kept.markers, kept.options);
     let mut out = Vec::new();
@@ -195,7 +195,7 @@ pub fn hover_text(
 const LEGEND_MIN: egui::Vec2 = egui::vec2(520.0, 380.0);
 
 /// Draws the plot; returns the rect it took (for the PNG export).
-pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> egui::Rect {
+pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> egui::Rect {
     let lang = look.lang;
     let palette = &look.palette;
     let analysis = &session.analysis;

@@ -14,7 +14,7 @@ use degrau_words::Lang;
 use degrau_words::Localize as _;
 
 use super::commands::Command;
-use super::session::{Kept, Session, placement_of};
+use super::session::{Saved, Session, placement_of};
 use super::state::{
     AMPLITUDE_LIMIT, DELAY_LIMIT, GAIN_LIMIT, GainMode, MAX_ROOTS, ROOT_LIMIT, Root, RootId,
     RootKind, RootRole, System,
@@ -24,7 +24,7 @@ use super::state::{
 const FIELD_WIDTH: f32 = 86.0;
 
 /// Draws the panel; returns the edits and requests as commands.
-pub fn show(ui: &mut Ui, session: &Session, kept: &Kept, look: &Look) -> Vec<Command> {
+pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Vec<Command> {
     let lang = look.lang;
     let mut out = Vec::new();
     ui.heading(P::SystemHeading.get(lang));

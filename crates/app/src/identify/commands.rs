@@ -82,10 +82,16 @@ pub enum Command {
     SetPath(String),
     /// Load the file the path field names.
     LoadPath,
-    /// Load a file picked in the file dialog.
+    /// Load a file picked in the file dialog (or dropped on the window).
     Open(String),
+    /// Choose the test's file with the file dialog.
+    BrowseTest,
+    /// Load columns pasted as text (or a record made in another mode).
+    LoadText(String),
     LoadExample,
     SetChoice(Choice, String),
+    /// Choose the input's own file with the file dialog.
+    BrowseInputFile,
     /// The step time t0 (s).
     SetStepTime(f64),
     /// The step size Δu.
@@ -135,4 +141,6 @@ pub enum Outcome {
         tf: degrau_lti::TransferFunction,
         du: f64,
     },
+    /// Choose a file with the file dialog (the app opens it).
+    Pick(crate::dialog::Pick),
 }

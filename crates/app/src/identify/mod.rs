@@ -6,8 +6,10 @@
 //!
 //! The mode is a [`Session`] (its state, jobs and derived data; no egui) and views that read
 //! it and return [`Command`]s: [`panel`] (the right side), [`plot`] (the centre),
-//! [`test_causes`] (what the test got wrong, in both) and [`landscape`] (a window). The top level calls, each frame, [`Session::poll`], then
-//! [`show`], then [`Session::apply`] for each command, and acts on an [`Outcome`].
+//! [`test_causes`] (what the test got wrong, in both) and [`landscape`] (a window). The
+//! app, each frame, calls [`Session::poll`], then [`show`]; it applies each command with
+//! [`Session::apply`] in its own `apply` (as `Command::Identify`), and an [`Outcome`] (open
+//! the fitted model in Design, open a file dialog) becomes the app's next command.
 
 pub mod commands;
 pub mod cost;
@@ -26,7 +28,7 @@ use eframe::egui;
 use crate::look::Look;
 
 pub use commands::{Command, Outcome};
-pub use session::{CODES, IdentSettings, Session};
+pub use session::{CODES, Saved, Session};
 
 /// The width the right panel starts with (px).
 const PANEL_WIDTH: f32 = 380.0;

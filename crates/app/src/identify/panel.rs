@@ -66,12 +66,8 @@ fn data_section(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Comma
         {
             out.push(Command::LoadExample);
         }
-        if ui.button(Phrase::Open.get(lang)).clicked()
-            && let Some(p) = rfd::FileDialog::new()
-                .add_filter("step tests", &["csv", "tsv", "txt", "dat"])
-                .pick_file()
-        {
-            out.push(Command::Open(p.display().to_string()));
+        if ui.button(Phrase::Open.get(lang)).clicked() {
+            out.push(Command::BrowseTest);
         }
     });
     egui::CollapsingHeader::new(Phrase::HowToRead.get(lang))
@@ -175,15 +171,8 @@ fn input_file(ui: &mut Ui, path: &str, look: &Look, out: &mut Vec<Command>) {
         {
             out.push(Command::SetChoice(Choice::InputFile, edited));
         }
-        if ui.button(Phrase::Open.get(lang)).clicked()
-            && let Some(p) = rfd::FileDialog::new()
-                .add_filter("input", &["csv", "tsv", "txt", "dat"])
-                .pick_file()
-        {
-            out.push(Command::SetChoice(
-                Choice::InputFile,
-                p.display().to_string(),
-            ));
+        if ui.button(Phrase::Open.get(lang)).clicked() {
+            out.push(Command::BrowseInputFile);
         }
     });
 }

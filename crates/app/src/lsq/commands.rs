@@ -77,6 +77,8 @@ pub enum Command {
     RlsStep,
     RlsReset,
     SetPrbs(PrbsSettings),
+    /// Choose where the designed record is written, with the file dialog.
+    BrowsePrbsExport,
     /// Write the designed record as CSV (time, u, y) to this path.
     ExportPrbs(std::path::PathBuf),
     /// Load the designed record in the Identify mode.
@@ -93,4 +95,6 @@ pub enum Command {
 pub enum Outcome {
     /// Load this CSV text (time, u, y) as the Identify mode's record.
     UseRecord(String),
+    /// Choose a file with the file dialog (the app opens it).
+    Pick(crate::dialog::Pick),
 }

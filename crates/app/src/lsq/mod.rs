@@ -12,7 +12,9 @@
 //! return [`Command`]s: the right panel (the section's controls and tables) and the central
 //! plot of the section. The top level calls, each frame, [`Session::sync`] (the Identify
 //! mode's record and fit), [`Session::poll`] and [`Session::tick`] (the RLS animation), then
-//! [`show`], then [`Session::apply`] for each command, and acts on an [`Outcome`].
+//! [`show`]; it applies each command with [`Session::apply`] in its own `apply` (as
+//! `Command::Lsq`), and an [`Outcome`] (use a designed record, open a file dialog) becomes
+//! the app's next command.
 
 pub mod advisor;
 pub mod advisor_view;

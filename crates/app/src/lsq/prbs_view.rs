@@ -56,12 +56,8 @@ pub fn panel(
             ));
             ui.label(Phrase::NoiseStd.with(lang, &[words::num(d.noise_std, lang)]));
             ui.horizontal(|ui| {
-                if ui.button(Phrase::ExportCsv.get(lang)).clicked()
-                    && let Some(path) = rfd::FileDialog::new()
-                        .set_file_name("prbs_test.csv")
-                        .save_file()
-                {
-                    out.push(Command::ExportPrbs(path));
+                if ui.button(Phrase::ExportCsv.get(lang)).clicked() {
+                    out.push(Command::BrowsePrbsExport);
                 }
                 if ui.button(Phrase::UseAsRecord.get(lang)).clicked() {
                     out.push(Command::UsePrbs);

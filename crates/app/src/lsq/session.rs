@@ -8,6 +8,7 @@
 //! Views read a `&Session` and return [`Command`]s; [`Session::apply`] carries them out once
 //! per frame. A new record, new orders or a new split drop whatever described the old ones.
 
+use crate::dialog::Pick;
 use crate::identify;
 use crate::identify::session::Shown;
 use crate::job::{Job, Waker};
@@ -338,6 +339,7 @@ impl Session {
                 self.redesign(design);
                 self.export_note = None;
             }
+            Command::BrowsePrbsExport => return Some(Outcome::Pick(Pick::PrbsCsv)),
             Command::ExportPrbs(path) => self.export(&path),
             Command::UsePrbs => {
                 if let Some(Ok(d)) = &self.designed {

@@ -4,8 +4,11 @@
 
 use degrau_words::{Lang, Localize, Message};
 
+use crate::persist::{Field, FieldProblem, Reason, SaveFailure};
+
 degrau_words::phrases! {
-    /// The labels of the menu, the notices and the export dialog.
+    /// The labels of the menu, the notices, the export dialog and the file dialogs' kinds
+    /// of file.
     pub enum App {
         ModeDesign => ("Poles and zeros", "Polos e zeros"),
         ModeIdentify => ("Identify a step test", "Identificar um ensaio ao degrau"),
@@ -73,6 +76,8 @@ degrau_words::phrases! {
             "não há curva para salvar: o sistema não é válido"
         ),
         NoPath => ("type a file name first", "digite primeiro um nome de arquivo"),
+        StepTestFiles => ("step tests", "ensaios ao degrau"),
+        InputFiles => ("input", "entrada"),
     }
 }
 
@@ -98,15 +103,15 @@ impl CodeKind {
 pub enum Notice {
     /// The state file had no home.
     NoHome,
-    /// Fields of the state file that were reset (each "field (reason)"), where the file was
-    /// kept aside or why it could not be.
+    /// Fields of the state file that were reset and why, where the file was kept aside or
+    /// why it could not be (the system's own words).
     NotRestored {
-        fields: Vec<String>,
+        fields: Vec<FieldProblem>,
         backup: Option<String>,
         backup_error: Option<String>,
     },
     /// The session could not be written, and why.
-    SaveFailed(String),
+    SaveFailed(SaveFailure),
 }
 
 impl Localize for Notice {
@@ -118,6 +123,7 @@ impl Localize for Notice {
                 backup,
                 backup_error,
             } => {
+                let fields: Vec<String> = fields.iter().map(|f| f.text(lang)).collect();
                 let mut text = format!("{} {}.", App::NotRestored.get(lang), fields.join("; "));
                 if let Some(path) = backup {
                     text.push_str(&format!(" {} {path}.", App::KeptAs.get(lang)));
@@ -127,7 +133,7 @@ impl Localize for Notice {
                 }
                 text
             }
-            Notice::SaveFailed(reason) => format!("{} {reason}", App::SaveFailed.get(lang)),
+            Notice::SaveFailed(why) => format!("{} {}", App::SaveFailed.get(lang), why.text(lang)),
         }
     }
 }
@@ -138,11 +144,16 @@ pub fn messages() -> Vec<Message> {
     let notices = [
         Notice::NoHome,
         Notice::NotRestored {
-            fields: vec!["system.amplitude (expected a number)".into()],
+            fields: vec![FieldProblem {
+                field: Field::Path("system.amplitude".into()),
+                reason: Reason::Unreadable {
+                    found: "\"two\"".into(),
+                },
+            }],
             backup: Some("state.json.bad-1".into()),
-            backup_error: Some("disk full".into()),
+            backup_error: Some("No space left on device (os error 28)".into()),
         },
-        Notice::SaveFailed("disk full".into()),
+        Notice::SaveFailed(SaveFailure::Stopped),
     ];
     all.extend(
         notices

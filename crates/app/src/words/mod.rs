@@ -7,6 +7,7 @@ pub mod code;
 pub mod design;
 pub mod identify;
 pub mod lsq_app;
+pub mod persist;
 
 /// Every message of the app: its labels' catalogues and an example of each fact its
 /// panels say. A new catalogue or fact adds its line here.
@@ -18,6 +19,7 @@ pub fn messages() -> Vec<degrau_words::Message> {
     all.extend(design::messages());
     all.extend(identify::messages());
     all.extend(lsq_app::messages());
+    all.extend(persist::messages());
     all
 }
 
