@@ -771,7 +771,7 @@ fn the_panel_keeps_its_width_through_a_fit_and_a_diagnosis() {
 
 /// A real overshoot stays named on the measured curve (the LECI test of the notes, ζ ≈ 0.19:
 /// about 54 %, far beyond its noise), beside the noisy heater whose is not
-/// (`tests/app_test_causes.rs`).
+/// (`tests/app/app_test_causes.rs`).
 #[test]
 fn a_real_overshoot_is_still_measured() {
     let h = with_example();

@@ -152,7 +152,7 @@ impl Scale {
             Param::Kp if structure.integrator => self.y_unit / self.du_unit / self.t_unit,
             Param::Kp => self.y_unit / self.du_unit,
             Param::Zeta => 1.0,
-            // The transient's basis (models.rs): X1 multiplies a unitless mode; X2 a first
+            // The transient's basis (model/mod.rs): X1 multiplies a unitless mode; X2 a first
             // divided difference or sin(ωτ)/ω (time); X3 a second divided difference
             // (time²), or the third pole's own mode beside a pair (unitless).
             Param::Y0 | Param::X1 => self.y_unit,
