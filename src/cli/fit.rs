@@ -21,11 +21,10 @@ use super::{CliError, finite_f64};
 
 pub use crate::ident::fit::MAX_STARTS;
 
-/// How the measured file is read and prepared (shared by `fit` and `diagnose`).
+/// Which columns of the file are time, output and input, and where the input is when it
+/// was logged to a file of its own (shared by `fit`, `diagnose` and `open`).
 #[derive(Debug, Clone, Default, Args)]
-pub struct DataArgs {
-    /// The step test: CSV, TSV, semicolon with decimal comma, or whitespace-separated.
-    pub file: PathBuf,
+pub struct ColumnArgs {
     /// Time column: name or 1-based position (default: recognised by name).
     #[arg(long)]
     pub time_col: Option<String>,
@@ -42,6 +41,15 @@ pub struct DataArgs {
     /// Sampling period in seconds, for a file without a time column.
     #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
     pub ts: Option<f64>,
+}
+
+/// How the measured file is read and prepared (shared by `fit` and `diagnose`).
+#[derive(Debug, Clone, Default, Args)]
+pub struct DataArgs {
+    /// The step test: CSV, TSV, semicolon with decimal comma, or whitespace-separated.
+    pub file: PathBuf,
+    #[command(flatten)]
+    pub columns: ColumnArgs,
     /// Lines to skip at the top (metadata before the table).
     #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
     pub skip_rows: usize,
@@ -141,22 +149,8 @@ pub struct FitArgs {
 pub struct OpenArgs {
     /// The step test to load.
     pub file: PathBuf,
-    /// Time column: name or 1-based position.
-    #[arg(long)]
-    pub time_col: Option<String>,
-    /// Output column: name or 1-based position.
-    #[arg(long)]
-    pub y_col: Option<String>,
-    /// Input column: name or 1-based position (in --u-file when one is given).
-    #[arg(long)]
-    pub u_col: Option<String>,
-    /// The input in a second file (its own time and input columns, its own grid), joined
-    /// on time: each sample takes the input's last value logged at or before it.
-    #[arg(long, value_name = "FILE")]
-    pub u_file: Option<PathBuf>,
-    /// Sampling period in seconds, for a file without a time column.
-    #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
-    pub ts: Option<f64>,
+    #[command(flatten)]
+    pub columns: ColumnArgs,
     /// The input's value before the record starts (a record whose first sample is already
     /// stepped, such as DaISy's heating system).
     #[arg(long, allow_hyphen_values = true, value_parser = finite_f64)]
@@ -172,15 +166,16 @@ impl OpenArgs {
     pub fn settings(&self) -> crate::app::identify::Saved {
         crate::app::identify::Saved {
             path: self.file.display().to_string(),
-            time_col: self.time_col.clone().unwrap_or_default(),
-            y_col: self.y_col.clone().unwrap_or_default(),
-            u_col: self.u_col.clone().unwrap_or_default(),
+            time_col: self.columns.time_col.clone().unwrap_or_default(),
+            y_col: self.columns.y_col.clone().unwrap_or_default(),
+            u_col: self.columns.u_col.clone().unwrap_or_default(),
             u_path: self
+                .columns
                 .u_file
                 .as_ref()
                 .map(|p| p.display().to_string())
                 .unwrap_or_default(),
-            sampling_period: self.ts.map(|t| t.to_string()).unwrap_or_default(),
+            sampling_period: self.columns.ts.map(|t| t.to_string()).unwrap_or_default(),
             initial_input: self
                 .initial_input
                 .map(|u| u.to_string())
@@ -221,15 +216,15 @@ impl DataArgs {
     /// The file as loaded, before any window or filter.
     pub fn read(&self) -> Result<StepTest, CliError> {
         let text = |c: &Option<String>| c.clone().unwrap_or_default();
-        let input = match self.u_file {
+        let input = match self.columns.u_file {
             Some(_) => "none".to_string(),
-            None => text(&self.u_col),
+            None => text(&self.columns.u_col),
         };
         let options = LoadOptions::from_text(
-            &text(&self.time_col),
-            &text(&self.y_col),
+            &text(&self.columns.time_col),
+            &text(&self.columns.y_col),
             &input,
-            self.ts,
+            self.columns.ts,
             self.skip_rows,
         );
         let load = |path: &std::path::Path, options: &LoadOptions| {
@@ -239,11 +234,12 @@ impl DataArgs {
             })
         };
         let test = load(&self.file, &options)?;
-        let Some(u_file) = &self.u_file else {
+        let Some(u_file) = &self.columns.u_file else {
             return Ok(test);
         };
         // The input's file: its value column is read as that file's "output".
-        let values = LoadOptions::from_text("", &text(&self.u_col), "none", self.ts, 0);
+        let values =
+            LoadOptions::from_text("", &text(&self.columns.u_col), "none", self.columns.ts, 0);
         let input = load(u_file, &values)?;
         crate::ident::record::join::join_on_time(test, &input).map_err(|error| CliError::Data {
             path: u_file.display().to_string(),

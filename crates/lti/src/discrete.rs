@@ -100,13 +100,7 @@ pub enum DiscreteError {
     /// G(s)·e^{−θs} of the forms d2c knows has H's samples.
     NoZohEquivalent,
     /// The continuous system could not be built.
-    Lti(LtiError),
-}
-
-impl From<LtiError> for DiscreteError {
-    fn from(e: LtiError) -> Self {
-        DiscreteError::Lti(e)
-    }
+    Lti(#[from] LtiError),
 }
 
 /// Coefficients this close to 0 (relative to the largest) at B's ends are dropped by

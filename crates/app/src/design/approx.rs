@@ -206,7 +206,7 @@ pub fn panel(
                 .map(Command::Approx)
                 .collect();
             if open {
-                out.extend(body(ui, view, analysis, look, metrics));
+                out.extend(body(ui, (view, analysis), look, metrics));
             }
             out
         })
@@ -358,8 +358,7 @@ fn order_fields(ui: &mut Ui, choice: Approximation, lang: Lang) -> Option<Approx
 /// The overlay, the s-plane and the words, side by side; the commands of the words' column.
 fn body(
     ui: &mut Ui,
-    view: &ApproxView,
-    analysis: &Analysis,
+    (view, analysis): (&ApproxView, &Analysis),
     look: &Look,
     metrics: Option<Folded<'_>>,
 ) -> Vec<Command> {

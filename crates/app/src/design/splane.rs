@@ -3,6 +3,8 @@
 //! Each handle is an accessible widget labelled "pole 1", "zero 2" (a pair's lower member is
 //! "pole 1 mirror"), so tests find and drag it like a person would.
 
+use std::sync::Arc;
+
 use eframe::egui::{self, Align2, FontId, Pos2, Rect, Response, Sense, Shape, Stroke, Ui, Vec2};
 use serde::{Deserialize, Serialize};
 
@@ -261,14 +263,13 @@ fn paint_background(painter: &egui::Painter, t: &Transform, damping_grid: bool, 
     // or out of the canvas, is left out.
     let font = FontId::proportional(CANVAS_TEXT);
     let mut labels = CanvasLabels::new(rect);
-    let caption = labels.reserve(
-        painter,
-        rect.right_top() + Vec2::new(-6.0, 4.0),
-        Align2::RIGHT_TOP,
-        P::PlaneCaption.get(lang),
-        &font,
+    let caption_text = painter.layout_no_wrap(
+        P::PlaneCaption.get(lang).to_owned(),
+        font.clone(),
         palette.weak_text,
     );
+    let at = rect.right_top() + Vec2::new(-6.0, 4.0);
+    let caption = labels.reserve(at, Align2::RIGHT_TOP, caption_text);
     let step = t.grid_step();
     let (re0, im1) = t.to_plane(rect.left_top());
     let (re1, im0) = t.to_plane(rect.right_bottom());
@@ -340,7 +341,7 @@ struct CanvasLabels {
 }
 
 /// A text laid out and where its top left goes.
-type Placed = (Pos2, std::sync::Arc<egui::Galley>);
+type Placed = (Pos2, Arc<egui::Galley>);
 
 impl CanvasLabels {
     fn new(canvas: Rect) -> Self {
@@ -350,17 +351,9 @@ impl CanvasLabels {
         }
     }
 
-    /// Takes the place of `text` anchored at `at` if it is free; the text to paint there.
-    fn reserve(
-        &mut self,
-        painter: &egui::Painter,
-        at: Pos2,
-        anchor: Align2,
-        text: &str,
-        font: &FontId,
-        color: egui::Color32,
-    ) -> Option<Placed> {
-        let galley = painter.layout_no_wrap(text.to_owned(), font.clone(), color);
+    /// Takes the place of the laid-out text `galley` anchored at `at` if it is free; where
+    /// its top left goes.
+    fn reserve(&mut self, at: Pos2, anchor: Align2, galley: Arc<egui::Galley>) -> Option<Placed> {
         let rect = anchor.anchor_size(at, galley.size());
         let free =
             self.canvas.contains_rect(rect) && !self.taken.iter().any(|r| r.intersects(rect));
@@ -380,7 +373,8 @@ impl CanvasLabels {
         font: &FontId,
         color: egui::Color32,
     ) {
-        if let Some((min, galley)) = self.reserve(painter, at, anchor, text, font, color) {
+        let galley = painter.layout_no_wrap(text.to_owned(), font.clone(), color);
+        if let Some((min, galley)) = self.reserve(at, anchor, galley) {
             painter.galley(min, galley, color);
         }
     }

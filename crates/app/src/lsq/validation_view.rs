@@ -131,22 +131,18 @@ fn arx_rows(
             ui.end_row();
         }
         Ok(v) => {
-            ui.label(format!(
-                "{} — {}",
-                name.get(lang),
-                Phrase::PredictionShort.get(lang)
-            ));
-            ui.label(words::percent(v.estimation.fit_percent_prediction, lang));
-            ui.label(words::percent(v.validation.fit_percent_prediction, lang));
+            let fits = |ui: &mut Ui, how: Phrase, (estimation, validation): (f64, f64)| {
+                ui.label(format!("{} — {}", name.get(lang), how.get(lang)));
+                ui.label(words::percent(estimation, lang));
+                ui.label(words::percent(validation, lang));
+            };
+            let (e, va) = (&v.estimation, &v.validation);
+            let prediction = (e.fit_percent_prediction, va.fit_percent_prediction);
+            fits(ui, Phrase::PredictionShort, prediction);
             checks(ui, &v.residuals, look);
             ui.end_row();
-            ui.label(format!(
-                "{} — {}",
-                name.get(lang),
-                Phrase::SimulationShort.get(lang)
-            ));
-            ui.label(words::percent(v.estimation.fit_percent_simulation, lang));
-            ui.label(words::percent(v.validation.fit_percent_simulation, lang));
+            let simulation = (e.fit_percent_simulation, va.fit_percent_simulation);
+            fits(ui, Phrase::SimulationShort, simulation);
             for _ in 0..4 {
                 ui.label("");
             }

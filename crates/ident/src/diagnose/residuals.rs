@@ -237,16 +237,17 @@ pub fn analyse(
     boundaries: Boundaries,
 ) -> ResidualAnalysis {
     let n = times.len().min(residuals.len());
+    let (times, residuals) = (&times[..n], &residuals[..n]);
     let largest = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let (e_unit, t_unit) = (
-        power_of_two_near(largest(&residuals[..n])),
-        power_of_two_near(largest(&times[..n])),
+        power_of_two_near(largest(residuals)),
+        power_of_two_near(largest(times)),
     );
     if e_unit == 1.0 && t_unit == 1.0 {
         return analyse_as_given(times, residuals, input, boundaries);
     }
-    let t: Vec<f64> = times[..n].iter().map(|t| t / t_unit).collect();
-    let e: Vec<f64> = residuals[..n].iter().map(|e| e / e_unit).collect();
+    let t: Vec<f64> = times.iter().map(|t| t / t_unit).collect();
+    let e: Vec<f64> = residuals.iter().map(|e| e / e_unit).collect();
     let b = Boundaries {
         response_start: boundaries.response_start / t_unit,
         settled: boundaries.settled / t_unit,
@@ -273,16 +274,13 @@ fn power_of_two_near(x: f64) -> f64 {
     }
 }
 
-/// [`analyse`] on the numbers as given.
+/// [`analyse`] on the numbers as given, `times` and residuals `e` of one length.
 fn analyse_as_given(
     times: &[f64],
-    residuals: &[f64],
+    e: &[f64],
     input: Option<&[f64]>,
     boundaries: Boundaries,
 ) -> ResidualAnalysis {
-    let n = times.len().min(residuals.len());
-    let (times, e) = (&times[..n], &residuals[..n]);
-
     let regions = regions(times, e, boundaries);
     let Whiteness {
         autocorrelation,

@@ -52,11 +52,7 @@ pub fn position(
     handle: Handle,
 ) -> Option<(f64, f64)> {
     let y0 = model.get(Param::Y0);
-    let td = if model.structure.delay {
-        model.get(Param::Td)
-    } else {
-        0.0
-    };
+    let td = delay_of(model);
     match handle {
         Handle::FinalValue => Some((t_end, *model.simulate(setup, &[t_end]).ok()?.first()?)),
         Handle::DeadTime => Some((setup.t0() + td, y0)),
@@ -89,11 +85,7 @@ pub fn drag(
 ) -> Model {
     let mut m = *model;
     let y0 = model.get(Param::Y0);
-    let td = if model.structure.delay {
-        model.get(Param::Td)
-    } else {
-        0.0
-    };
+    let td = delay_of(model);
     match handle {
         Handle::FinalValue => {
             if let Some((_, y_now)) = position(model, setup, t_end, handle) {
@@ -128,6 +120,15 @@ pub fn drag(
         }
     }
     m
+}
+
+/// The model's Td as the handles place it (negative for a lead), 0 without a delay.
+fn delay_of(model: &Model) -> f64 {
+    if model.structure.delay {
+        model.get(Param::Td)
+    } else {
+        0.0
+    }
 }
 
 #[cfg(test)]

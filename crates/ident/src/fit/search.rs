@@ -22,15 +22,8 @@ pub fn fit(
     options: &FitOptions,
     observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
-    fit_on(
-        data,
-        structure,
-        guess,
-        options,
-        observer,
-        Samples::Every,
-        None,
-    )
+    let every = Samples::Every;
+    fit_on(data, structure, guess, options, observer, every, None)
 }
 
 /// [`fit`] minimising Σ wᵢ(yᵢ − ŷᵢ)², each sample weighted by `weights` (one per sample,
@@ -70,15 +63,8 @@ pub fn search_fit(
     options: &FitOptions,
     observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
-    fit_on(
-        data,
-        structure,
-        guess,
-        options,
-        observer,
-        Samples::Reduced,
-        None,
-    )
+    let reduced = Samples::Reduced;
+    fit_on(data, structure, guess, options, observer, reduced, None)
 }
 
 /// Which samples a fit ends on.

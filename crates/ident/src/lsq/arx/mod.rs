@@ -129,13 +129,7 @@ pub enum LsqError {
     /// The validation split leaves too few samples on one side.
     BadSplit,
     /// The discrete model could not be formed.
-    Discrete(DiscreteError),
-}
-
-impl From<DiscreteError> for LsqError {
-    fn from(e: DiscreteError) -> Self {
-        LsqError::Discrete(e)
-    }
+    Discrete(#[from] DiscreteError),
 }
 
 /// |Rᵢᵢ| below this share of column i's norm: collinear.
