@@ -454,7 +454,8 @@ impl DegrauApp {
                 return vec![Command::Identify(identify::Command::LoadText(text))];
             }
             Command::Pick(pick) => {
-                return dialog::choose(pick, self.saved.lang).into_iter().collect();
+                let chosen = dialog::choose(pick, self.saved.lang);
+                return chosen.map(|path| picked(pick, path)).into_iter().collect();
             }
             Command::Export(c) => {
                 let curves = export::Curves {
@@ -530,5 +531,19 @@ impl DegrauApp {
 impl eframe::App for DegrauApp {
     fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
         self.show(ui);
+    }
+}
+
+/// The command a file chosen in the dialog `pick` makes.
+fn picked(pick: Pick, path: std::path::PathBuf) -> Command {
+    let text = path.display().to_string();
+    match pick {
+        Pick::AnyTest | Pick::StepTest => Command::Identify(identify::Command::Open(text)),
+        Pick::InputFile => Command::Identify(identify::Command::SetChoice(
+            identify::commands::Choice::InputFile,
+            text,
+        )),
+        Pick::PrbsCsv => Command::Lsq(lsq::Command::ExportPrbs(path)),
+        Pick::ExportPath => Command::Export(export::Command::SetPath(text)),
     }
 }
