@@ -18,6 +18,7 @@ use std::cmp::Ordering;
 
 use nalgebra::{Complex, DMatrix};
 
+use super::root_error::mul_pow2;
 use super::{LtiError, Polynomial, Quantity};
 
 /// A complex number of `f64`s, as used for poles and zeros.
@@ -233,19 +234,6 @@ fn scaled_monic(coeffs: &[f64]) -> (Vec<f64>, i32) {
         .map(|(j, &c)| mul_pow2(c, -(j as i32) * e - x0) / m0)
         .collect();
     (monic, e)
-}
-
-/// x·2^k without overflow or underflow in the intermediate power of two.
-pub(super) fn mul_pow2(mut x: f64, mut k: i32) -> f64 {
-    while k > 1000 && x.is_finite() && x != 0.0 {
-        x *= 2f64.powi(1000);
-        k -= 1000;
-    }
-    while k < -1000 && x.is_finite() && x != 0.0 {
-        x *= 2f64.powi(-1000);
-        k += 1000;
-    }
-    x * 2f64.powi(k.clamp(-1000, 1000))
 }
 
 /// Computed roots closer than this (relative) are candidates for one multiple root.

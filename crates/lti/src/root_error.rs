@@ -7,7 +7,10 @@
 //! of a polynomial with coefficients of 1e300 is judged as well as one of 1 (the products
 //! would overflow unscaled).
 
-use super::poly::{C64, mul_pow2};
+use nalgebra::Complex;
+
+/// A complex number of `f64`s (the crate's `poly::C64`).
+type C64 = Complex<f64>;
 
 /// A root whose backward error is above this is not a root of the polynomial it was
 /// computed from (Newton-polished roots and merged multiple roots are near 1e-15).
@@ -171,6 +174,19 @@ pub fn resolved(coeffs: &[f64], roots: &[C64]) -> bool {
         }
         rounding_radius(coeffs, r) < r.re.abs()
     })
+}
+
+/// x·2^k without overflow or underflow in the intermediate power of two.
+pub(super) fn mul_pow2(mut x: f64, mut k: i32) -> f64 {
+    while k > 1000 && x.is_finite() && x != 0.0 {
+        x *= 2f64.powi(1000);
+        k -= 1000;
+    }
+    while k < -1000 && x.is_finite() && x != 0.0 {
+        x *= 2f64.powi(-1000);
+        k += 1000;
+    }
+    x * 2f64.powi(k.clamp(-1000, 1000))
 }
 
 #[cfg(test)]
