@@ -1,7 +1,7 @@
 //! The real app driven through egui_kittest (no GPU): drag poles, add and delete zeros,
 //! undo, watch the metrics, toggle markers. Assertions read what a student reads.
 
-use crate::kit;
+use crate::{kit, run};
 
 use degrau::app::DegrauApp;
 use degrau::app::design::state::{RootKind, System};
@@ -62,18 +62,7 @@ fn seconds(cell: &str) -> f64 {
 }
 
 fn degrau_step(args: &[&str]) -> serde_json::Value {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_degrau"))
-        .arg("step")
-        .args(args)
-        .arg("--json")
-        .output()
-        .expect("run degrau");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("json")
+    run::command_json("step", args)
 }
 
 #[test]

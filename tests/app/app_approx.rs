@@ -10,7 +10,7 @@ use degrau::app::design::state::{Root, System};
 use degrau::lti::approx::Approximation;
 use degrau::text::Lang;
 use degrau::text::approx::{comparison_table, error_row};
-use eframe::egui::{self, Vec2};
+use eframe::egui::Vec2;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
@@ -93,18 +93,7 @@ fn every_method_in_one_table_and_a_refusal_in_words() {
     h.get_by_label("Skogestad's half rule, order 1");
     h.get_by_label("Padé moment matching G_{1,1}");
     // Copying puts the Markdown table of those rows on the clipboard.
-    h.get_by_label("Copy the table").click();
-    h.step();
-    let copied: Vec<String> = h
-        .output()
-        .platform_output
-        .commands
-        .iter()
-        .filter_map(|c| match c {
-            egui::OutputCommand::CopyText(t) => Some(t.clone()),
-            _ => None,
-        })
-        .collect();
+    let copied = kit::click_and_copied(&mut h, "Copy the table");
     assert_eq!(copied, [comparison_table(&rows, Lang::En)]);
     assert_eq!(copied[0].lines().count(), rows.len() + 2);
     h.run_steps(2);

@@ -153,18 +153,7 @@ fn copy_as_code_puts_the_system_on_the_clipboard_and_says_so() {
     let mut h = harness(DegrauApp::default());
     h.get_by_label("File").click();
     h.run_steps(2);
-    h.get_by_label("Copy as MATLAB code").click();
-    h.step();
-    let copied: Vec<String> = h
-        .output()
-        .platform_output
-        .commands
-        .iter()
-        .filter_map(|c| match c {
-            egui::OutputCommand::CopyText(t) => Some(t.clone()),
-            _ => None,
-        })
-        .collect();
+    let copied = kit::click_and_copied(&mut h, "Copy as MATLAB code");
     // 0.5/((s² + 2s + 5)(s + 5)) = 0.5/(s³ + 7s² + 15s + 25), driven by the notes' step
     // of 2 (MATLAB's step(G) is a unit step: its peak was half the app's).
     assert_eq!(

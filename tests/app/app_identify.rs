@@ -78,23 +78,18 @@ fn load_drag_the_dead_time_fit_and_read_the_results() {
         .ident
         .apply(Command::SetOffset(OffsetChoice::Typed(Some(50.0))));
     h.run_steps(2);
-    let td_before = h
-        .state()
-        .ident
-        .loaded
-        .as_ref()
-        .unwrap()
-        .guess
-        .get(Param::Td);
+    let td = |h: &Harness<'_, DegrauApp>| {
+        h.state()
+            .ident
+            .loaded
+            .as_ref()
+            .unwrap()
+            .guess
+            .get(Param::Td)
+    };
+    let td_before = td(&h);
     kit::drag_by(&mut h, "dead time handle", Vec2::new(30.0, 0.0), 5);
-    let td_after = h
-        .state()
-        .ident
-        .loaded
-        .as_ref()
-        .unwrap()
-        .guess
-        .get(Param::Td);
+    let td_after = td(&h);
     assert!(td_after > td_before + 0.1, "Td {td_before} → {td_after}");
 
     h.get_by_label("Fit").click();

@@ -16,3 +16,5 @@ mod app_robust;
 mod app_test_causes;
 #[path = "../kit/mod.rs"]
 mod kit;
+#[path = "../run/mod.rs"]
+mod run;

@@ -8,6 +8,21 @@ use serde_json::Value;
 
 const NOTES_POLES: &str = "-1+2j,-1-2j,-5";
 
+/// The step's metrics in `--json`: a number each for a stable system, null for one that
+/// has none (an integrator's).
+const METRICS: [&str; 10] = [
+    "rise_time",
+    "settling_time",
+    "peak",
+    "peak_time",
+    "overshoot",
+    "undershoot",
+    "steady_state",
+    "settling_min",
+    "settling_max",
+    "dc_gain",
+];
+
 fn degrau(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_degrau"))
         .args(args)
@@ -80,21 +95,7 @@ fn the_notes_third_order_example() {
 #[test]
 fn every_stable_key_is_present() {
     let report = step_json(&["--num", "0.5", "--den", "1,7,15,25"]);
-    for key in [
-        "rise_time",
-        "settling_time",
-        "peak",
-        "peak_time",
-        "overshoot",
-        "undershoot",
-        "steady_state",
-        "settling_min",
-        "settling_max",
-        "dc_gain",
-        "poles",
-        "zeros",
-        "expression",
-    ] {
+    for key in METRICS.into_iter().chain(["poles", "zeros", "expression"]) {
         assert!(report.get(key).is_some(), "missing {key} in {report}");
     }
     assert!(report.get("samples").is_none());
@@ -113,18 +114,7 @@ fn first_order_metrics_are_exact() {
 #[test]
 fn an_integrator_has_no_metrics_and_no_dc_gain() {
     let report = step_json(&["--num", "1", "--den", "1,1,0"]);
-    for key in [
-        "rise_time",
-        "settling_time",
-        "peak",
-        "peak_time",
-        "overshoot",
-        "undershoot",
-        "steady_state",
-        "settling_min",
-        "settling_max",
-        "dc_gain",
-    ] {
+    for key in METRICS {
         assert_eq!(report[key], Value::Null, "{key} in {report}");
     }
     assert_eq!(report["behaviour"], "integrating");

@@ -1,26 +1,11 @@
 //! `degrau diagnose` on the notes' LECI test and the TCLab step, through the binary.
 
-use std::process::Command;
+use crate::run;
 
-const LECI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv");
-const TCLAB: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
-);
+use run::{LECI, TCLAB};
 
 fn diagnose(args: &[&str]) -> serde_json::Value {
-    let out = Command::new(env!("CARGO_BIN_EXE_degrau"))
-        .arg("diagnose")
-        .args(args)
-        .arg("--json")
-        .output()
-        .expect("run degrau");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("one JSON object")
+    run::command_json("diagnose", args)
 }
 
 #[test]

@@ -1,26 +1,11 @@
 //! `degrau fit` on the notes' LECI test and a real TCLab step, through the binary.
 
-use std::process::Command;
+use crate::run;
 
-const LECI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv");
-const TCLAB: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
-);
+use run::{LECI, TCLAB};
 
 fn fit(args: &[&str]) -> serde_json::Value {
-    let out = Command::new(env!("CARGO_BIN_EXE_degrau"))
-        .arg("fit")
-        .args(args)
-        .arg("--json")
-        .output()
-        .expect("run degrau");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("one JSON object")
+    run::command_json("fit", args)
 }
 
 #[test]
@@ -77,11 +62,7 @@ fn bad_input_is_refused_in_words() {
             LECI, "--model", "P1D", "--t0", "5", "--du", "10", "--guess", "Kp",
         ],
     ] {
-        let out = Command::new(env!("CARGO_BIN_EXE_degrau"))
-            .arg("fit")
-            .args(&args)
-            .output()
-            .unwrap();
+        let out = run::degrau(&[&["fit"], &args[..]].concat());
         assert_eq!(out.status.code(), Some(2), "{args:?}");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(
@@ -192,16 +173,10 @@ fn the_input_can_come_from_its_own_file() {
         format!("{dir}two_files_output.txt"),
         format!("{dir}two_files_input.txt"),
     );
-    let run = |args: &[&str]| {
-        Command::new(env!("CARGO_BIN_EXE_degrau"))
-            .args(args)
-            .output()
-            .expect("run degrau")
-    };
     let fitted = fit(&[&output, "--u-file", &input]);
     let kp = fitted["params"]["Kp"].as_f64().expect("Kp");
     assert!((kp - 0.9).abs() < 0.02, "fit: Kp {kp}");
-    let diagnosed = run(&["diagnose", &output, "--u-file", &input]);
+    let diagnosed = run::degrau(&["diagnose", &output, "--u-file", &input]);
     let text = String::from_utf8_lossy(&diagnosed.stdout);
     let gain: f64 = text
         .split("Static gain Kp = Δy/Δu = ")
@@ -210,7 +185,7 @@ fn the_input_can_come_from_its_own_file() {
         .and_then(|v| v.trim().parse().ok())
         .unwrap_or_else(|| panic!("{text}"));
     assert!((gain - 0.9).abs() < 0.02, "diagnose: Kp {gain}");
-    let missing = run(&[
+    let missing = run::degrau(&[
         "fit",
         &output,
         "--u-file",

@@ -226,17 +226,37 @@ fn also_text(lang: Lang, args: &[String], text: bool) -> Outcome {
 trait Case {
     fn args(&self) -> Vec<String>;
     fn check(&self, run: &Run) -> Outcome;
+    /// Whether its text output may be read again (a long record's is not).
+    fn text_too(&self) -> bool {
+        true
+    }
 }
 
-/// Runs `case` in `lang`, checks an answer it gives, and (when `text`) runs it again for
-/// the text output, which the universal checks read.
+/// Runs `case` in `lang`, checks an answer it gives, and (when `text` and the case allows)
+/// runs it again for the text output, which the universal checks read.
 fn fuzz(case: &impl Case, lang: Lang, text: bool) -> Outcome {
     let args = case.args();
     let run = degrau(lang, &args)?;
     if run.ok() {
         case.check(&run)?;
     }
-    also_text(lang, &args, text)
+    also_text(lang, &args, text && case.text_too())
+}
+
+/// The property `fuzz` checks of every [`Case`] the strategy `cases` draws, in either
+/// language, its text output read too or not: a proptest of 64 cases.
+macro_rules! case_property {
+    ($(#[$doc:meta])* fn $name:ident(case in $cases:expr);) => {
+        proptest! {
+            #![proptest_config(proptest_config(64))]
+
+            $(#[$doc])*
+            #[test]
+            fn $name(case in $cases, lang in lang(), text in any::<bool>()) {
+                fuzz(&case, lang, text)?;
+            }
+        }
+    };
 }
 
 // ---------------------------------------------------------------------------------------
@@ -681,21 +701,12 @@ impl Case for LoopCase {
     }
 }
 
-proptest! {
-    #![proptest_config(proptest_config(64))]
-
+case_property! {
     /// Every closed-loop pole `loop --json` gives is a root of den·D + Kp·num·N to 1e-8 of
     /// the terms' size, for any plant typed by roots or by coefficients with leading zeros
     /// and a scale, Kp from 5e-324 to 1.8e308 either sign, with or without a dead time of
     /// any size and Padé order; or the loop is refused in words.
-    #[test]
-    fn loop_poles_are_roots_of_the_characteristic_polynomial(
-        case in loop_case(),
-        lang in lang(),
-        text in any::<bool>(),
-    ) {
-        fuzz(&case, lang, text)?;
-    }
+    fn loop_poles_are_roots_of_the_characteristic_polynomial(case in loop_case());
 }
 
 // ---------------------------------------------------------------------------------------
@@ -799,21 +810,12 @@ impl Case for ApproxCase {
     }
 }
 
-proptest! {
-    #![proptest_config(proptest_config(64))]
-
+case_property! {
     /// `approx --json` keeps the static gain of the system (to 1e-8), its model's poles and
     /// zeros are roots of its own den and num, and its gap and ISE are numbers (an ISE beyond
     /// double precision given by its log10): stable plants of any order, typed either way,
     /// gains 5e-324 to 1.8e308, dead times of any size, every method and odd orders.
-    #[test]
-    fn approx_keeps_the_static_gain_and_measures_its_cost(
-        case in approx_case(),
-        lang in lang(),
-        text in any::<bool>(),
-    ) {
-        fuzz(&case, lang, text)?;
-    }
+    fn approx_keeps_the_static_gain_and_measures_its_cost(case in approx_case());
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1035,21 +1037,12 @@ impl Case for ResponseCase {
     }
 }
 
-proptest! {
-    #![proptest_config(proptest_config(64))]
-
+case_property! {
     /// `step --response … --samples N --json` gives the closed-form impulse, step, ramp and
     /// parabola responses of K/(τs + 1) and K/((τ1s + 1)(τ2s + 1)) at its sample times (1e-8
     /// of the largest), for K and the amplitude from 5e-324 to 1.8e308, τ from 1e-6 to 1e6,
     /// dead times to 1e300, coefficients with leading zeros scaled by 10^e.
-    #[test]
-    fn step_responses_are_the_closed_forms(
-        case in response_case(),
-        lang in lang(),
-        text in any::<bool>(),
-    ) {
-        fuzz(&case, lang, text)?;
-    }
+    fn step_responses_are_the_closed_forms(case in response_case());
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1443,6 +1436,11 @@ impl Case for PrbsCase {
             _ => Ok(()),
         }
     }
+
+    /// A long record's text is not read again.
+    fn text_too(&self) -> bool {
+        self.n < 600
+    }
 }
 
 /// y = Y0 + Kp·(u₀ − low) + Kp·Σ Δu_j·(1 − e^{−(t − t_j − Td)/Tp1}) over the input's
@@ -1486,21 +1484,11 @@ fn check_p1d(m: &P1d, time: &[f64], u: &[f64], y: &[f64], at: &str) -> Outcome {
     Ok(())
 }
 
-proptest! {
-    #![proptest_config(proptest_config(64))]
-
+case_property! {
     /// `prbs --json` holds u at its two levels, repeats every (2^order − 1)·clock samples,
     /// writes t = k·h, and a P1D model's y is its superposition of steps (1e-7), for levels,
     /// h, Kp, Tp1, Td and Y0 from 5e-324 to 1.8e308; or it is refused in words.
-    #[test]
-    fn prbs_is_two_levels_and_its_models_response(
-        case in prbs_case(),
-        lang in lang(),
-        text in any::<bool>(),
-    ) {
-        // A long record's text is not read again.
-        fuzz(&case, lang, text && case.n < 600)?;
-    }
+    fn prbs_is_two_levels_and_its_models_response(case in prbs_case());
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1658,136 +1646,57 @@ proptest! {
 // Every command with edge values in its flags: only the checks every run passes.
 // ---------------------------------------------------------------------------------------
 
-/// Each command: its name, a valid start, and the flags the fuzz fills (a trailing `!`: a
-/// switch without a value).
-const COMMANDS: [(&str, &[&str], &[&str]); 10] = [
+/// Each command: its name, a valid start, and the flags the fuzz fills, between spaces (a
+/// trailing `!`: a switch without a value).
+const COMMANDS: [(&str, &[&str], &str); 10] = [
     (
         "loop",
         &["--num=1", "--den=1,3,2"],
-        &[
-            "--num",
-            "--den",
-            "--poles",
-            "--zeros",
-            "--gain",
-            "--dc-gain",
-            "--kp",
-            "--delay",
-            "--pade",
-            "--find",
-            "--locus!",
-            "--complementary!",
-        ],
+        "--num --den --poles --zeros --gain --dc-gain --kp --delay --pade --find --locus! \
+         --complementary!",
     ),
     (
         "approx",
         &["--num=1", "--den=1,3,2", "--method=taylor"],
-        &[
-            "--num",
-            "--den",
-            "--poles",
-            "--delay",
-            "--method",
-            "--order",
-            "--amplitude",
-            "--samples",
-            "--table!",
-        ],
+        "--num --den --poles --delay --method --order --amplitude --samples --table!",
     ),
-    ("pade", &["--delay=1"], &["--delay", "--order"]),
+    ("pade", &["--delay=1"], "--delay --order"),
     (
         "step",
         &["--num=1", "--den=1,3,2", "--response=ramp"],
-        &[
-            "--num",
-            "--den",
-            "--poles",
-            "--zeros",
-            "--gain",
-            "--dc-gain",
-            "--delay",
-            "--amplitude",
-            "--samples",
-            "--response",
-            "--settling-threshold",
-            "--rise-limits",
-        ],
+        "--num --den --poles --zeros --gain --dc-gain --delay --amplitude --samples --response \
+         --settling-threshold --rise-limits",
     ),
     (
         "c2d",
         &["--num=1", "--den=1,3,2", "--ts=0.1"],
-        &["--num", "--den", "--poles", "--gain", "--delay", "--ts"],
+        "--num --den --poles --gain --delay --ts",
     ),
     (
         "d2c",
         &["--num=0.1", "--den=1,-0.9", "--ts=0.1"],
-        &["--num", "--den", "--nk", "--ts"],
+        "--num --den --nk --ts",
     ),
     (
         "prbs",
         &["--n=100", "--model=P1D", "--params=Kp=1,Tp1=3"],
-        &[
-            "--n",
-            "--clock",
-            "--levels",
-            "--periods",
-            "--order",
-            "--ts",
-            "--noise",
-            "--seed",
-            "--model",
-            "--params",
-        ],
+        "--n --clock --levels --periods --order --ts --noise --seed --model --params",
     ),
     (
         "hand",
         &[],
-        &[
-            "--t0",
-            "--du",
-            "--y0",
-            "--window",
-            "--filter",
-            "--tangent-at",
-            "--final-level",
-            "--initial-input",
-            "--skip-rows",
-            "--method",
-            "--hold",
-            "--single-step!",
-            "--first-departure!",
-        ],
+        "--t0 --du --y0 --window --filter --tangent-at --final-level --initial-input --skip-rows \
+         --method --hold --single-step! --first-departure!",
     ),
     (
         "arx",
         &[],
-        &[
-            "--na",
-            "--nb",
-            "--nk",
-            "--validate",
-            "--max-nk",
-            "--offset",
-            "--t0",
-            "--du",
-            "--window",
-            "--filter",
-            "--select!",
-        ],
+        "--na --nb --nk --validate --max-nk --offset --t0 --du --window --filter --select!",
     ),
     (
         "rls",
         &[],
-        &[
-            "--na",
-            "--nb",
-            "--nk",
-            "--lambda",
-            "--p0",
-            "--validate",
-            "--window",
-            "--offset",
-        ],
+        "--na --nb --nk --lambda --p0 --validate --window --offset",
     ),
 ];
 
@@ -1872,6 +1781,7 @@ fn edge_case() -> impl Strategy<Value = EdgeCase> {
 impl EdgeCase {
     fn args(&self) -> Vec<String> {
         let (name, start, flags) = COMMANDS[self.command];
+        let flags: Vec<&str> = flags.split_whitespace().collect();
         let mut out = strings(&[name]);
         if matches!(name, "hand" | "arx" | "rls") {
             out.push(scaled_step("fuzz_edge", self.record_scale));

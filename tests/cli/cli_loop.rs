@@ -7,6 +7,13 @@ use proptest::prelude::*;
 use run::{degrau, stderr, stdout};
 use serde_json::Value;
 
+/// The notes' G(s) = 0.5(s + 10)/((s² + 2s + 5)(s + 5)), by its roots: flag and value.
+const NOTES_G: [[&str; 2]; 3] = [
+    ["--poles", "-1+2j,-1-2j,-5"],
+    ["--zeros", "-10"],
+    ["--gain", "0.5"],
+];
+
 fn json(args: &[&str]) -> Value {
     let out = degrau(args);
     assert!(out.status.success(), "{args:?}: {}", stderr(&out));
@@ -116,17 +123,7 @@ fn the_constants_of_s_plus_2_over_s_s_plus_4() {
 
 #[test]
 fn the_locus_points_are_roots_of_the_characteristic_polynomial() {
-    let v = json(&[
-        "loop",
-        "--poles",
-        "-1+2j,-1-2j,-5",
-        "--zeros",
-        "-10",
-        "--gain",
-        "0.5",
-        "--locus",
-        "--json",
-    ]);
+    let v = json(&[&["loop"], &NOTES_G.concat()[..], &["--locus", "--json"]].concat());
     // 0.5(s+10)/(s³+7s²+15s+25): Routh gives K = 160/3 at ω² = 875/21.
     assert!((num(&v["critical_gain"]) - 160.0 / 3.0).abs() < 1e-9);
     assert!((num(&v["crossing_frequency"]) - (875.0f64 / 21.0).sqrt()).abs() < 1e-10);
@@ -283,7 +280,7 @@ fn a_bad_pade_order_and_a_bad_spec_are_refused() {
 
 #[test]
 fn rise_limits_zero_to_one_are_matlabs() {
-    let v = json(&[
+    let args = [
         "step",
         "--num",
         "1,5,5",
@@ -291,18 +288,10 @@ fn rise_limits_zero_to_one_are_matlabs() {
         "1,1.65,5,6.5,2",
         "--rise-limits",
         "0,1",
-        "--json",
-    ]);
+    ];
+    let v = json(&[&args[..], &["--json"]].concat());
     assert_eq!(format!("{:.4}", num(&v["rise_time"])), "4.8143");
-    let text = stdout(&degrau(&[
-        "step",
-        "--num",
-        "1,5,5",
-        "--den",
-        "1,1.65,5,6.5,2",
-        "--rise-limits",
-        "0,1",
-    ]));
+    let text = stdout(&degrau(&args));
     assert!(text.contains("4.8143"), "{text}");
 }
 

@@ -2,29 +2,20 @@
 //! heater record (a synthetic stand-in, see tests/data/records/SOURCES.md) was still rising
 //! before its step; the notes' LECI test was at rest.
 
-use std::process::Command;
+use crate::run;
+
+use run::LECI;
 
 const SBHS: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/data/records/sbhs_step_not_at_rest_synthetic.txt"
 );
-const LECI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv");
 
 /// The SBHS columns: time from the sample number (one a second), heater, temperature.
 const SBHS_COLUMNS: [&str; 6] = ["--time-col", "1", "--u-col", "2", "--y-col", "4"];
 
 fn degrau(args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_degrau"))
-        .arg("diagnose")
-        .args(args)
-        .output()
-        .expect("run degrau");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).expect("UTF-8")
+    run::succeeds(&[&["diagnose"], args].concat())
 }
 
 #[test]

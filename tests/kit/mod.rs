@@ -1,5 +1,5 @@
 //! Hand gestures shared by the kittests: a drag in several moves, a mouse-wheel turn, a
-//! number typed into a field, a text field's content replaced.
+//! number typed into a field, a text field's content replaced, a button that copies.
 #![allow(dead_code)] // each test binary uses its own subset
 
 use degrau::app::DegrauApp;
@@ -32,6 +32,22 @@ pub fn wheel(h: &mut Harness<'_, DegrauApp>, at: Pos2, dy: f32) {
         phase: egui::TouchPhase::Move,
         source: egui::MouseWheelSource::Wheel,
     });
+}
+
+/// Clicks the widget labelled `label` and runs one frame: the texts that frame put on the
+/// clipboard.
+pub fn click_and_copied(h: &mut Harness<'_, DegrauApp>, label: &str) -> Vec<String> {
+    h.get_by_label(label).click();
+    h.step();
+    h.output()
+        .platform_output
+        .commands
+        .iter()
+        .filter_map(|c| match c {
+            egui::OutputCommand::CopyText(t) => Some(t.clone()),
+            _ => None,
+        })
+        .collect()
 }
 
 /// Every text painted in the last frame, with the rect it covers (tick labels and canvas

@@ -1,5 +1,6 @@
 //! Running the `degrau` binary from a test: its output, its standard output and error as
-//! text (shared by the command-line tests).
+//! text, its JSON (shared by the command-line tests and the app's, which compare the window
+//! with the CLI).
 #![allow(dead_code)] // each test binary uses its own subset
 
 use std::process::{Command, Output};
@@ -8,6 +9,15 @@ use std::process::{Command, Output};
 pub const STEP: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/data/first_order_step.csv"
+);
+
+/// The notes' LECI step test (no input column: t0 = 5 s, Δu = 10, y0 = 50).
+pub const LECI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/leci_step.csv");
+
+/// A TCLab heater step (Q1 to 50 %; columns T1 and Q1).
+pub const TCLAB: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
 );
 
 /// `degrau args…`, run to the end.
@@ -28,11 +38,23 @@ pub fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
-/// `degrau args…` that must succeed, its standard output read as one JSON object.
-pub fn json(args: &[&str]) -> serde_json::Value {
+/// `degrau args…` that must succeed (its standard error said if not): its standard output,
+/// which must be UTF-8.
+pub fn succeeds(args: &[&str]) -> String {
     let out = degrau(args);
     assert!(out.status.success(), "{}", stderr(&out));
-    serde_json::from_slice(&out.stdout).expect("one JSON object")
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+/// `degrau args…` that must succeed, its standard output read as one JSON object.
+pub fn json(args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&succeeds(args)).expect("one JSON object")
+}
+
+/// `degrau command args… --json` that must succeed, its standard output read as one JSON
+/// object.
+pub fn command_json(command: &str, args: &[&str]) -> serde_json::Value {
+    json(&[&[command], args, &["--json"]].concat())
 }
 
 /// A proptest configuration with a fixed seed, so that every run checks the same cases;
