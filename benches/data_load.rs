@@ -38,21 +38,12 @@ fn generated_file() -> PathBuf {
     path
 }
 
+#[path = "../crates/ident/tests/wide/mod.rs"]
+mod wide;
+
 /// `t,y,c3,…,cN` and 5 rows of small integers.
 fn wide_text(columns: usize) -> String {
-    let mut text = String::from("t,y");
-    for c in 3..=columns {
-        let _ = write!(text, ",c{c}");
-    }
-    text.push('\n');
-    for k in 0..5 {
-        let _ = write!(text, "{k},{}", 2 * k);
-        for c in 3..=columns {
-            let _ = write!(text, ",{}", (c + k) % 10);
-        }
-        text.push('\n');
-    }
-    text
+    wide::wide_csv(columns, "y", |k| 2 * k, |c, k| (c + k) % 10)
 }
 
 fn bench(c: &mut Criterion) {

@@ -10,7 +10,6 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use degrau::ident::diagnose::{DiagnoseOptions, diagnose};
-use degrau::ident::fit::FitData;
 use degrau::ident::fit::guess::auto_guess;
 use degrau::ident::model::excitation::Excitation;
 use degrau::ident::model::{Param, Structure};
@@ -18,19 +17,10 @@ use std::time::Instant;
 
 mod common;
 
-fn data() -> FitData {
-    let truth = [
-        (Param::Kp, 1.8),
-        (Param::Tp1, 12.0),
-        (Param::Tp2, 5.0),
-        (Param::Td, 4.0),
-        (Param::Y0, 30.0),
-    ];
-    common::noisy_800("P2D", &truth, Excitation::step(20.0, 4.0), 0.07, 7)
-}
-
 fn bench(c: &mut Criterion) {
-    let data = data();
+    // The P2D: Kp 1.8, Tp1 12 s, Tp2 5 s, Td 4 s, Y0 30.
+    let truth = [1.8, 12.0, 5.0, 4.0, 30.0];
+    let data = common::noisy_800("P2D", &truth, Excitation::step(20.0, 4.0), 0.07, 7);
     let start = Structure::parse("P1").unwrap();
     let options = DiagnoseOptions::default();
     let report = diagnose(&data, start, None, &options).unwrap();
@@ -84,13 +74,8 @@ fn long_records(c: &mut Criterion) {
 
 /// The extruder record (75,323 rows), diagnosed from P1 as the CLI does, timed once.
 fn extruder() {
-    let Some(path) = common::extruder_path() else {
-        eprintln!("extruder record absent: skipped");
+    let Some((data, s, guess)) = common::extruder_or_skip("P1") else {
         return;
-    };
-    let (data, s, guess) = match common::extruder(&path, "P1") {
-        Ok(prepared) => prepared,
-        Err(e) => return eprintln!("extruder record unreadable ({e}): skipped"),
     };
     let clock = Instant::now();
     let held = (!s.free_offset).then_some(guess);

@@ -39,13 +39,8 @@ fn leci() -> FitData {
 
 /// 800 samples of a P2DU with ±1 % uniform noise (deterministic).
 fn synthetic_800() -> FitData {
-    let truth = [
-        (Param::Kp, 0.8),
-        (Param::Tw, 4.0),
-        (Param::Zeta, 0.3),
-        (Param::Td, 6.0),
-        (Param::Y0, 20.0),
-    ];
+    // Kp 0.8, Tw 4 s, ζ 0.3, Td 6 s, Y0 20.
+    let truth = [0.8, 4.0, 0.3, 6.0, 20.0];
     common::noisy_800("P2DU", &truth, Excitation::step(10.0, 5.0), 0.04, 12345)
 }
 
@@ -137,14 +132,9 @@ fn long_records(c: &mut Criterion) {
 /// The extruder record (75,323 rows, `../shared/data/real`), fitted P1D as the CLI does
 /// (measured input, the automatic guess, 16 starts), timed once: skipped when absent.
 fn extruder() {
-    let Some(path) = common::extruder_path() else {
-        eprintln!("extruder record absent: skipped");
-        return;
-    };
     let clock = Instant::now();
-    let (data, s, guess) = match common::extruder(&path, "P1D") {
-        Ok(prepared) => prepared,
-        Err(e) => return eprintln!("extruder record unreadable ({e}): skipped"),
+    let Some((data, s, guess)) = common::extruder_or_skip("P1D") else {
+        return;
     };
     let loaded = clock.elapsed().as_secs_f64();
     let clock = Instant::now();

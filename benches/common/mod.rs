@@ -2,46 +2,53 @@
 
 use degrau::ident::fit::FitData;
 use degrau::ident::model::excitation::Excitation;
-use degrau::ident::model::{Model, Param, Structure, Values};
+use degrau::ident::model::{Model, Structure, Values};
 
-/// 800 samples (Ts = 0.25 s) of the model `code` with `truth`, plus uniform noise of
-/// peak-to-peak `noise` from a small LCG seeded with `seed`.
-#[allow(dead_code)]
-pub fn noisy_800(
+/// The model `code` at `truth` (in the order of its parameters, `Structure::params`: Kp,
+/// the time constants, Td, Y0) driven by `input` at `times`, plus uniform noise of
+/// peak-to-peak `noise` from the workspace's generator seeded with `seed`.
+fn simulated(
     code: &str,
-    truth: &[(Param, f64)],
-    setup: Excitation,
+    truth: &[f64],
+    input: Excitation,
+    times: Vec<f64>,
     noise: f64,
     seed: u64,
 ) -> FitData {
     let s = Structure::parse(code).expect("a valid code");
-    let mut v = Values::default();
-    for &(p, x) in truth {
-        v.set(p, x);
-    }
-    let times: Vec<f64> = (0..800).map(|k| 0.25 * k as f64).collect();
-    let mut y = Model::new(s, v)
-        .simulate(&setup, &times)
+    let params = s.params();
+    assert_eq!(params.len(), truth.len(), "{code}: {params:?}");
+    let mut y = Model::new(s, Values::default().with_vector(&params, truth))
+        .simulate(&input, &times)
         .expect("a valid model");
     let mut rng = degrau::ident::random::Lcg(seed);
     for v in y.iter_mut() {
         *v += noise * (rng.unit() - 0.5);
     }
-    FitData {
-        times,
-        y,
-        input: setup,
-    }
+    FitData { times, y, input }
 }
 
-/// The record's true process (P1D): Kp, Tp1, Td, Y0.
+/// 800 samples (Ts = 0.25 s) of the model `code` with `truth` (its parameters in order),
+/// plus uniform noise of peak-to-peak `noise` from a small LCG seeded with `seed`.
 #[allow(dead_code)]
-pub const LOGGER_TRUTH: [(Param, f64); 4] = [
-    (Param::Kp, 1.5),
-    (Param::Tp1, 4.0),
-    (Param::Td, 0.75),
-    (Param::Y0, 30.0),
-];
+pub fn noisy_800(code: &str, truth: &[f64], setup: Excitation, noise: f64, seed: u64) -> FitData {
+    let times: Vec<f64> = (0..800).map(|k| 0.25 * k as f64).collect();
+    simulated(code, truth, setup, times, noise, seed)
+}
+
+/// The logger record's true process, a P1D: Kp, Tp1, Td, Y0.
+#[allow(dead_code)]
+pub const LOGGER_TRUTH: [f64; 4] = [1.5, 4.0, 0.75, 30.0];
+
+/// The level at `t` of an input that starts at `first` and moves to each `(instant, level)`
+/// of `changes` (in time order) at its instant.
+fn level_at(first: f64, changes: &[(f64, f64)], t: f64) -> f64 {
+    changes
+        .iter()
+        .rev()
+        .find(|&&(at, _)| at <= t)
+        .map_or(first, |&(_, level)| level)
+}
 
 /// A 1 kHz logger for 80 s (80,000 samples): a measured input that steps 2 → 4 → 1 → 3.5 →
 /// 2.5 (at 5, 25, 45 and 62 s) into the P1D of [`LOGGER_TRUTH`], with ±0.02 uniform noise
@@ -51,30 +58,9 @@ pub fn logger_80k() -> FitData {
     use degrau::ident::model::excitation::Hold;
     let times: Vec<f64> = (0..80_000).map(|k| 1e-3 * k as f64).collect();
     let levels = [(5.0, 4.0), (25.0, 1.0), (45.0, 3.5), (62.0, 2.5)];
-    let u: Vec<f64> = times
-        .iter()
-        .map(|&t| {
-            levels
-                .iter()
-                .take_while(|(s, _)| *s <= t)
-                .last()
-                .map_or(2.0, |l| l.1)
-        })
-        .collect();
+    let u: Vec<f64> = times.iter().map(|&t| level_at(2.0, &levels, t)).collect();
     let input = Excitation::measured(&times, &u, None, Hold::Zoh).expect("an input that steps");
-    let s = Structure::parse("P1D").expect("a valid code");
-    let mut v = Values::default();
-    for (p, x) in LOGGER_TRUTH {
-        v.set(p, x);
-    }
-    let mut y = Model::new(s, v)
-        .simulate(&input, &times)
-        .expect("a valid model");
-    let mut rng = degrau::ident::random::Lcg(2026u64);
-    for v in y.iter_mut() {
-        *v += 0.04 * (rng.unit() - 0.5);
-    }
-    FitData { times, y, input }
+    simulated("P1D", &LOGGER_TRUTH, input, times, 0.04, 2026)
 }
 
 /// The input column of a record driven by its measured input, rebuilt from its steps.
@@ -145,4 +131,17 @@ pub fn extruder(
         .map_err(|e| e.to_string())?;
     let guess = experiment.guess(s, &data);
     Ok((data, s, guess))
+}
+
+/// [`extruder`] on the extruder record of `../shared/data/real` with the structure `code`,
+/// or `None` (said on stderr) when it is absent or cannot be read.
+#[allow(dead_code)]
+pub fn extruder_or_skip(code: &str) -> Option<(FitData, Structure, Values)> {
+    let Some(path) = extruder_path() else {
+        eprintln!("extruder record absent: skipped");
+        return None;
+    };
+    extruder(&path, code)
+        .map_err(|e| eprintln!("extruder record unreadable ({e}): skipped"))
+        .ok()
 }

@@ -3,7 +3,7 @@
 //! are read; files with 10⁵ columns load (in time linear in rows and columns: the bench
 //! `data_load` measures it) and their messages stay short.
 
-use std::fmt::Write as _;
+use crate::wide::wide_csv;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::Duration;
@@ -110,21 +110,13 @@ fn a_missing_path_and_an_empty_file_say_so() {
 
 /// `t,y,c3,…` with `columns` columns and 5 rows: t = k, y = 10·k, column c = c + k·(c % 3 == 0).
 fn wide(columns: usize, named_output: bool) -> String {
-    let mut text = String::from("t,");
-    text.push_str(if named_output { "y" } else { "c2" });
-    for c in 3..=columns {
-        let _ = write!(text, ",c{c}");
-    }
-    text.push('\n');
-    for k in 0..5 {
-        let _ = write!(text, "{k},{}", 10 * k);
-        for c in 3..=columns {
-            let v = c + if c % 3 == 0 { k } else { 0 };
-            let _ = write!(text, ",{v}");
-        }
-        text.push('\n');
-    }
-    text
+    let output = if named_output { "y" } else { "c2" };
+    wide_csv(
+        columns,
+        output,
+        |k| 10 * k,
+        |c, k| c + if c % 3 == 0 { k } else { 0 },
+    )
 }
 
 #[test]

@@ -57,6 +57,14 @@ fn has_note(test: &StepTest, words: &[&str]) -> bool {
         .any(|n| words.iter().all(|w| n.text(Lang::En).contains(w)))
 }
 
+/// The corpus file `file` loaded with the default options, checked for a note holding every
+/// one of `words`.
+fn loaded_noting(file: &str, words: &[&str]) -> StepTest {
+    let t = load(&corpus(file), &auto()).unwrap();
+    assert!(has_note(&t, words), "{file}: {:?}", t.notes);
+    t
+}
+
 // ----------------------------------------------------------------------------------------
 // Malformed corpus
 
@@ -105,15 +113,13 @@ fn text_in_a_number_column_names_line_column_and_text() {
 
 #[test]
 fn missing_output_or_input_skips_rows_with_a_note() {
-    let t = load(&corpus("missing_values.csv"), &auto()).unwrap();
+    let t = loaded_noting(
+        "missing_values.csv",
+        &["lines 4, 5 and 6", "missing", "skipped"],
+    );
     assert_eq!(t.time, [0.0, 1.0, 5.0, 6.0]);
     assert_eq!(t.output, [0.0, 0.1, 1.0, 1.1]);
     assert_eq!(t.input.as_deref(), Some(&[0.0, 1.0, 1.0, 1.0][..]));
-    assert!(
-        has_note(&t, &["lines 4, 5 and 6", "missing", "skipped"]),
-        "{:?}",
-        t.notes
-    );
 }
 
 #[test]
@@ -249,7 +255,10 @@ fn a_missing_file_says_which() {
 
 #[test]
 fn semicolons_with_decimal_commas() {
-    let t = load(&corpus("semicolon_decimal_comma.csv"), &auto()).unwrap();
+    let t = loaded_noting(
+        "semicolon_decimal_comma.csv",
+        &["semicolon-separated with decimal commas"],
+    );
     assert_eq!(t.time, [0.0, 0.5, 1.0, 1.5, 2.0]);
     assert_eq!(t.output, [1.25, 1.25, 2.5, 3.75, 4.5]);
     assert_eq!(t.input.as_deref(), Some(&[0.0, 10.0, 10.0, 10.0, 10.0][..]));
@@ -257,23 +266,20 @@ fn semicolons_with_decimal_commas() {
         (t.time_name.as_str(), t.output_name.as_str()),
         ("tempo (s)", "saída")
     );
-    assert!(has_note(&t, &["semicolon-separated with decimal commas"]));
 }
 
 #[test]
 fn latin1_portuguese_header() {
-    let t = load(&corpus("latin1_semicolon.csv"), &auto()).unwrap();
+    let t = loaded_noting("latin1_semicolon.csv", &["Latin-1"]);
     assert_eq!(t.output_name, "saída");
     assert_eq!(t.output, [1.5, 2.5, 3.0]);
-    assert!(has_note(&t, &["Latin-1"]));
 }
 
 #[test]
 fn tab_separated() {
-    let t = load(&corpus("tabs.tsv"), &auto()).unwrap();
+    let t = loaded_noting("tabs.tsv", &["tab-separated"]);
     assert_eq!(t.output, [0.0, 0.0, 0.35, 0.62, 0.81]);
     assert_eq!(t.input_name.as_deref(), Some("u"));
-    assert!(has_note(&t, &["tab-separated"]));
 }
 
 #[test]
@@ -296,15 +302,13 @@ fn quoted_header_and_cells_with_units() {
 
 #[test]
 fn matlab_whitespace_with_a_comment_header() {
-    let t = load(&corpus("matlab_comment_header.txt"), &auto()).unwrap();
+    let t = loaded_noting(
+        "matlab_comment_header.txt",
+        &["whitespace-separated", "comment on line 1"],
+    );
     assert_eq!(t.time, [0.0, 1.0, 2.0, 3.0, 4.0]);
     assert_eq!(t.output[3], 0.632);
     assert_eq!(t.input_name.as_deref(), Some("u"));
-    assert!(
-        has_note(&t, &["whitespace-separated", "comment on line 1"]),
-        "{:?}",
-        t.notes
-    );
 }
 
 #[test]
@@ -346,15 +350,13 @@ fn a_trailing_separator_is_tolerated() {
 #[test]
 fn whitespace_header_with_spaces_in_names_is_not_used() {
     // "time (s)   u   y (V)" splits into 5 names for 3 columns: numbered instead.
-    let t = load(&corpus("header_with_spaces.txt"), &auto()).unwrap();
+    let t = loaded_noting(
+        "header_with_spaces.txt",
+        &["header on line 1 was not used", "numbered"],
+    );
     assert_eq!(t.time, [0.0, 0.5, 1.0, 1.5]);
     assert_eq!(t.output, [0.0, 0.39, 0.63, 0.78]);
     assert_eq!(t.input_name.as_deref(), Some("column 2"));
-    assert!(
-        has_note(&t, &["header on line 1 was not used", "numbered"]),
-        "{:?}",
-        t.notes
-    );
 }
 
 #[test]
@@ -408,16 +410,18 @@ fn pasted_columns() {
 // ----------------------------------------------------------------------------------------
 // Real files
 
+/// The LECI step test of the notes, `assets/leci_step.csv`.
+fn leci() -> StepTest {
+    let path = concat!(
+        concat!(env!("CARGO_MANIFEST_DIR"), "/../.."),
+        "/assets/leci_step.csv"
+    );
+    load(path, &auto()).unwrap()
+}
+
 #[test]
 fn leci_loads_35_rows_of_t_and_y() {
-    let t = load(
-        concat!(
-            concat!(env!("CARGO_MANIFEST_DIR"), "/../.."),
-            "/assets/leci_step.csv"
-        ),
-        &auto(),
-    )
-    .unwrap();
+    let t = leci();
     assert_eq!(t.time.len(), 35);
     assert_eq!((t.time_name.as_str(), t.output_name.as_str()), ("t", "y"));
     assert_eq!(t.input, None);
@@ -427,14 +431,7 @@ fn leci_loads_35_rows_of_t_and_y() {
 
 #[test]
 fn leci_measured_step_characteristics() {
-    let t = load(
-        concat!(
-            concat!(env!("CARGO_MANIFEST_DIR"), "/../.."),
-            "/assets/leci_step.csv"
-        ),
-        &auto(),
-    )
-    .unwrap();
+    let t = leci();
     let (t0, y0) = (5.0, 50.0);
     // The last 10 % of 5 … 39.8641 s starts at 36.378 s: the last four samples.
     let y_final = final_level(&t, 0.1).unwrap();

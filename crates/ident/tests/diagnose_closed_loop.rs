@@ -118,6 +118,17 @@ struct Noise {
 }
 
 impl Noise {
+    /// Noise of standard deviation `sd`, white or (`coloured`) AR(1) with ρ drawn in
+    /// 0.3–0.7.
+    fn new(rng: &mut Lcg, sd: f64, coloured: bool) -> Self {
+        let rho = if coloured {
+            range(rng, (0.3, 0.7))
+        } else {
+            0.0
+        };
+        Noise { sd, rho, x: 0.0 }
+    }
+
     fn next(&mut self, rng: &mut Lcg) -> f64 {
         let scale = self.sd * (1.0 - self.rho * self.rho).sqrt();
         self.x = self.rho * self.x + scale * rng.gaussian();
@@ -167,10 +178,16 @@ impl Setting {
     }
 }
 
+/// The generator of the `index`-th case of a kind whose seeds start at `base`.
+fn case_rng(base: u64, index: usize) -> Lcg {
+    let mut rng = Lcg((base + index as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+    rng.bits();
+    rng
+}
+
 /// The `index`-th closed-loop case.
 fn closed(index: usize) -> Option<Record> {
-    let mut rng = Lcg((0xC1_05ED + index as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
-    rng.bits();
+    let mut rng = case_rng(0xC1_05ED, index);
     let second_order = index % 2 == 1;
     let pi = (index / 2) % 2 == 1;
     let dither = (index / 4) % 2 == 1;
@@ -203,15 +220,7 @@ fn closed(index: usize) -> Option<Record> {
     let sd = range(&mut rng, (0.002, 0.02)) * dr.abs();
     let amplitude = range(&mut rng, (2.0, 10.0)) * sd / plant.kp.abs();
     let hold = 3.0 + rng.below(8) as f64;
-    let mut noise = Noise {
-        sd,
-        rho: if coloured {
-            range(&mut rng, (0.3, 0.7))
-        } else {
-            0.0
-        },
-        x: 0.0,
-    };
+    let mut noise = Noise::new(&mut rng, sd, coloured);
     let (mut times, mut u, mut y) = (Vec::new(), Vec::new(), Vec::new());
     let (mut integral, mut d, mut deviation) = (0.0, amplitude, 0.0);
     for k in 0..n {
@@ -269,8 +278,7 @@ enum Drive {
 
 /// The `index`-th open-loop case.
 fn open(index: usize) -> Option<Record> {
-    let mut rng = Lcg((0x0_9E11 + index as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
-    rng.bits();
+    let mut rng = case_rng(0x0_9E11, index);
     let drive = match index % 7 {
         0 => Drive::Step,
         1 => Drive::Staircase,
@@ -288,28 +296,14 @@ fn open(index: usize) -> Option<Record> {
     };
     let second_order = (index / 7) % 2 == 1;
     let coloured = (index / 14) % 2 == 1;
-    let Setting {
-        tau1,
-        h,
-        mut plant,
-        n,
-        y0,
-        u0,
-    } = Setting::draw(&mut rng, second_order);
+    let mut setting = Setting::draw(&mut rng, second_order);
     let du = signed(&mut rng, (0.5, 10.0));
-    let mut noise = Noise {
-        sd: range(&mut rng, (0.002, 0.02)) * (plant.kp * du).abs(),
-        rho: if coloured {
-            range(&mut rng, (0.3, 0.7))
-        } else {
-            0.0
-        },
-        x: 0.0,
-    };
-    let at = |share: f64| (share * n as f64) as usize;
+    let sd = range(&mut rng, (0.002, 0.02)) * (setting.plant.kp * du).abs();
+    let mut noise = Noise::new(&mut rng, sd, coloured);
+    let at = |share: f64| (share * setting.n as f64) as usize;
     let (mut level, mut times, mut u, mut y) = (0.0, Vec::new(), Vec::new(), Vec::new());
     let mut deviation = 0.0;
-    for k in 0..n {
+    for k in 0..setting.n {
         let before = level;
         level = match drive {
             Drive::Step | Drive::NoisyStep { .. } => du * f64::from(u8::from(k >= at(0.2))),
@@ -337,17 +331,22 @@ fn open(index: usize) -> Option<Record> {
         // period before the logger shows it.
         if k > 0 {
             let late = if level == before { 0.0 } else { rng.unit() };
-            deviation = plant.advance_switching(before, level, late, h);
+            deviation = setting
+                .plant
+                .advance_switching(before, level, late, setting.h);
         }
-        times.push(k as f64 * h);
-        u.push(u0 + logged);
-        y.push(y0 + deviation + noise.next(&mut rng));
+        times.push(k as f64 * setting.h);
+        u.push(setting.u0 + logged);
+        y.push(setting.y0 + deviation + noise.next(&mut rng));
     }
     let note = format!(
-        "{drive:?} {} {} Kp={:.3} tau1={tau1:.2} h={h:.3} N={n} sd={:.4} rho={:.2}",
+        "{drive:?} {} {} Kp={:.3} tau1={:.2} h={:.3} N={} sd={:.4} rho={:.2}",
         if second_order { "P2D" } else { "P1D" },
         if coloured { "coloured" } else { "white" },
-        plant.kp,
+        setting.plant.kp,
+        setting.tau1,
+        setting.h,
+        setting.n,
         noise.sd,
         noise.rho
     );

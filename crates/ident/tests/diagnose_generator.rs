@@ -28,6 +28,7 @@
 //! Run with `cargo test --test diagnose_generator -- --nocapture` to see the figures, with
 //! `DEGRAU_DIAGNOSE_CASES=40` for more cases per effect.
 
+use crate::draw::Draws;
 use degrau_ident::model::excitation::{Excitation, Hold};
 use std::sync::OnceLock;
 use std::time::Instant;
@@ -41,11 +42,6 @@ use degrau_ident::model::{Model, Param, Structure, Values};
 // Acceptance numbers
 // ---------------------------------------------------------------------------------------------
 
-/// Cases per missing effect (the environment variable `DEGRAU_DIAGNOSE_CASES` overrides it,
-/// for a longer run: 40 per effect take about 15 s in release on two cores).
-const CASES_PER_EFFECT: usize = 20;
-/// Clean cases (cycling through P1D, P2D and P2DU; the override applies here too).
-const CLEAN_CASES: usize = 20;
 /// Fraction of an effect's cases whose first named cause must be that effect.
 const MIN_RIGHT_FIRST: f64 = 0.95;
 /// Fraction of the clean cases that must come out `none` (no step, adequate).
@@ -56,8 +52,6 @@ const MIN_RECOVERED: f64 = 0.90;
 const RECOVERY_TOLERANCE: f64 = 0.10;
 /// Every correctly named first step must lower the RMSE by more than this factor.
 const MIN_RMSE_RATIO: f64 = 1.0;
-/// Noise-free data fitted from the truth must give back the truth to this (relative) precision.
-const ROUND_TRIP_TOLERANCE: f64 = 1e-6;
 
 // Ranges of the random truths.
 const KP: (f64, f64) = (0.5, 5.0);
@@ -110,41 +104,24 @@ impl Lcg {
         self.0.unit()
     }
 
-    fn range(&mut self, (a, b): (f64, f64)) -> f64 {
-        a + (b - a) * self.unit()
-    }
-
-    fn sign(&mut self) -> f64 {
-        if self.unit() < 0.5 { -1.0 } else { 1.0 }
-    }
-
-    /// A magnitude in [a, b] with a random sign.
-    fn signed(&mut self, r: (f64, f64)) -> f64 {
-        self.sign() * self.range(r)
-    }
-
     fn count(&mut self, (a, b): (usize, usize)) -> usize {
         // The state's top 31 bits.
         a + (self.0.bits() >> 22) as usize % (b - a + 1)
     }
+}
 
-    /// Standard normal (Box–Muller).
-    fn gaussian(&mut self) -> f64 {
-        self.0.gaussian()
+impl Draws for Lcg {
+    fn lcg(&mut self) -> &mut degrau_ident::random::Lcg {
+        &mut self.0
     }
 }
 
 /// What is missing from the start model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Kind {
-    DeadTime,
-    Offset,
-    Oscillation,
-    ExtraPole,
-    Zero,
-    InverseResponse,
-    Integrator,
-    Drift,
+    /// One effect: the cause `diagnose` must name first (never `Cause::None`: nothing
+    /// missing is `Clean`).
+    Missing(Cause),
     Clean,
     /// Two effects hidden at once, from a P1 start: a dead time and an extra pole (P2D).
     DeadTimeAndPole,
@@ -158,17 +135,9 @@ impl Kind {
     /// The cause `diagnose` must name first.
     fn expected(self) -> Cause {
         match self {
-            Kind::DeadTime => Cause::DeadTime,
-            Kind::Offset => Cause::Offset,
-            Kind::Oscillation => Cause::Oscillation,
-            Kind::ExtraPole => Cause::ExtraPole,
-            Kind::Zero => Cause::Zero,
-            Kind::InverseResponse => Cause::InverseResponse,
-            Kind::Integrator => Cause::Integrator,
-            Kind::Drift => Cause::Drift,
+            Kind::Missing(cause) => cause,
             Kind::Clean => Cause::None,
-            Kind::DeadTimeAndPole => Cause::DeadTime,
-            Kind::DeadTimeAndOscillation => Cause::DeadTime,
+            Kind::DeadTimeAndPole | Kind::DeadTimeAndOscillation => Cause::DeadTime,
             Kind::LeadZero => Cause::Zero,
         }
     }
@@ -183,24 +152,32 @@ impl Kind {
         }
     }
 
-    fn base_seed(self) -> u64 {
-        0xDE6A_0000
-            + 1000
-                * match self {
-                    Kind::DeadTime => 1,
-                    Kind::Offset => 2,
-                    Kind::Oscillation => 3,
-                    Kind::ExtraPole => 4,
-                    Kind::Zero => 5,
-                    Kind::InverseResponse => 6,
-                    Kind::Integrator => 7,
-                    Kind::Drift => 8,
-                    Kind::Clean => 9,
-                    Kind::DeadTimeAndPole => 10,
-                    Kind::DeadTimeAndOscillation => 11,
-                    Kind::LeadZero => 12,
-                }
+    /// The kind's place, 1 to 12: the one-effect kinds in the order of [`EFFECTS`], then
+    /// the clean and the two-effect ones. It numbers the seeds and the cached outcomes.
+    fn ordinal(self) -> usize {
+        match self {
+            Kind::Missing(_) => {
+                1 + EFFECTS
+                    .iter()
+                    .position(|&k| k == self)
+                    .expect("a one-effect kind of EFFECTS")
+            }
+            Kind::Clean => 9,
+            Kind::DeadTimeAndPole => 10,
+            Kind::DeadTimeAndOscillation => 11,
+            Kind::LeadZero => 12,
+        }
     }
+
+    fn base_seed(self) -> u64 {
+        0xDE6A_0000 + 1000 * self.ordinal() as u64
+    }
+
+    /// Cases per missing effect (the environment variable `DEGRAU_DIAGNOSE_CASES` overrides
+    /// it, for a longer run: 40 per effect take about 15 s in release on two cores).
+    const CASES_PER_EFFECT: usize = 20;
+    /// Clean cases (cycling through P1D, P2D and P2DU; the override applies here too).
+    const CLEAN_CASES: usize = 20;
 
     fn cases(self) -> usize {
         if let Some(n) = std::env::var("DEGRAU_DIAGNOSE_CASES")
@@ -211,9 +188,9 @@ impl Kind {
             return n;
         }
         if self == Kind::Clean {
-            CLEAN_CASES
+            Kind::CLEAN_CASES
         } else {
-            CASES_PER_EFFECT
+            Kind::CASES_PER_EFFECT
         }
     }
 }
@@ -308,7 +285,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
         tw / zeta
     };
     let (truth_code, start_code, slowest) = match kind {
-        Kind::DeadTime => {
+        Kind::Missing(Cause::DeadTime) => {
             v.set(Param::Td, rng.range(TD_FRACTION) * tp1);
             if index.is_multiple_of(2) {
                 ("P1D", "P1", tp1)
@@ -317,7 +294,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
                 ("P2D", "P2", tp1)
             }
         }
-        Kind::Offset => {
+        Kind::Missing(Cause::Offset) => {
             v.set(Param::Td, rng.range(TD_FRACTION) * tp1);
             while y0.abs() < MIN_OFFSET_FRACTION * (kp * du).abs() {
                 y0 = rng.range(Y0);
@@ -325,27 +302,27 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
             y0_held = Some(0.0);
             ("P1D", "P1D", tp1)
         }
-        Kind::Oscillation => {
+        Kind::Missing(Cause::Oscillation) => {
             let slowest = underdamped(&mut rng, &mut v);
             ("P2DU", "P2D", slowest)
         }
-        Kind::ExtraPole => {
+        Kind::Missing(Cause::ExtraPole) => {
             v.set(Param::Tp2, rng.range(EXTRA_POLE_FRACTION) * tp1);
             v.set(Param::Td, rng.range(TD_FRACTION) * tp1);
             ("P2D", "P1D", tp1)
         }
-        Kind::Zero => {
+        Kind::Missing(Cause::Zero) => {
             v.set(Param::Tp2, rng.range(TP2_FRACTION) * tp1);
             v.set(Param::Tz, rng.range(ZERO_FRACTION) * tp1);
             ("P2Z", "P2", tp1)
         }
-        Kind::InverseResponse => {
+        Kind::Missing(Cause::InverseResponse) => {
             v.set(Param::Tp2, rng.range(TP2_FRACTION) * tp1);
             v.set(Param::Tz, -rng.range(INVERSE_FRACTION) * tp1);
             ("P2Z", "P2", tp1)
         }
-        Kind::Integrator => ("P1I", "P1", tp1),
-        Kind::Drift => {
+        Kind::Missing(Cause::Integrator) => ("P1I", "P1", tp1),
+        Kind::Missing(Cause::Drift) => {
             v.set(Param::Td, rng.range(TD_FRACTION) * tp1);
             drift = true;
             ("P1D", "P1D", tp1)
@@ -379,6 +356,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
                 ("P2DU", "P2DU", slowest)
             }
         },
+        Kind::Missing(Cause::None) => unreachable!("nothing missing is Kind::Clean"),
     };
     v.set(Param::Y0, y0);
     let mut truth_structure = structure(truth_code, true);
@@ -392,7 +370,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
     let length = after / (1.0 - fraction);
     let t0 = fraction * length;
     let n = rng.count(SAMPLES);
-    let times: Vec<f64> = if kind == Kind::Offset {
+    let times: Vec<f64> = if kind == Kind::Missing(Cause::Offset) {
         // No sample before the step: the record starts at t0.
         (0..n)
             .map(|k| t0 + after * k as f64 / (n - 1) as f64)
@@ -403,7 +381,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
     let record = times[n - 1] - times[0];
 
     let mut effect = (kp * du).abs();
-    if kind == Kind::Integrator {
+    if kind == Kind::Missing(Cause::Integrator) {
         // Kp is a slope per input unit: the ramp rises by 2–10 × |Δu| over the record.
         let rise = rng.range(RAMP_RISE);
         let slope = rise / (after - tp1 * (1.0 - (-after / tp1).exp()));
@@ -552,7 +530,7 @@ fn misses(case: &Case, fitted: &Model) -> Vec<String> {
         }
     };
     check("Kp", fitted.get(Param::Kp), truth.get(Param::Kp));
-    if case.kind == Kind::Drift {
+    if case.kind == Kind::Missing(Cause::Drift) {
         let fitted_tp = real_time_constants(fitted);
         let tp1 = truth.get(Param::Tp1);
         let best = fitted_tp
@@ -658,7 +636,7 @@ fn oracle(case: &Case) -> Vec<String> {
     };
     let mut s = case.truth.structure;
     let mut v = case.truth.values;
-    if case.kind != Kind::Offset {
+    if case.kind != Kind::Missing(Cause::Offset) {
         s.free_offset = false;
     }
     v.set(Param::Y0, case.truth.get(Param::Y0));
@@ -758,7 +736,7 @@ fn run_kind(kind: Kind) -> Vec<Outcome> {
 /// test shares them with the per-effect tests).
 fn outcomes(kind: Kind) -> &'static [Outcome] {
     static CACHE: [OnceLock<Vec<Outcome>>; 12] = [const { OnceLock::new() }; 12];
-    CACHE[kind as usize].get_or_init(|| run_kind(kind))
+    CACHE[kind.ordinal() - 1].get_or_init(|| run_kind(kind))
 }
 
 /// The acceptance of one missing effect: named first, and the first step pays.
@@ -791,14 +769,14 @@ fn accept(kind: Kind) {
 }
 
 const EFFECTS: [Kind; 8] = [
-    Kind::DeadTime,
-    Kind::Offset,
-    Kind::Oscillation,
-    Kind::ExtraPole,
-    Kind::Zero,
-    Kind::InverseResponse,
-    Kind::Integrator,
-    Kind::Drift,
+    Kind::Missing(Cause::DeadTime),
+    Kind::Missing(Cause::Offset),
+    Kind::Missing(Cause::Oscillation),
+    Kind::Missing(Cause::ExtraPole),
+    Kind::Missing(Cause::Zero),
+    Kind::Missing(Cause::InverseResponse),
+    Kind::Missing(Cause::Integrator),
+    Kind::Missing(Cause::Drift),
 ];
 
 // ---------------------------------------------------------------------------------------------
@@ -807,42 +785,42 @@ const EFFECTS: [Kind; 8] = [
 
 #[test]
 fn a_missing_dead_time_is_named_first() {
-    accept(Kind::DeadTime);
+    accept(Kind::Missing(Cause::DeadTime));
 }
 
 #[test]
 fn a_held_zero_offset_is_named_first() {
-    accept(Kind::Offset);
+    accept(Kind::Missing(Cause::Offset));
 }
 
 #[test]
 fn a_missing_oscillation_is_named_first() {
-    accept(Kind::Oscillation);
+    accept(Kind::Missing(Cause::Oscillation));
 }
 
 #[test]
 fn a_missing_extra_pole_is_named_first() {
-    accept(Kind::ExtraPole);
+    accept(Kind::Missing(Cause::ExtraPole));
 }
 
 #[test]
 fn a_missing_zero_is_named_first() {
-    accept(Kind::Zero);
+    accept(Kind::Missing(Cause::Zero));
 }
 
 #[test]
 fn a_missing_inverse_response_is_named_first() {
-    accept(Kind::InverseResponse);
+    accept(Kind::Missing(Cause::InverseResponse));
 }
 
 #[test]
 fn a_missing_integrator_is_named_first() {
-    accept(Kind::Integrator);
+    accept(Kind::Missing(Cause::Integrator));
 }
 
 #[test]
 fn a_missing_drift_is_named_first() {
-    accept(Kind::Drift);
+    accept(Kind::Missing(Cause::Drift));
 }
 
 /// Over all the non-clean cases, the final model recovers Kp and the true time constants.
@@ -897,6 +875,8 @@ fn a_model_that_is_the_truth_comes_out_none() {
 /// true values, gives back the truth (residuals ~ 0, parameters within 1e-6).
 #[test]
 fn noise_free_cases_round_trip_through_the_true_structure() {
+    /// The truth's precision (relative) given back by a fit from it on its noise-free data.
+    const ROUND_TRIP_TOLERANCE: f64 = 1e-6;
     let options = FitOptions {
         starts: 1,
         ..FitOptions::default()
@@ -956,7 +936,7 @@ fn the_generator_keeps_its_ranges() {
                 "{}",
                 case.describe()
             );
-            if kind == Kind::Offset {
+            if kind == Kind::Missing(Cause::Offset) {
                 assert_eq!(d.times[0], d.input.t0(), "{}", case.describe());
                 assert!(v.get(Param::Y0).abs() >= MIN_OFFSET_FRACTION * case.effect);
                 assert_eq!(case.start_y0, 0.0);
@@ -968,7 +948,7 @@ fn the_generator_keeps_its_ranges() {
                 );
                 assert_eq!(case.start_y0, v.get(Param::Y0));
             }
-            if kind == Kind::Integrator {
+            if kind == Kind::Missing(Cause::Integrator) {
                 let rise = (case.truth.simulate(&d.input, &d.times[n - 1..]).unwrap()[0]
                     - v.get(Param::Y0))
                 .abs()
@@ -982,7 +962,7 @@ fn the_generator_keeps_its_ranges() {
                 let kp = v.get(Param::Kp).abs();
                 assert!(kp >= KP.0 && kp <= KP.1, "{}", case.describe());
             }
-            if kind == Kind::Drift {
+            if kind == Kind::Missing(Cause::Drift) {
                 let share = (v.get(Param::Drift) * record).abs() / case.effect;
                 assert!(
                     share >= DRIFT_FRACTION.0 && share <= DRIFT_FRACTION.1,
@@ -999,7 +979,7 @@ fn the_generator_keeps_its_ranges() {
                 t.zero != s.zero,
                 t.integrator != s.integrator,
                 t.drift != s.drift,
-                kind == Kind::Offset,
+                kind == Kind::Missing(Cause::Offset),
             ]
             .into_iter()
             .filter(|&d| d)

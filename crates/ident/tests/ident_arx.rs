@@ -6,24 +6,36 @@
 
 use degrau_ident::fit::{FitData, FitOptions};
 use degrau_ident::lsq::arx::{
-    ArxOrders, LsqError, Offset, Regressor, Start, arx, default_grid, least_squares, regression,
-    select_orders,
+    ArxFit, ArxOrders, LsqError, Offset, Regressor, Start, arx, default_grid, least_squares,
+    regression, select_orders,
 };
-use degrau_ident::lsq::prbs::{Prbs, simulate_record, to_csv};
+use degrau_ident::lsq::prbs::{Prbs, Record, simulate_record, to_csv};
 use degrau_ident::lsq::rls::{RlsOptions, rls_arx, run};
 use degrau_ident::lsq::validation::{Split, validate_arx, validate_continuous, validate_rls};
-use degrau_ident::model::{Model, Param, Structure, Values};
+use degrau_ident::model::{Model, Structure, Values};
 use degrau_ident::random::Lcg;
+use degrau_lti::TransferFunction;
 use degrau_lti::discrete::c2d;
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 
-fn model(code: &str, values: &[(Param, f64)]) -> Model {
-    let mut v = Values::default();
-    for &(p, x) in values {
-        v.set(p, x);
-    }
-    Model::new(Structure::parse(code).unwrap(), v)
+/// The model `code` at `values`, given in the order of its parameters (`Structure::params`:
+/// Kp, the time constants, Td, Y0).
+fn model(code: &str, values: &[f64]) -> Model {
+    let s = Structure::parse(code).unwrap();
+    let params = s.params();
+    assert_eq!(params.len(), values.len(), "{code}: {params:?}");
+    Model::new(s, Values::default().with_vector(&params, values))
+}
+
+/// ARX of `orders` on the record, with `offset`.
+fn arx_on(rec: &Record, orders: ArxOrders, offset: Offset) -> ArxFit {
+    arx(&rec.time, &rec.u, &rec.y, orders, offset).unwrap()
+}
+
+/// The continuous G(s) of an ARX model, through d2c.
+fn d2c(fit: &ArxFit) -> TransferFunction {
+    fit.model.discrete().unwrap().d2c().unwrap()
 }
 
 /// A PRBS between `lo` and `hi`, clocked every `clock` samples.
@@ -82,23 +94,14 @@ fn the_notes_least_squares_example() {
 #[test]
 fn arx_recovers_the_exact_zoh_coefficients_far_from_zero() {
     // P2D with a fractional dead time (2.7 samples), at y ≈ 250 with u between 40 and 60.
-    let truth = model(
-        "P2D",
-        &[
-            (Param::Kp, 1.8),
-            (Param::Tp1, 6.0),
-            (Param::Tp2, 1.5),
-            (Param::Td, 1.35),
-            (Param::Y0, 250.0),
-        ],
-    );
+    let truth = model("P2D", &[1.8, 6.0, 1.5, 1.35, 250.0]); // Kp, Tp1, Tp2, Td, Y0
     let h = 0.5;
     let u = prbs(7, 4, 40.0, 60.0, 600);
     let rec = simulate_record(&truth, &u, h, 0.0, 1).unwrap();
     let exact = c2d(&truth.transfer_function().unwrap(), h).unwrap();
     assert_eq!((exact.nk(), exact.b().len()), (3, 3));
     let orders = ArxOrders::new(2, exact.b().len(), exact.nk());
-    let fit = arx(&rec.time, &rec.u, &rec.y, orders, Offset::Initial).unwrap();
+    let fit = arx_on(&rec, orders, Offset::Initial);
     close(&fit.model.a, exact.a(), 1e-9, "a");
     close(&fit.model.b, exact.b(), 1e-9, "b");
     assert!(fit.scores.fit_percent_prediction > 100.0 - 1e-7);
@@ -107,59 +110,28 @@ fn arx_recovers_the_exact_zoh_coefficients_far_from_zero() {
     let at_rest = 250.0 + 1.8 * (u[0] - 40.0);
     assert!((fit.model.y0 - at_rest).abs() < 1e-12 * at_rest && fit.model.u0 == u[0]);
     // The same with a constant regressor instead of the operating point.
-    let c = arx(&rec.time, &rec.u, &rec.y, orders, Offset::Constant).unwrap();
+    let c = arx_on(&rec, orders, Offset::Constant);
     close(&c.model.a, exact.a(), 1e-8, "a (constant)");
 }
 
 #[test]
 fn d2c_of_the_arx_model_returns_g() {
     // Whole-sample dead time: d2c returns the poles and the delay.
-    let truth = model(
-        "P2D",
-        &[
-            (Param::Kp, -0.6),
-            (Param::Tp1, 3.0),
-            (Param::Tp2, 0.8),
-            (Param::Td, 0.6),
-            (Param::Y0, -40.0),
-        ],
-    );
+    let truth = model("P2D", &[-0.6, 3.0, 0.8, 0.6, -40.0]); // Kp, Tp1, Tp2, Td, Y0
     let h = 0.2;
     let rec = simulate_record(&truth, &prbs(8, 3, 0.0, 5.0, 700), h, 0.0, 1).unwrap();
-    let fit = arx(
-        &rec.time,
-        &rec.u,
-        &rec.y,
-        ArxOrders::new(2, 2, 4),
-        Offset::Initial,
-    )
-    .unwrap();
-    let g = fit.model.discrete().unwrap().d2c().unwrap();
+    let fit = arx_on(&rec, ArxOrders::new(2, 2, 4), Offset::Initial);
+    let g = d2c(&fit);
     let mut poles: Vec<f64> = g.poles().iter().map(|p| p.re).collect();
     poles.sort_by(f64::total_cmp);
     close(&poles, &[-1.0 / 0.8, -1.0 / 3.0], 1e-6, "poles");
     assert!((g.delay() - 0.6).abs() < 1e-9);
     assert!((g.dc_gain() + 0.6).abs() < 1e-6);
     // A FOPTD with a fractional dead time, through the notes' formulas.
-    let foptd = model(
-        "P1D",
-        &[
-            (Param::Kp, 2.5),
-            (Param::Tp1, 40.0),
-            (Param::Td, 13.0),
-            (Param::Y0, 21.0),
-        ],
-    );
+    let foptd = model("P1D", &[2.5, 40.0, 13.0, 21.0]); // Kp, Tp1, Td, Y0
     let rec = simulate_record(&foptd, &prbs(6, 5, 0.0, 50.0, 400), 5.0, 0.0, 1).unwrap();
-    let fit = arx(
-        &rec.time,
-        &rec.u,
-        &rec.y,
-        ArxOrders::new(1, 2, 3),
-        Offset::Initial,
-    )
-    .unwrap();
-    let g = fit.model.discrete().unwrap().d2c().unwrap();
+    let fit = arx_on(&rec, ArxOrders::new(1, 2, 3), Offset::Initial);
+    let g = d2c(&fit);
     assert!((g.poles()[0].re + 1.0 / 40.0).abs() < 1e-9);
     assert!((g.dc_gain() - 2.5).abs() < 1e-8);
     assert!((g.delay() - 13.0).abs() < 1e-7, "θ = {}", g.delay());
@@ -167,27 +139,12 @@ fn d2c_of_the_arx_model_returns_g() {
 
 #[test]
 fn rls_at_lambda_one_ends_at_the_batch_solution_on_a_noisy_record() {
-    let truth = model(
-        "P2",
-        &[
-            (Param::Kp, 3.0),
-            (Param::Tp1, 10.0),
-            (Param::Tp2, 2.0),
-            (Param::Y0, 1000.0),
-        ],
-    );
+    let truth = model("P2", &[3.0, 10.0, 2.0, 1000.0]); // Kp, Tp1, Tp2, Y0
     let rec = simulate_record(&truth, &prbs(8, 2, 10.0, 12.0, 500), 1.0, 0.05, 7).unwrap();
     let orders = ArxOrders::new(2, 2, 1);
-    let batch = arx(&rec.time, &rec.u, &rec.y, orders, Offset::Initial).unwrap();
-    let r = rls_arx(
-        &rec.time,
-        &rec.u,
-        &rec.y,
-        orders,
-        Offset::Initial,
-        &RlsOptions::default(),
-    )
-    .unwrap();
+    let batch = arx_on(&rec, orders, Offset::Initial);
+    let (t, u, y) = (&rec.time, &rec.u, &rec.y);
+    let r = rls_arx(t, u, y, orders, Offset::Initial, &RlsOptions::default()).unwrap();
     // α = 1e6 is in the solving units (each column of Φ at most 1 in magnitude, the same
     // trust at any scale): its pull on θ_N is a few 1e-6 on this poorly conditioned ARX(2, 2).
     close(&r.run.last, &batch.lsq.theta, 1e-5, "θ");
@@ -233,41 +190,19 @@ fn a_prbs_has_its_clock_levels_and_period() {
 
 #[test]
 fn a_prbs_response_is_fitted_back_by_arx() {
-    let truth = model(
-        "P1D",
-        &[
-            (Param::Kp, 0.9),
-            (Param::Tp1, 25.0),
-            (Param::Td, 7.0),
-            (Param::Y0, 55.0),
-        ],
-    );
+    let truth = model("P1D", &[0.9, 25.0, 7.0, 55.0]); // Kp, Tp1, Td, Y0
     let h = 2.0;
     let u = Prbs::new(7, 6, 20.0, 60.0).unwrap().periodic(2).unwrap();
     // Noise-free: exact.
     let rec = simulate_record(&truth, &u, h, 0.0, 3).unwrap();
-    let fit = arx(
-        &rec.time,
-        &rec.u,
-        &rec.y,
-        ArxOrders::new(1, 2, 4),
-        Offset::Initial,
-    )
-    .unwrap();
-    let g = fit.model.discrete().unwrap().d2c().unwrap();
+    let fit = arx_on(&rec, ArxOrders::new(1, 2, 4), Offset::Initial);
+    let g = d2c(&fit);
     assert!((g.dc_gain() - 0.9).abs() < 1e-9);
     assert!((g.delay() - 7.0).abs() < 1e-7);
     // 0.5 % noise (of the response's range): the model within a few percent.
     let noisy = simulate_record(&truth, &u, h, 0.18, 11).unwrap();
-    let fit = arx(
-        &noisy.time,
-        &noisy.u,
-        &noisy.y,
-        ArxOrders::new(1, 2, 4),
-        Offset::Initial,
-    )
-    .unwrap();
-    let g = fit.model.discrete().unwrap().d2c().unwrap();
+    let fit = arx_on(&noisy, ArxOrders::new(1, 2, 4), Offset::Initial);
+    let g = d2c(&fit);
     assert!((g.dc_gain() - 0.9).abs() < 0.03 * 0.9, "K {}", g.dc_gain());
     assert!(
         (g.poles()[0].re * 25.0 + 1.0).abs() < 0.1,
@@ -283,25 +218,10 @@ fn a_prbs_response_is_fitted_back_by_arx() {
 
 #[test]
 fn aic_finds_the_delay_on_a_slightly_noisy_record() {
-    let truth = model(
-        "P2D",
-        &[
-            (Param::Kp, 2.0),
-            (Param::Tp1, 4.0),
-            (Param::Tp2, 1.0),
-            (Param::Td, 1.0),
-            (Param::Y0, 80.0),
-        ],
-    );
+    let truth = model("P2D", &[2.0, 4.0, 1.0, 1.0, 80.0]); // Kp, Tp1, Tp2, Td, Y0
     let rec = simulate_record(&truth, &prbs(9, 2, 0.0, 10.0, 800), 0.5, 0.01, 5).unwrap();
-    let ranked = select_orders(
-        &rec.time,
-        &rec.u,
-        &rec.y,
-        &default_grid(4, rec.y.len()).unwrap(),
-        Offset::Initial,
-    )
-    .unwrap();
+    let grid = default_grid(4, rec.y.len()).unwrap();
+    let ranked = select_orders(&rec.time, &rec.u, &rec.y, &grid, Offset::Initial).unwrap();
     let best = ranked[0];
     // The delay is found; with output noise (not ARX's equation error) a higher na may win,
     // modelling the noise's colour: AIC on ARX does not promise the true na.
@@ -312,29 +232,13 @@ fn aic_finds_the_delay_on_a_slightly_noisy_record() {
 
 #[test]
 fn validation_of_a_noise_free_record_predicts_the_second_half_exactly() {
-    let truth = model(
-        "P2D",
-        &[
-            (Param::Kp, 1.2),
-            (Param::Tp1, 5.0),
-            (Param::Tp2, 2.0),
-            (Param::Td, 1.0),
-            (Param::Y0, 300.0),
-        ],
-    );
+    let truth = model("P2D", &[1.2, 5.0, 2.0, 1.0, 300.0]); // Kp, Tp1, Tp2, Td, Y0
     let h = 0.5;
     let rec = simulate_record(&truth, &prbs(8, 3, 10.0, 30.0, 600), h, 0.0, 1).unwrap();
     let exact = c2d(&truth.transfer_function().unwrap(), h).unwrap();
     let orders = ArxOrders::new(2, exact.b().len(), exact.nk());
-    let (_, v) = validate_arx(
-        &rec.time,
-        &rec.u,
-        &rec.y,
-        orders,
-        Offset::Initial,
-        Split::Fraction(0.5),
-    )
-    .unwrap();
+    let (t, u, y) = (&rec.time, &rec.u, &rec.y);
+    let (_, v) = validate_arx(t, u, y, orders, Offset::Initial, Split::Fraction(0.5)).unwrap();
     assert_eq!(v.split, 300);
     for k in v.split..rec.y.len() {
         assert!((v.validation.prediction[k] - rec.y[k]).abs() < 1e-9);
@@ -342,9 +246,9 @@ fn validation_of_a_noise_free_record_predicts_the_second_half_exactly() {
     }
     // RLS's last model, too (large α: near the batch).
     let (_, r) = validate_rls(
-        &rec.time,
-        &rec.u,
-        &rec.y,
+        t,
+        u,
+        y,
         orders,
         Offset::Initial,
         &RlsOptions::default(),
@@ -357,15 +261,7 @@ fn validation_of_a_noise_free_record_predicts_the_second_half_exactly() {
 
 #[test]
 fn validation_of_the_continuous_fit_simulates_across_the_split() {
-    let truth = model(
-        "P1D",
-        &[
-            (Param::Kp, 1.5),
-            (Param::Tp1, 4.0),
-            (Param::Td, 1.2),
-            (Param::Y0, 3.0),
-        ],
-    );
+    let truth = model("P1D", &[1.5, 4.0, 1.2, 3.0]); // Kp, Tp1, Td, Y0
     let h = 0.25;
     let u = prbs(6, 8, 0.0, 2.0, 400);
     let rec = simulate_record(&truth, &u, h, 0.0, 1).unwrap();
@@ -469,16 +365,8 @@ fn gaussian_noise_has_unit_spread() {
 
 /// The README's PRBS record (a P1D at y ≈ 20 with θ = 3 samples, two periods of 127 bits of 3
 /// samples between 40 and 60, h = 0.5 s), with output noise `noise`.
-fn readme_record(noise: f64) -> degrau_ident::lsq::prbs::Record {
-    let truth = model(
-        "P1D",
-        &[
-            (Param::Kp, 2.0),
-            (Param::Tp1, 8.0),
-            (Param::Td, 1.5),
-            (Param::Y0, 20.0),
-        ],
-    );
+fn readme_record(noise: f64) -> Record {
+    let truth = model("P1D", &[2.0, 8.0, 1.5, 20.0]); // Kp, Tp1, Td, Y0
     let u = Prbs::new(7, 3, 40.0, 60.0).unwrap().periodic(2).unwrap();
     simulate_record(&truth, &u, 0.5, noise, 1).unwrap()
 }
@@ -500,7 +388,7 @@ struct Answers {
     best: (ArxOrders, bool),
 }
 
-fn answers(rec: &degrau_ident::lsq::prbs::Record, k: i32) -> Answers {
+fn answers(rec: &Record, k: i32) -> Answers {
     let scale = 10f64.powi(k);
     let u: Vec<f64> = rec.u.iter().map(|v| v * scale).collect();
     let y: Vec<f64> = rec.y.iter().map(|v| v * scale).collect();

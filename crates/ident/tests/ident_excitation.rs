@@ -32,6 +32,7 @@
 //!
 //! Run with `cargo test --test ident_excitation -- --nocapture` to see the rates.
 
+use crate::draw::Draws;
 use degrau_ident::diagnose::{Cause, DiagnoseOptions, diagnose};
 use degrau_ident::experiment::Experiment;
 use degrau_ident::fit::FitOptions;
@@ -49,12 +50,6 @@ const MIN_CLEAN_NONE: f64 = 0.95;
 const MIN_DETERMINED: f64 = 0.8;
 /// Relative tolerance of a recovered parameter.
 const TOLERANCE: f64 = 0.05;
-/// Records per kind of excitation.
-const CASES_PER_KIND: usize = 12;
-/// Clean first-order steps diagnosed.
-const CLEAN_CASES: usize = 60;
-/// Clean first-order multi-step, pulse and doublet records diagnosed.
-const CLEAN_MULTI_CASES: usize = 15;
 
 /// The seeded generator of the project, with a few shapes on top.
 struct Draw(Lcg);
@@ -66,23 +61,14 @@ impl Draw {
         Self(g)
     }
 
-    fn range(&mut self, (a, b): (f64, f64)) -> f64 {
-        a + (b - a) * self.0.unit()
-    }
-
     fn count(&mut self, (a, b): (usize, usize)) -> usize {
         a + self.0.below(b - a + 1)
     }
+}
 
-    fn sign(&mut self) -> f64 {
-        if self.0.unit() < 0.5 { -1.0 } else { 1.0 }
-    }
-
-    /// Standard normal (Box–Muller).
-    fn gaussian(&mut self) -> f64 {
-        let u1 = 1.0 - self.0.unit();
-        let u2 = self.0.unit();
-        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+impl Draws for Draw {
+    fn lcg(&mut self) -> &mut Lcg {
+        &mut self.0
     }
 }
 
@@ -104,6 +90,9 @@ const KINDS: [Kind; 5] = [
 ];
 
 const TRUTHS: [&str; 4] = ["P1", "P1D", "P2D", "P2DU"];
+
+/// Records per kind of excitation.
+const CASES_PER_KIND: usize = 12;
 
 /// A generated record and what made it.
 struct Case {
@@ -451,6 +440,11 @@ fn every_kind_of_excitation_recovers_the_truth() {
     );
     assert!(rate >= MIN_RECOVERED, "recovered {recovered}/{total}");
 }
+
+/// Clean first-order steps diagnosed.
+const CLEAN_CASES: usize = 60;
+/// Clean first-order multi-step, pulse and doublet records diagnosed.
+const CLEAN_MULTI_CASES: usize = 15;
 
 /// A clean first-order step whose change came between two samples.
 fn clean_step(seed: u64) -> Case {

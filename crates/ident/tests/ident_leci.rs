@@ -2,7 +2,7 @@
 //! notes' bad guess, against the notes' answer Gdc 1.0021, θ 1.759 s, ζ 0.1948, ωn 0.9659.
 
 use degrau_ident::fit::guess::auto_guess;
-use degrau_ident::fit::{FitData, FitOptions, FitWarning, Method, fit};
+use degrau_ident::fit::{FitData, FitOptions, FitReport, FitWarning, Method, fit};
 use degrau_ident::model::excitation::Excitation;
 use degrau_ident::model::{Model, Param, Structure, Values};
 
@@ -35,14 +35,19 @@ fn structure() -> Structure {
     s
 }
 
-fn notes_answer() -> Values {
+/// P2DU values from the gain, the dead time, ζ and ωn (Tw = 1/ωn), Y0 at the notes' 50.
+fn p2du(kp: f64, td: f64, zeta: f64, wn: f64) -> Values {
     let mut v = Values::default();
-    v.set(Param::Kp, 1.0021);
-    v.set(Param::Td, 1.759);
-    v.set(Param::Zeta, 0.1948);
-    v.set(Param::Tw, 1.0 / 0.9659);
+    v.set(Param::Kp, kp);
+    v.set(Param::Td, td);
+    v.set(Param::Zeta, zeta);
+    v.set(Param::Tw, 1.0 / wn);
     v.set(Param::Y0, 50.0);
     v
+}
+
+fn notes_answer() -> Values {
+    p2du(1.0021, 1.759, 0.1948, 0.9659)
 }
 
 fn mse(data: &FitData, v: Values) -> f64 {
@@ -57,28 +62,32 @@ fn mse(data: &FitData, v: Values) -> f64 {
         / data.y.len() as f64
 }
 
-#[test]
-fn p2du_from_the_automatic_guess_matches_the_notes() {
-    let data = leci();
-    let guess = auto_guess(&data, structure(), Some(50.0));
-    let r = fit(
-        &data,
-        structure(),
-        guess,
-        &FitOptions {
-            starts: 1,
-            ..Default::default()
-        },
-        &mut (),
-    )
-    .unwrap();
-    let notes = mse(&data, notes_answer());
+/// The structure of [`structure`] fitted to `data` from `guess`.
+fn fit_p2du(data: &FitData, guess: Values, options: &FitOptions) -> FitReport {
+    fit(data, structure(), guess, options, &mut ()).unwrap()
+}
+
+/// `r` fits `data` at least as well as the notes' answer (to 1e-9).
+fn no_worse_than_the_notes(data: &FitData, r: &FitReport) {
+    let notes = mse(data, notes_answer());
     assert!(
         r.mse <= notes * (1.0 + 1e-9),
         "MSE {} vs the notes' {}",
         r.mse,
         notes
     );
+}
+
+#[test]
+fn p2du_from_the_automatic_guess_matches_the_notes() {
+    let data = leci();
+    let guess = auto_guess(&data, structure(), Some(50.0));
+    let one = FitOptions {
+        starts: 1,
+        ..Default::default()
+    };
+    let r = fit_p2du(&data, guess, &one);
+    no_worse_than_the_notes(&data, &r);
     let m = &r.model;
     assert!((m.get(Param::Kp) - 1.0021).abs() < 0.01 * 1.0021, "{m:?}");
     assert!((m.get(Param::Td) - 1.759).abs() < 0.02 * 1.759);
@@ -90,33 +99,14 @@ fn p2du_from_the_automatic_guess_matches_the_notes() {
 }
 
 fn bad_guess() -> Values {
-    let mut v = Values::default();
-    v.set(Param::Kp, 10.0);
-    v.set(Param::Td, 1.0);
-    v.set(Param::Zeta, 0.1);
-    v.set(Param::Tw, 1.0 / 20.0);
-    v.set(Param::Y0, 50.0);
-    v
+    p2du(10.0, 1.0, 0.1, 20.0)
 }
 
 #[test]
 fn from_the_bad_guess_multi_start_finds_the_same_optimum() {
     let data = leci();
-    let r = fit(
-        &data,
-        structure(),
-        bad_guess(),
-        &FitOptions::default(),
-        &mut (),
-    )
-    .unwrap();
-    let notes = mse(&data, notes_answer());
-    assert!(
-        r.mse <= notes * (1.0 + 1e-9),
-        "MSE {} vs the notes' {}",
-        r.mse,
-        notes
-    );
+    let r = fit_p2du(&data, bad_guess(), &FitOptions::default());
+    no_worse_than_the_notes(&data, &r);
     assert!((1.0 / r.model.get(Param::Tw) - 0.9659).abs() < 0.02);
 }
 
@@ -129,7 +119,7 @@ fn from_the_bad_guess_a_single_start_flags_the_alias() {
             starts: 1,
             ..Default::default()
         };
-        let r = fit(&data, structure(), bad_guess(), &options, &mut ()).unwrap();
+        let r = fit_p2du(&data, bad_guess(), &options);
         let wn = 1.0 / r.model.get(Param::Tw);
         let notes = mse(&data, notes_answer());
         let found_optimum = (wn - 0.9659).abs() < 0.02 && r.mse <= notes * (1.0 + 1e-6);

@@ -23,19 +23,20 @@ use std::fmt::Write as _;
 
 const SAMPLES: usize = 5_000_000;
 
-fn record(code: &str) -> FitData {
-    let mut truth = Values::default();
-    for (p, x) in [
+/// The process of the records: Kp 1.5, Tp1 40 s, Td 12 s, Y0 30 (a P1 leaves Td unused).
+fn truth() -> Values {
+    Values::from_pairs(&[
         (Param::Kp, 1.5),
         (Param::Tp1, 40.0),
         (Param::Td, 12.0),
         (Param::Y0, 30.0),
-    ] {
-        truth.set(p, x);
-    }
+    ])
+}
+
+fn record(code: &str) -> FitData {
     let setup = Excitation::step(20.05, 2.0);
     let times: Vec<f64> = (0..SAMPLES).map(|k| 1e-4 * k as f64).collect();
-    let mut y = Model::new(Structure::parse(code).unwrap(), truth)
+    let mut y = Model::new(Structure::parse(code).unwrap(), truth())
         .simulate(&setup, &times)
         .unwrap();
     let mut rng = degrau_ident::random::Lcg(7);
@@ -103,16 +104,7 @@ fn measured_file() -> std::path::PathBuf {
         .collect();
     let fine_u: Vec<f64> = fine.iter().map(|&t| level(t)).collect();
     let truth_input = Excitation::measured(&fine, &fine_u, None, Hold::Zoh).unwrap();
-    let mut truth = Values::default();
-    for (p, x) in [
-        (Param::Kp, 1.5),
-        (Param::Tp1, 40.0),
-        (Param::Td, 12.0),
-        (Param::Y0, 30.0),
-    ] {
-        truth.set(p, x);
-    }
-    let y = Model::new(Structure::parse("P1D").unwrap(), truth)
+    let y = Model::new(Structure::parse("P1D").unwrap(), truth())
         .simulate(&truth_input, &times)
         .unwrap();
     let mut rng = degrau_ident::random::Lcg(11);

@@ -20,3 +20,4 @@ mod ident_operating_point;
 mod ident_scale;
 #[path = "../../../tests/records/mod.rs"]
 mod records;
+mod wide;

@@ -237,26 +237,32 @@ fn notes_example_values_match_both_closed_forms() {
     }
 }
 
+/// The notes' example in words, in either form of its oscillation.
+const NOTES_TEXTS: [(OscillationForm, &str); 2] = [
+    (
+        OscillationForm::CosSin,
+        "y(t) = 1/25 − (3/100)e^{−t}[cos 2t + (4/3) sin 2t] − e^{−5t}/100",
+    ),
+    (
+        OscillationForm::AmplitudePhase,
+        "y(t) = 1/25 − (1/20)e^{−t} sin(2t + 36.87°) − e^{−5t}/100",
+    ),
+];
+
 #[test]
 fn notes_example_expression_text() {
-    let r = response(&notes_example(), 2.0);
-    assert_eq!(
-        expression(&r, OscillationForm::CosSin),
-        "y(t) = 1/25 − (3/100)e^{−t}[cos 2t + (4/3) sin 2t] − e^{−5t}/100"
-    );
-    assert_eq!(
-        expression(&r, OscillationForm::AmplitudePhase),
-        "y(t) = 1/25 − (1/20)e^{−t} sin(2t + 36.87°) − e^{−5t}/100"
-    );
+    // From its poles, and built from the coefficients, whose roots carry rounding: the text
+    // must not show it.
+    let from_coeffs = TransferFunction::from_coeffs(&[0.5], &[1.0, 7.0, 15.0, 25.0]).unwrap();
+    for g in [notes_example(), from_coeffs] {
+        let r = response(&g, 2.0);
+        for (form, text) in NOTES_TEXTS {
+            assert_eq!(expression(&r, form), text, "{form:?}");
+        }
+    }
     assert_eq!(
         format!("{:.2}", (3.0f64 / 4.0).atan().to_degrees()),
         "36.87"
-    );
-    // Built from the coefficients, the roots carry rounding; the text must not show it.
-    let g = TransferFunction::from_coeffs(&[0.5], &[1.0, 7.0, 15.0, 25.0]).unwrap();
-    assert_eq!(
-        expression(&response(&g, 2.0), OscillationForm::CosSin),
-        "y(t) = 1/25 − (3/100)e^{−t}[cos 2t + (4/3) sin 2t] − e^{−5t}/100"
     );
 }
 
