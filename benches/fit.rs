@@ -101,7 +101,7 @@ fn long_records(c: &mut Criterion) {
     }
     let one_simulation = clock.elapsed().as_secs_f64() / 10.0;
     let clock = Instant::now();
-    let searched = search_fit(&data, s, guess, &default, &mut ()).unwrap();
+    let searched = search_fit(&data, s, guess, &default).unwrap();
     eprintln!(
         "one simulation of 80,000 samples: {:.2} ms; the 16-start search on the reduced record alone: {:.3} s ({} iterations)",
         1e3 * one_simulation,

@@ -246,9 +246,7 @@ fn validation_of_a_noise_free_record_predicts_the_second_half_exactly() {
     }
     // RLS's last model, too (large α: near the batch).
     let (_, r) = validate_rls(
-        t,
-        u,
-        y,
+        [t, u, y],
         orders,
         Offset::Initial,
         &RlsOptions::default(),

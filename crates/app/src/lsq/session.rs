@@ -452,8 +452,14 @@ impl Session {
         let (o, offset, split) = (self.orders, self.offset, self.split);
         self.validation = Some(Validation {
             arx: validation::validate_arx(&s.time, &s.u, &s.y, o, offset, split).map(|v| v.1),
-            rls: validation::validate_rls(&s.time, &s.u, &s.y, o, offset, &self.rls_options, split)
-                .map(|v| v.1),
+            rls: validation::validate_rls(
+                [&s.time, &s.u, &s.y],
+                o,
+                offset,
+                &self.rls_options,
+                split,
+            )
+            .map(|v| v.1),
             split: validation::split_index(&s.time, split),
         });
     }

@@ -73,14 +73,7 @@ fn held_errors(
         screen: true,
         ..FitOptions::default()
     };
-    let refit = search_fit(
-        estimation,
-        r.model.structure,
-        r.model.values,
-        &options,
-        &mut (),
-    )
-    .ok()?;
+    let refit = search_fit(estimation, r.model.structure, r.model.values, &options).ok()?;
     let residuals = refit.residuals(data).ok()?;
     let tail = residuals.get(held..)?.to_vec();
     tail.iter().all(|e| e.is_finite()).then_some(tail)

@@ -47,7 +47,7 @@ pub(super) fn best_fits<K: Copy + PartialEq + Sync + Send>(
         if tracker.cancelled() {
             return None;
         }
-        let r = search_fit(data, s, g, options, &mut ());
+        let r = search_fit(data, s, g, options);
         tracker.fitted();
         r.ok().filter(|r| r.ln_mse.is_finite())
     };

@@ -73,7 +73,7 @@ pub(super) fn refit_without(
         starts: 1,
         ..FitOptions::default()
     };
-    let r = search_fit(data, s, current.model.values, &options, &mut ()).ok()?;
+    let r = search_fit(data, s, current.model.values, &options).ok()?;
     let full = full_fit(data, r)?;
     full.ln_mse.is_finite().then_some(full)
 }

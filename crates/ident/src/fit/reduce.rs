@@ -318,7 +318,7 @@ mod tests {
             assert!(reduce(&data.times, &data.input).is_some());
             let full = p1d_fit(&data);
             let guess = auto_guess(&data, s, None);
-            let small = search_fit(&data, s, guess, &FitOptions::default(), &mut ()).unwrap();
+            let small = search_fit(&data, s, guess, &FitOptions::default()).unwrap();
             for p in [Param::Kp, Param::Tp1, Param::Td, Param::Y0] {
                 let (lo, hi) = full.interval(p).unwrap();
                 let v = small.model.get(p);

@@ -55,16 +55,16 @@ pub fn fit_weighted(
 /// record, its statistics (n, MSE, fit %, AIC, intervals) estimated from the weighted
 /// samples, which stand for the whole record's. For comparing many candidate fits of one
 /// record (the diagnosis's extension search) before fitting the chosen one on every
-/// sample; on a record [`reduce`] leaves as it is, the same as [`fit`].
+/// sample; on a record [`reduce`] leaves as it is, the same as [`fit`]. Nobody watches it:
+/// its starts are screened on every core.
 pub fn search_fit(
     data: &FitData,
     structure: Structure,
     guess: Values,
     options: &FitOptions,
-    observer: &mut dyn FitObserver,
 ) -> Result<FitReport, FitError> {
     let reduced = Samples::Reduced;
-    fit_on(data, structure, guess, options, observer, reduced, None)
+    fit_on(data, structure, guess, options, &mut (), reduced, None)
 }
 
 /// Which samples a fit ends on.

@@ -124,11 +124,10 @@ pub fn validate_arx(
     Ok((fit, v))
 }
 
-/// RLS's last model, run on the samples before `split`, validated after it.
+/// RLS's last model, run on the samples before `split` of the record (time in s, u, y),
+/// validated after it.
 pub fn validate_rls(
-    time: &[f64],
-    u: &[f64],
-    y: &[f64],
+    [time, u, y]: [&[f64]; 3],
     orders: ArxOrders,
     offset: Offset,
     options: &RlsOptions,

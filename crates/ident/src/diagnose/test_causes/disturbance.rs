@@ -90,7 +90,6 @@ pub fn detect_with(
             current.model.structure,
             current.model.values,
             &options,
-            &mut (),
         )
         .ok()?;
         let r = refit.residuals(data).ok()?;

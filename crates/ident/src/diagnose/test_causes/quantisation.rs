@@ -28,15 +28,15 @@ const GRID_SHARE: f64 = 0.9;
 const ON_GRID: f64 = 0.1;
 /// The fewest nonzero increments a resolution is read from.
 const MIN_INCREMENTS: usize = 10;
-/// Multiples of the smallest increment used to refine q (printing rounds each level, so the
-/// smallest increment alone may be off by a printed digit: 0.32 for 0.322).
-const REFINE_UP_TO: f64 = 20.0;
-/// The most steps the smallest move is taken to span.
-const MAX_DIVISOR: usize = 8;
 
 /// The resolution of `y`: the step all its sample-to-sample increments are multiples of,
 /// or `None` when they are not (a continuous signal, or too few moves to tell).
 pub fn resolution(y: &[f64]) -> Option<f64> {
+    /// Multiples of the smallest increment used to refine q (printing rounds each level, so
+    /// the smallest increment alone may be off by a printed digit: 0.32 for 0.322).
+    const REFINE_UP_TO: f64 = 20.0;
+    /// The most steps the smallest move is taken to span.
+    const MAX_DIVISOR: usize = 8;
     let scale = y.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
     // Below this an increment is floating-point dust, not a move.
     let dust = 1e-9 * scale.max(f64::MIN_POSITIVE);
