@@ -118,14 +118,14 @@ impl Localize for ApproxError {
             ApproxError::Lti(e) => e.text(lang),
             ApproxError::UnstablePole(p) => {
                 let p = lang.localize_number(&fmt_c(*p));
-                match lang {
-                    Lang::En => format!(
+                lang.pick(
+                    format!(
                         "pole {p} is in the right half plane: this method ranks stable poles only"
                     ),
-                    Lang::Pt => format!(
+                    format!(
                         "o polo {p} está no semiplano direito: este método só ordena polos estáveis"
                     ),
-                }
+                )
             }
             ApproxError::OrderZero => lang
                 .pick(
@@ -133,14 +133,14 @@ impl Localize for ApproxError {
                     "a ordem deve ser ao menos 1",
                 )
                 .into(),
-            ApproxError::NotLower { asked, order } => match lang {
-                Lang::En => format!(
+            ApproxError::NotLower { asked, order } => lang.pick(
+                format!(
                     "order {asked} is not below the system's order, {order}: nothing is left out"
                 ),
-                Lang::Pt => format!(
+                format!(
                     "a ordem {asked} não é menor que a ordem do sistema, {order}: nada é desprezado"
                 ),
-            },
+            ),
             ApproxError::NothingToApproximate => lang
                 .pick(
                     "nothing to approximate: no pole is left out, no zero is in the right half \
