@@ -10,7 +10,7 @@ use crate::kit;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use degrau::app::design::splane::View;
+use degrau::app::design::plane::View;
 use degrau::app::design::state::{ROOT_LIMIT, Root, System};
 use degrau::app::identify;
 use degrau::app::persist::FILE_NAME;

@@ -13,7 +13,7 @@
 //! What could not be restored or saved is told as typed facts ([`problem`]), said in the
 //! window's language by [`crate::words::persist`].
 
-mod problem;
+pub mod problem;
 
 pub use problem::{
     ExperimentProblem, Field, FieldProblem, FileAction, Reason, SaveFailure, StateError, TestValue,
@@ -31,7 +31,7 @@ use serde_json::{Map, Value};
 
 use super::Saved;
 use super::design;
-use super::design::splane::{SPlaneState, View};
+use super::design::plane::{SPlaneState, View};
 use super::design::state::{self, RootRole, System};
 use super::identify;
 use super::look::clamp_scale;

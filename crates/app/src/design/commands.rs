@@ -1,15 +1,16 @@
 //! What the Design views ask for: every change to the design's state is one [`Command`],
 //! returned by a view while it draws and applied by [`super::session::Session::apply`]
-//! once per frame, after the views, so no view changes anything while drawing.
+//! once per frame, after the views, so no view changes anything while drawing. The plain
+//! settings a command carries that no lower module owns live here too ([`Markers`]).
 
 use degrau_lti::StepInfoOptions;
 use degrau_lti::feedback::{Input, PadeOrder};
+use serde::{Deserialize, Serialize};
 
 use super::closed_loop::Specs;
 
-use super::splane::View;
+use super::plane::View;
 use super::state::{GainMode, Root, RootId, RootRole, System};
-use super::step_plot::Markers;
 
 /// One change to the design's state.
 #[must_use = "a command does nothing until the session applies it"]
@@ -72,7 +73,7 @@ pub enum Command {
     /// What the pointer is over on the s-plane (a readout), or nothing.
     Readout(Option<String>),
     /// The approximation view's choice ([`super::approx`]).
-    Approx(super::approx::ApproxCommand),
+    Approx(super::approx_state::ApproxCommand),
     /// G(s) typed as coefficients (descending powers), one undoable edit keeping the gain's
     /// meaning, the dead time and the step.
     SetCoefficients {
@@ -107,4 +108,28 @@ pub enum Command {
     SetInput(Input),
     /// The Padé order standing in for a dead time in the loop.
     SetPadeOrder(PadeOrder),
+}
+
+/// Which markers the step plot draws (kept between runs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Markers {
+    pub rise: bool,
+    pub peak: bool,
+    pub settling: bool,
+    pub steady_state: bool,
+    pub undershoot: bool,
+    pub ghost: bool,
+}
+
+impl Default for Markers {
+    fn default() -> Self {
+        Self {
+            rise: true,
+            peak: true,
+            settling: true,
+            steady_state: true,
+            undershoot: true,
+            ghost: true,
+        }
+    }
 }

@@ -12,7 +12,7 @@ use degrau_lti::words::feedback::Loop as P;
 
 use super::closed_loop::{Found, LoopDerived, LoopSettings, Specs};
 use super::commands::Command;
-use super::splane::Transform;
+use super::plane::Transform;
 
 /// Pixels around a closed-loop pole that grab it, and around the locus that read K.
 const GRAB: f32 = 9.0;
@@ -217,7 +217,7 @@ pub fn handles(
                 "K = {} {} · {}",
                 lang.num(k, 5),
                 P::LocusGain.get(lang),
-                super::splane::readout(re, im, "s", lang)
+                super::plane::readout(re, im, "s", lang)
             ));
         }
     }
@@ -249,7 +249,7 @@ pub fn handles(
             *readout = Some(format!(
                 "{name}: Kp = {} · {}",
                 lang.num(overlay.settings.kp, 5),
-                super::splane::readout(pole.re, pole.im, "s", lang)
+                super::plane::readout(pole.re, pole.im, "s", lang)
             ));
         }
         let color = look.palette.minimum;

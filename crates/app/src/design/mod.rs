@@ -3,15 +3,19 @@
 //! [`session`] owns the state and what is derived from it (no egui); the views here
 //! ([`system_panel`], [`splane`], [`step_plot`], [`metrics_table`]) read the session and
 //! return [`Command`]s, which the top level applies once per frame after the views have
-//! drawn, so every view of a frame shows the same state.
+//! drawn, so every view of a frame shows the same state. What a view keeps and the session
+//! holds sits below the views, [`commands`] and [`session`] (the s-plane's [`plane`], the
+//! approximation's [`approx_state`]), so the commands and the session import no view.
 
 pub mod analysis;
 pub mod approx;
+pub mod approx_state;
 pub mod closed_loop;
 pub mod commands;
 pub mod locus_view;
 pub mod loop_panel;
 pub mod metrics_table;
+pub mod plane;
 pub mod presets;
 pub mod session;
 pub mod splane;

@@ -11,11 +11,10 @@ use degrau_lti::StepInfoOptions;
 
 use super::analysis::Analysis;
 use super::closed_loop::{KP_LIMIT, LoopDerived, LoopSettings};
-use super::commands::Command;
+use super::commands::{Command, Markers};
+use super::plane::SPlaneState;
 use super::presets::{Preset, presets};
-use super::splane::SPlaneState;
 use super::state::{History, RootId, System};
-use super::step_plot::Markers;
 
 /// What the Design mode keeps between runs (part of the app's state file, at its top
 /// level).
@@ -54,7 +53,7 @@ pub struct Session {
     /// Whether a closed-loop pole is being dragged (its drag keeps one ghost).
     dragging_loop: bool,
     /// The approximation chosen and its derived model and comparison.
-    pub approx: super::approx::ApproxView,
+    pub approx: super::approx_state::ApproxView,
 }
 
 impl Session {
@@ -79,7 +78,7 @@ impl Session {
             dragging_loop: false,
             // Its model and comparison are derived at the first refresh.
             approx: {
-                let mut a = super::approx::ApproxView::default();
+                let mut a = super::approx_state::ApproxView::default();
                 (a.choice, a.show_table) = (kept.approx, kept.approx_table);
                 a
             },

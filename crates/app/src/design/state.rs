@@ -1,6 +1,7 @@
 //! The system a student edits, as the app holds it: roots (a real root or a conjugate pair
 //! σ ± jω), the gain, the dead time and the step amplitude, with undo/redo history.
-//! Nothing here draws; the views read these structs and the session changes them.
+//! Nothing here draws; the views read these structs and the session changes them. What a
+//! root is called ("pole 1", "zero") is said by [`crate::words::design`].
 
 use serde::{Deserialize, Serialize};
 
@@ -176,26 +177,11 @@ pub enum RootRole {
     Zero,
 }
 
-impl RootRole {
-    /// "pole" or "zero" in `lang`.
-    pub fn name_in(self, lang: degrau_words::Lang) -> &'static str {
-        crate::words::design::role_name(self == RootRole::Pole, lang)
-    }
-}
-
 /// A root addressed by role and position (0-based) in its list.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct RootId {
     pub role: RootRole,
     pub index: usize,
-}
-
-impl RootId {
-    /// The accessible label of the handle: "pole 1", "zero 2" (1-based, as people count),
-    /// in `lang` ("polo 1").
-    pub fn label(&self, lang: degrau_words::Lang) -> String {
-        format!("{} {}", self.role.name_in(lang), self.index + 1)
-    }
 }
 
 /// What "gain" means in the system panel.

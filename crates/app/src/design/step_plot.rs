@@ -13,7 +13,6 @@ use egui_plot::{
     HLine, HoverPosition, Legend, Line, LineStyle, MarkerShape, Plot, PlotPoint, Points, Text,
     VLine,
 };
-use serde::{Deserialize, Serialize};
 
 use crate::look::Look;
 use crate::words::design::Design as P;
@@ -23,32 +22,8 @@ use degrau_lti::{StepInfoOptions, StepResponse};
 use degrau_words::Lang;
 
 use super::analysis::Analysis;
-use super::commands::Command;
+use super::commands::{Command, Markers};
 use super::session::{Saved, Session};
-
-/// Which markers are drawn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Markers {
-    pub rise: bool,
-    pub peak: bool,
-    pub settling: bool,
-    pub steady_state: bool,
-    pub undershoot: bool,
-    pub ghost: bool,
-}
-
-impl Default for Markers {
-    fn default() -> Self {
-        Self {
-            rise: true,
-            peak: true,
-            settling: true,
-            steady_state: true,
-            undershoot: true,
-            ghost: true,
-        }
-    }
-}
 
 /// Size of the plot's tick labels, legend and hover text (points, before the presentation
 /// size): larger than egui_plot's default so a projector shows them.

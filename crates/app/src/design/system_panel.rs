@@ -8,7 +8,7 @@ use eframe::egui::{self, RichText, Ui};
 
 use crate::field::{FieldError, LimitReason, Limits, NumberField};
 use crate::look::Look;
-use crate::words::design::Design as P;
+use crate::words::design::{Design as P, root_label};
 use degrau_lti::poly::format_poly;
 use degrau_words::Lang;
 use degrau_words::Localize as _;
@@ -279,7 +279,7 @@ fn root_list(
         RootRole::Pole => (P::AddRealPole, P::AddPolePair, P::NoPoles),
         RootRole::Zero => (P::AddRealZero, P::AddZeroPair, P::NoZeros),
     };
-    let title = crate::words::design::role_heading(role == RootRole::Pole, lang);
+    let title = crate::words::design::role_heading(role, lang);
     ui.horizontal_wrapped(|ui| {
         ui.strong(title);
         let room = system.has_room(role);
@@ -321,7 +321,7 @@ fn root_row(
     let mut out = Vec::new();
     ui.horizontal_wrapped(|ui| {
         // "pole 1:" (the s-plane's handle is "pole 1").
-        let name = ui.selectable_label(is_selected, format!("{}:", id.label(lang)));
+        let name = ui.selectable_label(is_selected, format!("{}:", root_label(id, lang)));
         if name.clicked() {
             out.push(Command::Select(Some(id)));
         }
@@ -366,7 +366,7 @@ fn root_row(
         }
         if ui
             .small_button(P::DeleteSmall.get(lang))
-            .on_hover_text(format!("{} {}", P::Delete.get(lang), id.label(lang)))
+            .on_hover_text(format!("{} {}", P::Delete.get(lang), root_label(id, lang)))
             .clicked()
         {
             out.push(Command::RemoveRoot(id));

@@ -1,13 +1,13 @@
 //! What the identification views ask of the session ([`Command`]), and what the session asks
 //! of the app in return ([`Outcome`]). A view never changes the session while it draws: it
-//! returns commands, applied once per frame before the next is drawn.
+//! returns commands, applied once per frame before the next is drawn. The plain data a
+//! command carries lives here too: the axes held while a handle is dragged ([`Frozen`]) and
+//! which characteristics of the measured curve are marked ([`MeasuredMarkers`]).
 
 use degrau_ident::fit::Method;
 use degrau_ident::fit::handles::Handle;
 use degrau_ident::fit::landscape::Axis;
 use degrau_ident::model::Param;
-
-use super::session::{Frozen, MeasuredMarkers};
 
 /// A reading choice for the next load (typed as text; empty: automatic or none).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -73,6 +73,40 @@ pub enum LandscapeCommand {
     Spread(f64),
     Compute,
     Cancel,
+}
+
+/// The plot's axes at the moment a handle was grabbed: held until it is let go.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Frozen {
+    pub t: (f64, f64),
+    pub y: (f64, f64),
+}
+
+/// Which characteristics of the measured curve are marked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MeasuredMarkers {
+    pub rise: bool,
+    pub peak: bool,
+    pub settling: bool,
+    pub steady_state: bool,
+}
+
+impl MeasuredMarkers {
+    /// Every marker on (`true`) or off.
+    pub const fn all(on: bool) -> Self {
+        Self {
+            rise: on,
+            peak: on,
+            settling: on,
+            steady_state: on,
+        }
+    }
+}
+
+impl Default for MeasuredMarkers {
+    fn default() -> Self {
+        Self::all(true)
+    }
 }
 
 /// What a view asks of the identification session.

@@ -14,8 +14,8 @@ use degrau_ident::words::hand::{
 };
 
 use super::commands::Command;
+use super::grab::{GRAB, Over, grab_area, paint_handle};
 use super::hand_state::HandCommand;
-use super::plot::{GRAB, Over, grab_area};
 use super::session::Session;
 
 /// The panel's section.
@@ -237,7 +237,7 @@ pub(super) fn handles(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> b
             out.push(Command::Hand(HandCommand::MoveTangent(time)));
         }
         held |= response.dragged() && !response.drag_stopped();
-        super::plot::paint_handle(ui, frame, at, &response, look);
+        paint_handle(ui, frame, at, &response, look);
     }
     for (phrase, y, command) in [
         (

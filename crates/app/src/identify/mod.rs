@@ -13,6 +13,7 @@
 
 pub mod commands;
 pub mod cost;
+pub mod grab;
 pub mod hand;
 pub mod hand_state;
 pub mod landscape;

@@ -1,7 +1,8 @@
 //! The identification plots: the measured samples, the model (the guess being dragged, the
 //! fit animating towards the data, the result, or a row of the diagnosis chain), the
 //! measured curve's own step characteristics, draggable handles for the guesses and the step
-//! time, and the residuals y − ŷ beneath on the same time axis.
+//! time (their shared parts, with the hand methods', are [`super::grab`]), and the residuals
+//! y − ŷ beneath on the same time axis.
 //!
 //! The axes come from the current curves only and are held still while a handle is dragged
 //! (so the handle stays under the pointer); hovering near a curve reads that curve's value at
@@ -20,13 +21,11 @@ use degrau_ident::fit::handles::Handle;
 use degrau_lti::words::step::Metric;
 use degrau_lti::{StepInfo, StepInfoOptions};
 
-use super::commands::{Command, Gesture};
-use super::session::{Frozen, MeasuredMarkers, Session, Shown};
+use super::commands::{Command, Frozen, Gesture, MeasuredMarkers};
+use super::grab::{GRAB, Over, grab_area, paint_handle};
+use super::session::{Session, Shown, nearest_point};
 use super::steps::InputPlot;
 use super::words;
-
-/// Pixels around a handle that grab it.
-pub(super) const GRAB: f32 = 9.0;
 
 /// The smallest height of the main plot (px).
 pub const MIN_PLOT_HEIGHT: f32 = 200.0;
@@ -474,39 +473,6 @@ fn readout(
     painter.galley(rect.min, galley, look.palette.axis);
 }
 
-/// The plot's bounds as they are drawn, to hold while a handle is dragged.
-fn frozen(transform: &PlotTransform) -> Frozen {
-    let b = transform.bounds();
-    Frozen {
-        t: (b.min()[0], b.max()[0]),
-        y: (b.min()[1], b.max()[1]),
-    }
-}
-
-/// What the handles over the main plot read.
-pub(super) struct Over<'a> {
-    pub session: &'a Session,
-    pub transform: &'a PlotTransform,
-    pub look: &'a Look,
-}
-
-/// A draggable area `rect` over the plot, named `label` for screen readers (and kittest),
-/// explained by `help`; grabbing it holds the plot's axes as they are drawn.
-pub(super) fn grab_area(
-    ui: &mut Ui,
-    (id, rect): (Id, Rect),
-    (label, help): (&str, &str),
-    transform: &PlotTransform,
-    out: &mut Vec<Command>,
-) -> egui::Response {
-    let response = ui.interact(rect, id, Sense::drag());
-    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, label));
-    if response.drag_started() {
-        out.push(Command::Handle(Gesture::Grab(frozen(transform))));
-    }
-    response.on_hover_text(help)
-}
-
 /// The guess handles over the plot: accessible widgets a student (or a test) drags. True
 /// while one is held.
 fn guess_handles(ui: &mut Ui, over: &Over<'_>, out: &mut Vec<Command>) -> bool {
@@ -678,12 +644,6 @@ fn window_marks(ui: &mut Ui, input: &InputPlot, transform: &PlotTransform, look:
     }
 }
 
-/// The point of a polyline nearest in time to `t` (the last of equal times: the level after
-/// a jump).
-pub(super) fn nearest_point(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
-    super::session::nearest_from(points, t, points.partition_point(|p| p[0] <= t))
-}
-
 fn handle_key(h: Handle) -> u8 {
     match h {
         Handle::FinalValue => 0,
@@ -691,27 +651,6 @@ fn handle_key(h: Handle) -> u8 {
         Handle::TimeConstant => 2,
         Handle::FirstPeak => 3,
     }
-}
-
-/// A draggable handle's disc at `at`, highlighted while hovered or dragged.
-pub(super) fn paint_handle(
-    ui: &egui::Ui,
-    frame: egui::Rect,
-    at: egui::Pos2,
-    response: &egui::Response,
-    look: &Look,
-) {
-    let color = if response.hovered() || response.dragged() {
-        look.palette.selected
-    } else {
-        look.palette.handle
-    };
-    ui.painter_at(frame.expand(GRAB)).circle(
-        at,
-        5.5,
-        color.gamma_multiply(0.35),
-        Stroke::new(2.0, color),
-    );
 }
 
 /// The corner of the plot's `frame` whose third (in time and in y) holds the fewest of the

@@ -23,8 +23,8 @@ mod tests;
 
 pub use jobs::{DiagnoseNote, Status};
 pub use loading::{LoadError, LoadMessage, Loaded, Source};
-pub use plots::{Frozen, HandleFrame, MeasuredMarkers, Plots, Segment};
-pub(crate) use plots::{nearest_from, padded_by};
+pub use plots::{HandleFrame, Plots, Segment};
+pub(crate) use plots::{nearest_point, padded_by};
 pub use settings::{CODES, Saved};
 
 use jobs::{DiagnoseOutcome, FitJob};
@@ -32,7 +32,7 @@ use loading::unit_in;
 
 use std::sync::Arc;
 
-use super::commands::{Choice, Command, Gesture, OffsetChoice, Outcome};
+use super::commands::{Choice, Command, Frozen, Gesture, MeasuredMarkers, OffsetChoice, Outcome};
 use super::cost::LandscapeState;
 use super::steps::{InputPlot, PerStepState, input_plot};
 use crate::dialog::Pick;

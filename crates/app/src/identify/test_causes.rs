@@ -82,7 +82,7 @@ pub fn shade(
         if let TestEvidence::Outliers { times, .. } = &c.evidence {
             let points: Vec<[f64; 2]> = times
                 .iter()
-                .filter_map(|&t| super::plot::nearest_point(measured, t))
+                .filter_map(|&t| super::session::nearest_point(measured, t))
                 .collect();
             plot.points(
                 Points::new(test_cause_name(c.kind, Naming::Words, look.lang), points)

@@ -12,7 +12,7 @@ use degrau_ident::lsq::arx::{
 };
 use degrau_ident::lsq::rls::{Rls, RlsOptions};
 
-use super::session::Samples;
+use super::samples::Samples;
 
 /// About this many frames play a whole record.
 pub const FRAMES: usize = 240;

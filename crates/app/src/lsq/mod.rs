@@ -25,6 +25,7 @@ pub mod designer;
 pub mod example_view;
 pub mod prbs_view;
 pub mod rls_view;
+pub mod samples;
 pub mod session;
 pub mod validation_view;
 pub mod words;

@@ -1,6 +1,6 @@
 //! The least-squares session: what the mode holds and does, with no egui in it. It reads the
 //! Identify mode's record (the samples its fit sees: window and filter applied, the input as
-//! the model sees it) and its continuous fit, and owns the ARX orders and fit with its AIC
+//! the model sees it, as [`Samples`]) and its continuous fit, and owns the ARX orders and fit with its AIC
 //! grid and d2c, the notes' three-sample example, the RLS animation, the PRBS designer, and
 //! the estimation/validation split with its results (the continuous model's in the
 //! background).
@@ -22,7 +22,6 @@ use degrau_ident::lsq::validation::{
     self, ArxValidation, ContinuousValidation, Split, ValidationError,
 };
 use degrau_ident::model::Model;
-use degrau_ident::record::data::StepTest;
 use degrau_lti::TransferFunction;
 use degrau_lti::discrete::DiscreteError;
 
@@ -30,52 +29,11 @@ use super::advisor::Advice;
 use super::animation::Animation;
 use super::commands::{Command, ExampleModel, Outcome, Section};
 use super::designer::{DesignError, Designed, ModelSource, PrbsSettings};
+use super::samples::Samples;
 
 /// The notes' three samples (u, y).
 pub const EXAMPLE_U: [f64; 3] = [0.0, 1.0, 2.0];
 pub const EXAMPLE_Y: [f64; 3] = [0.0, 0.9, 2.1];
-
-/// The sampled record: time (s), input and output at each sample.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct Samples {
-    pub time: Vec<f64>,
-    pub u: Vec<f64>,
-    pub y: Vec<f64>,
-}
-
-impl Samples {
-    /// The samples a fit sees (window and filter applied), with the input column's own
-    /// samples over them when the record has one (two rows at one time, the state before a
-    /// step and the step, stay two rows); otherwise the input as the model sees it (u0 plus
-    /// its deviation, held between samples: a typed step) at each sample time.
-    pub fn of(test: &StepTest, data: &FitData) -> Self {
-        let n = data.times.len();
-        let measured = test.input.as_ref().and_then(|u| {
-            let first = test
-                .time
-                .iter()
-                .position(|&t| Some(&t) == data.times.first())?;
-            let rows = first..first + n;
-            let same = test.time.get(rows.clone())? == data.times.as_slice();
-            u.get(rows).filter(|_| same).map(<[f64]>::to_vec)
-        });
-        Self {
-            u: measured.unwrap_or_else(|| {
-                data.times
-                    .iter()
-                    .map(|&t| data.input.u0 + data.input.deviation_at(t))
-                    .collect()
-            }),
-            time: data.times.clone(),
-            y: data.y.clone(),
-        }
-    }
-
-    /// The sampling period h (s): the median interval.
-    pub fn ts(&self) -> f64 {
-        arx::sampling_period(&self.time)
-    }
-}
 
 /// An ARX fit with what is derived from it.
 #[derive(Debug, Clone)]
@@ -563,47 +521,5 @@ mod tests {
             }
             assert!((fit.j - j).abs() < 1e-12, "{model:?}: J = {}", fit.j);
         }
-    }
-
-    #[test]
-    fn the_input_is_sampled_as_the_model_sees_it() {
-        let time: Vec<f64> = (0..6).map(f64::from).collect();
-        let u = [20.0, 20.0, 35.0, 35.0, 35.0, 35.0];
-        let input = degrau_ident::model::excitation::Excitation::measured(
-            &time,
-            &u,
-            None,
-            degrau_ident::model::excitation::Hold::Zoh,
-        )
-        .unwrap();
-        let data = FitData {
-            times: time.clone(),
-            y: vec![1.0; 6],
-            input,
-        };
-        let test = StepTest {
-            time: time.clone(),
-            output: data.y.clone(),
-            input: None,
-            time_name: "t".into(),
-            output_name: "y".into(),
-            input_name: None,
-            sampling_period: None,
-            notes: Vec::new(),
-        };
-        assert_eq!(Samples::of(&test, &data).u, u);
-        // With the input column, its own samples (a window from the second sample on).
-        let mut column = u.to_vec();
-        column[0] = 19.0;
-        let test = StepTest {
-            input: Some(column),
-            ..test
-        };
-        let window = FitData {
-            times: time[1..].to_vec(),
-            y: vec![1.0; 5],
-            input: data.input.clone(),
-        };
-        assert_eq!(Samples::of(&test, &window).u, u[1..]);
     }
 }

@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 
 use crate::design::closed_loop::LoopProblem;
-use crate::design::splane::View;
+use crate::design::plane::View;
 use crate::design::state::SystemProblem;
 use crate::field::LimitReason;
 use degrau_lti::LtiError;

@@ -4,7 +4,7 @@
 
 use degrau_words::{Lang, Localize, Message};
 
-use crate::persist::{Field, FieldProblem, Reason, SaveFailure};
+use crate::persist::problem::{Field, FieldProblem, Reason, SaveFailure};
 
 degrau_words::phrases! {
     /// The labels of the menu, the notices, the export dialog and the file dialogs' kinds

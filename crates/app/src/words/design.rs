@@ -1,10 +1,13 @@
 //! The Design mode's words (system panel, s-plane, step plot, metrics strip), each phrase
 //! with its English and its Brazilian Portuguese (the glossary's terms: polo, zero,
 //! ganho estático, tempo morto, sobressinal, tempo de acomodação, …).
+//! The facts it says (why there is no response, a root's role and place) are the Design
+//! mode's own, below these words.
 
 use degrau_words::{Lang, Localize, Message};
 
 use crate::design::analysis::NoResponse;
+use crate::design::state::{RootId, RootRole};
 
 degrau_words::phrases! {
     /// The labels the Design mode draws.
@@ -119,20 +122,24 @@ degrau_words::phrases! {
 }
 
 /// The name of a root's role ("pole", "zero"), as the handles and rows are labelled.
-pub fn role_name(pole: bool, lang: Lang) -> &'static str {
-    if pole {
-        lang.pick("pole", "polo")
-    } else {
-        "zero"
+pub fn role_name(role: RootRole, lang: Lang) -> &'static str {
+    match role {
+        RootRole::Pole => lang.pick("pole", "polo"),
+        RootRole::Zero => "zero",
     }
 }
 
+/// The accessible label of a root's handle: "pole 1", "zero 2" (1-based, as people count),
+/// in `lang` ("polo 1").
+pub fn root_label(id: RootId, lang: Lang) -> String {
+    format!("{} {}", role_name(id.role, lang), id.index + 1)
+}
+
 /// The heading of a root list ("Poles", "Zeros").
-pub fn role_heading(pole: bool, lang: Lang) -> &'static str {
-    if pole {
-        lang.pick("Poles", "Polos")
-    } else {
-        "Zeros"
+pub fn role_heading(role: RootRole, lang: Lang) -> &'static str {
+    match role {
+        RootRole::Pole => lang.pick("Poles", "Polos"),
+        RootRole::Zero => "Zeros",
     }
 }
 
@@ -173,13 +180,17 @@ pub fn messages() -> Vec<Message> {
         ));
     }
     all.push(Message::said("design::role_name", |lang| {
-        format!("{} 1, {} 2", role_name(true, lang), role_name(false, lang))
+        format!(
+            "{} 1, {} 2",
+            role_name(RootRole::Pole, lang),
+            role_name(RootRole::Zero, lang)
+        )
     }));
     all.push(Message::said("design::role_heading", |lang| {
         format!(
             "{}, {}",
-            role_heading(true, lang),
-            role_heading(false, lang)
+            role_heading(RootRole::Pole, lang),
+            role_heading(RootRole::Zero, lang)
         )
     }));
     all

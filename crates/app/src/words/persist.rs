@@ -6,10 +6,10 @@
 use degrau_words::{Lang, Localize, Message};
 
 use crate::design::closed_loop::{KP_LIMIT, LoopProblem};
-use crate::design::splane::View;
+use crate::design::plane::View;
 use crate::design::state::{MAX_ROOTS, Quantity, RootId, RootRole, SystemProblem};
 use crate::field::LimitReason;
-use crate::persist::{
+use crate::persist::problem::{
     ExperimentProblem, Field, FieldProblem, FileAction, Reason, SaveFailure, StateError, TestValue,
 };
 use degrau_ident::fit::MAX_STARTS;
@@ -76,8 +76,12 @@ impl Localize for Field {
 impl Localize for Quantity {
     fn text(&self, lang: Lang) -> String {
         match self {
-            Quantity::Sigma(root) => format!("{}: σ", root.label(lang)),
-            Quantity::Omega(root) => format!("{}: ω", root.label(lang)),
+            Quantity::Sigma(root) => {
+                format!("{}: σ", crate::words::design::root_label(*root, lang))
+            }
+            Quantity::Omega(root) => {
+                format!("{}: ω", crate::words::design::root_label(*root, lang))
+            }
             Quantity::Gain => lang.pick("gain", "ganho").to_string(),
             Quantity::Amplitude => lang
                 .pick("step amplitude", "amplitude do degrau")
@@ -102,21 +106,27 @@ impl Localize for SystemProblem {
                 }
             }
             SystemProblem::RealWithOmega { root, omega } => {
-                let (root, omega) = (root.label(lang), number(omega, lang));
+                let (root, omega) = (
+                    crate::words::design::root_label(*root, lang),
+                    number(omega, lang),
+                );
                 match lang {
                     Lang::En => format!("{root} is real but has ω = {omega}"),
                     Lang::Pt => format!("{root} é real mas tem ω = {omega}"),
                 }
             }
             SystemProblem::NegativeOmega { root, omega } => {
-                let (root, omega) = (root.label(lang), number(omega, lang));
+                let (root, omega) = (
+                    crate::words::design::root_label(*root, lang),
+                    number(omega, lang),
+                );
                 match lang {
                     Lang::En => format!("{root} has ω = {omega} < 0"),
                     Lang::Pt => format!("{root} tem ω = {omega} < 0"),
                 }
             }
             SystemProblem::TooMany { role, count } => {
-                let roles = format!("{}s", role.name_in(lang));
+                let roles = format!("{}s", crate::words::design::role_name(*role, lang));
                 match lang {
                     Lang::En => format!("{count} {roles}, more than the {MAX_ROOTS} the app holds"),
                     Lang::Pt => {

@@ -1,8 +1,8 @@
 //! The data the Identify mode's plots draw, derived from the session: the measured samples,
 //! the model curve and the residuals with their ranges ([`Plots`], recomputed only when the
-//! data or the shown model changed), the axes held while a handle is dragged ([`Frozen`]),
-//! what the guess handles act on ([`HandleFrame`], [`Segment`]) and the nearest sample to a
-//! time.
+//! data or the shown model changed), the plot's frame (the axes held while a handle is
+//! dragged, or the curves' own), what the guess handles act on ([`HandleFrame`],
+//! [`Segment`]) and the nearest sample to a time.
 
 use degrau_ident::fit::FitData;
 use degrau_ident::fit::handles::{self, Handle};
@@ -10,6 +10,7 @@ use degrau_ident::model::excitation::{Excitation, InputChange};
 use degrau_ident::model::{Model, Param};
 use degrau_lti::{StepInfo, StepInfoOptions};
 
+use super::super::commands::Frozen;
 use super::super::steps::InputPlot;
 use super::Session;
 
@@ -49,40 +50,6 @@ impl Plots {
             return false;
         };
         os / 100.0 * (y_final - info.initial_value).abs() <= self.noise_band
-    }
-}
-
-/// The plot's axes at the moment a handle was grabbed: held until it is let go.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Frozen {
-    pub t: (f64, f64),
-    pub y: (f64, f64),
-}
-
-/// Which characteristics of the measured curve are marked.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct MeasuredMarkers {
-    pub rise: bool,
-    pub peak: bool,
-    pub settling: bool,
-    pub steady_state: bool,
-}
-
-impl MeasuredMarkers {
-    /// Every marker on (`true`) or off.
-    pub const fn all(on: bool) -> Self {
-        Self {
-            rise: on,
-            peak: on,
-            settling: on,
-            steady_state: on,
-        }
-    }
-}
-
-impl Default for MeasuredMarkers {
-    fn default() -> Self {
-        Self::all(true)
     }
 }
 
@@ -341,6 +308,12 @@ pub(crate) fn padded_by((lo, hi): (f64, f64), share: f64) -> (f64, f64) {
 /// The point of sorted `points` nearest in t (of equal times, the first).
 pub(super) fn nearest(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
     nearest_from(points, t, points.partition_point(|p| p[0] < t))
+}
+
+/// The point of a polyline nearest in time to `t` (the last of equal times: the level after
+/// a jump).
+pub(crate) fn nearest_point(points: &[[f64; 2]], t: f64) -> Option<[f64; 2]> {
+    nearest_from(points, t, points.partition_point(|p| p[0] <= t))
 }
 
 /// The nearer to `t` of `points[k − 1]` and `points[k]`, `k` the partition point around t.
