@@ -105,12 +105,12 @@ impl HandMethod {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{}", degrau_words::Localize::text(self, degrau_words::Lang::En))]
 pub enum HandError {
+    /// No output level before the step to start from.
+    NoOperatingPoint,
     /// The step Δu is zero or not a number.
     NoStep(f64),
     /// The input changes `count` times: a hand method reads one step.
     SeveralChanges { count: usize },
-    /// No output level before the step to start from.
-    NoOperatingPoint,
     /// `n` samples from the step on, fewer than `needed`.
     TooFewSamples { n: usize, needed: usize },
     /// The output moves by `change` (output units), not clearly above the noise σ `noise`.

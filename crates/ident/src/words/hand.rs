@@ -7,10 +7,6 @@ use crate::fit::FitReport;
 use crate::hand::{HandError, HandEstimate, HandMethod, HandWarning};
 use crate::model::Param;
 
-#[cfg(test)]
-use crate::model::ModelError;
-#[cfg(test)]
-use degrau_words::Message;
 use degrau_words::{Lang, Localize};
 
 degrau_words::phrases! {
@@ -53,22 +49,21 @@ degrau_words::phrases! {
 
 /// The method's name.
 pub fn method_name(method: HandMethod, lang: Lang) -> &'static str {
-    match method {
-        HandMethod::Tangent => lang.pick("Tangent (reaction curve)", "Reta tangente"),
-        HandMethod::SixtyThree => lang.pick("63.2 % time", "Constante de tempo (63,2 %)"),
-        HandMethod::Broida => lang.pick(
+    let (en, pt) = match method {
+        HandMethod::Tangent => ("Tangent (reaction curve)", "Reta tangente"),
+        HandMethod::SixtyThree => ("63.2 % time", "Constante de tempo (63,2 %)"),
+        HandMethod::Broida => (
             "Broida's two points (28 %, 40 %)",
             "Dois pontos de Broida (28 %, 40 %)",
         ),
-        HandMethod::Smith => lang.pick(
+        HandMethod::Smith => (
             "Smith's two points (28.3 %, 63.2 %)",
             "Dois pontos de Smith (28,3 %, 63,2 %)",
         ),
-        HandMethod::Points => lang.pick("Set of points", "Conjunto de pontos"),
-        HandMethod::ThreePoint => {
-            lang.pick("Three points (Mollenkamp)", "Três pontos (Mollenkamp)")
-        }
-    }
+        HandMethod::Points => ("Set of points", "Conjunto de pontos"),
+        HandMethod::ThreePoint => ("Three points (Mollenkamp)", "Três pontos (Mollenkamp)"),
+    };
+    lang.pick(en, pt)
 }
 
 /// The method in words, for the list of the test of every message.
@@ -144,16 +139,17 @@ impl Localize for HandError {
                     lang.num(*noise, 3)
                 ),
             ),
-            HandError::NotSettled { percent } => lang.pick(
-                format!(
-                    "the record ends before the output settles (its last fifth still moves by {} % of the change): its final level is unknown; give one",
-                    lang.num(*percent, 3)
-                ),
-                format!(
-                    "o registro termina antes de a saída estabilizar (seu último quinto ainda se move {} % da variação): o nível final é desconhecido; informe um",
-                    lang.num(*percent, 3)
-                ),
-            ),
+            HandError::NotSettled { percent } => {
+                let p = lang.num(*percent, 3);
+                lang.pick(
+                    format!(
+                        "the record ends before the output settles (its last fifth still moves by {p} % of the change): its final level is unknown; give one"
+                    ),
+                    format!(
+                        "o registro termina antes de a saída estabilizar (seu último quinto ainda se move {p} % da variação): o nível final é desconhecido; informe um"
+                    ),
+                )
+            }
             HandError::LevelNotReached { percent } => lang.pick(
                 format!("the curve never reaches {} % of the change", lang.num(*percent, 3)),
                 format!("a curva nunca atinge {} % da variação", lang.num(*percent, 3)),
@@ -404,16 +400,22 @@ pub fn estimate_lines(e: &HandEstimate, lang: Lang) -> Vec<String> {
 
 /// Every phrase, method name, warning and error, for the test of both languages.
 #[cfg(test)]
-pub fn messages() -> Vec<Message> {
+pub fn messages() -> Vec<degrau_words::Message> {
     let mut all = HandPhrase::messages();
     for m in HandMethod::ALL {
-        all.push(Message::of(format!("hand::method::{m:?}"), &MethodName(m)));
+        all.push(degrau_words::Message::of(
+            format!("hand::method::{m:?}"),
+            &MethodName(m),
+        ));
     }
     for w in [
         HandWarning::DampingOutsideRange { zeta: 0.5 },
         HandWarning::NegativeDeadTime { theta: -0.3 },
     ] {
-        all.push(Message::of(format!("hand::HandWarning::{w:?}"), &w));
+        all.push(degrau_words::Message::of(
+            format!("hand::HandWarning::{w:?}"),
+            &w,
+        ));
     }
     let errors = [
         HandError::NoStep(0.0),
@@ -437,10 +439,13 @@ pub fn messages() -> Vec<Message> {
         HandError::ThreePointShape { x: 0.3 },
         HandError::ThreePointShape { x: f64::NAN },
         HandError::BadOverride(f64::NAN),
-        HandError::Model(ModelError::Overflow),
+        HandError::Model(crate::model::ModelError::Overflow),
     ];
     for e in errors {
-        all.push(Message::of(format!("hand::HandError::{e:?}"), &e));
+        all.push(degrau_words::Message::of(
+            format!("hand::HandError::{e:?}"),
+            &e,
+        ));
     }
     all
 }

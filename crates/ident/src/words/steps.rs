@@ -36,17 +36,17 @@ degrau_words::phrases! {
 /// How the input moves between samples, in words.
 impl Localize for Hold {
     fn text(&self, lang: Lang) -> String {
-        match self {
-            Hold::Zoh => lang.pick(
+        let (en, pt) = match self {
+            Hold::Zoh => (
                 "held between samples (zero-order hold)",
                 "mantida entre amostras (segurador de ordem zero)",
             ),
-            Hold::Foh => lang.pick(
+            Hold::Foh => (
                 "a straight line between samples (first-order hold)",
                 "uma reta entre amostras (segurador de ordem um)",
             ),
-        }
-        .into()
+        };
+        lang.pick(en, pt).into()
     }
 }
 

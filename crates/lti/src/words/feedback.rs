@@ -122,23 +122,23 @@ impl SpecName {
 
 impl Localize for SpecName {
     fn text(&self, lang: Lang) -> String {
-        match self {
-            SpecName::Overshoot => lang.pick("overshoot", "sobressinal"),
-            SpecName::Settling => lang.pick("settling time, 2 %", "tempo de acomodação, 2 %"),
-            SpecName::Peak => lang.pick("peak time", "tempo de pico"),
-            SpecName::Rise => lang.pick("rise time, 10–90 %", "tempo de subida, 10–90 %"),
-            SpecName::WnMin => lang.pick("least natural frequency", "frequência natural mínima"),
-            SpecName::WnMax => lang.pick("largest natural frequency", "frequência natural máxima"),
-            SpecName::EssStep => lang.pick(
+        let (en, pt) = match self {
+            SpecName::Overshoot => ("overshoot", "sobressinal"),
+            SpecName::Settling => ("settling time, 2 %", "tempo de acomodação, 2 %"),
+            SpecName::Peak => ("peak time", "tempo de pico"),
+            SpecName::Rise => ("rise time, 10–90 %", "tempo de subida, 10–90 %"),
+            SpecName::WnMin => ("least natural frequency", "frequência natural mínima"),
+            SpecName::WnMax => ("largest natural frequency", "frequência natural máxima"),
+            SpecName::EssStep => (
                 "steady-state error, step",
                 "erro em regime permanente, degrau",
             ),
-            SpecName::EssRamp => lang.pick(
+            SpecName::EssRamp => (
                 "steady-state error, ramp",
                 "erro em regime permanente, rampa",
             ),
-        }
-        .into()
+        };
+        lang.pick(en, pt).into()
     }
 }
 

@@ -215,22 +215,22 @@ impl Localize for Absence {
 
 impl Localize for Behaviour {
     fn text(&self, lang: Lang) -> String {
-        match self {
-            Behaviour::Settles => lang.pick("settles", "acomoda-se"),
-            Behaviour::Integrating => lang.pick(
+        let (en, pt) = match self {
+            Behaviour::Settles => ("settles", "acomoda-se"),
+            Behaviour::Integrating => (
                 "does not settle: it ramps (integrator)",
                 "não se acomoda: cresce em rampa (integrador)",
             ),
-            Behaviour::Oscillating => lang.pick(
+            Behaviour::Oscillating => (
                 "does not settle: it oscillates forever",
                 "não se acomoda: oscila para sempre",
             ),
-            Behaviour::Unstable => lang.pick(
+            Behaviour::Unstable => (
                 "does not settle: it grows without bound (unstable)",
                 "não se acomoda: cresce sem limite (instável)",
             ),
-        }
-        .to_string()
+        };
+        lang.pick(en, pt).to_string()
     }
 }
 
