@@ -5,6 +5,7 @@
 mod exact;
 mod lti_approx;
 mod lti_clusters;
+mod lti_delay_loop;
 mod lti_feedback;
 mod lti_known_answers;
 mod lti_locus;

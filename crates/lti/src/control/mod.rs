@@ -5,3 +5,9 @@
 pub mod controller;
 
 pub use controller::{Action, Controller, ControllerError, Form, Parallel};
+pub mod delay_loop;
+
+pub use delay_loop::{DelayLoopError, Horizon, LoopInput, LoopResponse, loop_response};
+pub mod metrics;
+
+pub use metrics::{LoopMetrics, Peak, loop_metrics};

@@ -3,7 +3,7 @@
 //! responses and metrics, in English and Brazilian Portuguese (controlador, sintonia,
 //! perturbação de carga, tempo integral, tempo derivativo, …).
 
-use crate::control::ControllerError;
+use crate::control::{ControllerError, DelayLoopError};
 
 #[cfg(test)]
 use degrau_words::Message;
@@ -67,6 +67,31 @@ impl Localize for ControllerError {
     }
 }
 
+impl Localize for DelayLoopError {
+    fn text(&self, lang: Lang) -> String {
+        match *self {
+            DelayLoopError::NotWellPosed => lang.pick(
+                "the loop is not well posed: 1 + C·G is 0 at high frequency (the controller's and the plant's direct feedthroughs cancel)".into(),
+                "a malha não é bem posta: 1 + C·G é 0 em alta frequência (as transmissões diretas do controlador e da planta se anulam)".into(),
+            ),
+            DelayLoopError::BadHorizon(t) => lang.pick(
+                format!("the time to compute must be a positive number of seconds, not {}", lang.num(t, 6)),
+                format!("o tempo a calcular deve ser um número positivo de segundos, não {}", lang.num(t, 6)),
+            ),
+            DelayLoopError::TooManySteps { fastest } => lang.pick(
+                format!(
+                    "the loop's fastest time constant ({} s) is too short beside the time asked: more than 400000 steps would be needed",
+                    lang.num(fastest, 4)
+                ),
+                format!(
+                    "a constante de tempo mais rápida da malha ({} s) é curta demais para o tempo pedido: seriam precisos mais de 400000 passos",
+                    lang.num(fastest, 4)
+                ),
+            ),
+        }
+    }
+}
+
 /// Every message of the controllers and their loop, for the words' test.
 #[cfg(test)]
 pub fn messages() -> Vec<Message> {
@@ -79,5 +104,14 @@ pub fn messages() -> Vec<Message> {
     ]
     .iter()
     .map(|e| Message::of(format!("{e:?}"), e))
+    .chain(
+        [
+            DelayLoopError::NotWellPosed,
+            DelayLoopError::BadHorizon(-1.0),
+            DelayLoopError::TooManySteps { fastest: 1e-6 },
+        ]
+        .iter()
+        .map(|e| Message::of(format!("{e:?}"), e)),
+    )
     .collect()
 }
