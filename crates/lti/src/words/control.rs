@@ -92,6 +92,40 @@ impl Localize for DelayLoopError {
     }
 }
 
+degrau_words::phrases! {
+    /// The names of a controller's parts, the loop's responses and their metrics (the CLI's
+    /// `degrau tune` and `degrau loop --controller`, the app's Tune mode).
+    pub enum ControlWord {
+        Controller => ("Controller", "Controlador"),
+        Tuning => ("Tuning", "Sintonia"),
+        Rule => ("Rule", "Regra"),
+        Formula => ("Formula", "Fórmula"),
+        Source => ("Source", "Fonte"),
+        Gain => ("Controller gain Kc", "Ganho do controlador Kc"),
+        IntegralTime => ("Integral time Ti (s)", "Tempo integral Ti (s)"),
+        DerivativeTime => ("Derivative time Td (s)", "Tempo derivativo Td (s)"),
+        Filter => ("Derivative filter N", "Filtro derivativo N"),
+        SetpointWeight => ("Setpoint weight b", "Peso da referência b"),
+        IdealForm => ("ideal (ISA) form: Kc·(1 + 1/(Ti·s) + Td·s/(1 + Td·s/N))", "forma ideal (ISA): Kc·(1 + 1/(Ti·s) + Td·s/(1 + Td·s/N))"),
+        ParallelForm => ("parallel form: Kp + Ki/s + Kd·s/(1 + Tf·s)", "forma paralela: Kp + Ki/s + Kd·s/(1 + Tf·s)"),
+        SetpointResponse => ("Setpoint step response", "Resposta ao degrau de referência"),
+        LoadResponse => ("Load disturbance response (step at the plant's input)", "Resposta à perturbação de carga (degrau na entrada da planta)"),
+        FinalValue => ("Final value", "Valor final"),
+        Overshoot => ("Overshoot (%)", "Sobressinal (%)"),
+        Peak => ("Peak", "Pico"),
+        PeakDeviation => ("Peak deviation", "Desvio máximo"),
+        PeakTime => ("Peak time (s)", "Tempo de pico (s)"),
+        SettlingTime => ("Settling time, 2 % (s)", "Tempo de acomodação, 2 % (s)"),
+        Iae => ("IAE, ∫|e| dt", "IAE, ∫|e| dt"),
+        Itae => ("ITAE, ∫t·|e| dt", "ITAE, ∫t·|e| dt"),
+        MaxSensitivity => ("Maximum sensitivity Ms", "Sensibilidade máxima Ms"),
+        ExactDelay => ("exact dead time (no Padé)", "atraso exato (sem Padé)"),
+        NotSettled => ("did not settle: the loop is unstable or too slow", "não acomodou: a malha é instável ou lenta demais"),
+        NoIntegralAction => ("none: the error does not vanish without integral action", "não há: o erro não se anula sem ação integral"),
+        Unstable => ("unstable", "instável"),
+    }
+}
+
 /// Every message of the controllers and their loop, for the words' test.
 #[cfg(test)]
 pub fn messages() -> Vec<Message> {
@@ -104,6 +138,7 @@ pub fn messages() -> Vec<Message> {
     ]
     .iter()
     .map(|e| Message::of(format!("{e:?}"), e))
+    .chain(ControlWord::messages())
     .chain(
         [
             DelayLoopError::NotWellPosed,
