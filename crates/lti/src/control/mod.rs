@@ -3,5 +3,9 @@
 //! load responses computed without replacing the delay) and their metrics ([`metrics`]).
 
 pub mod controller;
+pub mod frequency;
+pub mod tuning;
 
 pub use controller::{Action, Controller, ControllerError, Form, Parallel};
+pub use frequency::{Sensitivity, StabilityError, Ultimate};
+pub use tuning::{ModelError, NotApplicable, ProcessModel, Rule, Tuning};
