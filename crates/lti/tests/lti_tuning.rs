@@ -814,3 +814,39 @@ fn the_peak_sensitivity_of_simple_loops() {
     assert_rel("Ms", s.ms, brute_force_ms(&g, &c), 1e-7);
     let _ = C64::new(0.0, 0.0);
 }
+
+#[test]
+fn high_gain_proportional_loops_have_one_unstable_pair_per_crossing_above_unit_gain() {
+    // Kc·K·e^{−θs}/(τs + 1): the phase is −(2m + 1)π at atan(ω_m·τ) + ω_m·θ = (2m + 1)π, and
+    // as the gain grows each crossing where |L(jω_m)| = g/√(1 + ω_m²τ²) > 1 has let a pair of
+    // roots into the right half-plane (roots of a retarded loop cross left to right there),
+    // so Z = 2·#{m : |L(jω_m)| > 1}. These loops encircle −1 at ωθ far beyond a Padé's reach.
+    for (g, tau, theta) in [
+        (5.0, 1.0, 0.5),
+        (20.0, 1.0, 0.5),
+        (100.0, 2.0, 1.0),
+        (60.0, 1.0, 3.0),
+    ] {
+        let mut expected = 0;
+        for m in 0.. {
+            let target = (2 * m + 1) as f64 * PI;
+            let w = bisect(
+                |w| (w * tau).atan() + w * theta - target,
+                1e-9,
+                target / theta,
+            );
+            if g / (1.0 + w * w * tau * tau).sqrt() <= 1.0 {
+                break;
+            }
+            expected += 2;
+        }
+        assert!(expected >= 2);
+        let plant = plant(&foptd(1.0, tau, theta));
+        let c = Controller::proportional(g).unwrap();
+        assert_eq!(
+            closed_loop_unstable_roots(&plant, &c),
+            Ok(expected),
+            "g = {g}, τ = {tau}, θ = {theta}"
+        );
+    }
+}

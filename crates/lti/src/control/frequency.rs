@@ -453,7 +453,7 @@ fn vanishes(w: C64) -> bool {
 }
 
 /// Ms, the peak of |1/(1 + L(jω))| over ω > 0, with its frequency: a grid of
-/// [`PER_DECADE`] points a decade at most [`DELAY_STEP`]/θ apart, out to where |L| is too
+/// 200 points a decade at most 0.1/θ apart (ωθ moves 0.1 rad at most), out to where |L| is too
 /// small to raise |S| above the peak found, each local peak near the highest refined by a
 /// golden-section search to 1e-9 relative; the high-frequency limit when it is higher
 /// (1/(1 − |L(∞)|) for a biproper loop with a dead time). None unless the closed loop is
