@@ -82,16 +82,25 @@ pub struct RuleRow {
 }
 
 /// Every rule's row for `model`, a PI or PID (`action`), τc (or λ) typed or the rules'
-/// defaults, in the order of [`Rule::ALL`].
+/// defaults, in the order of [`Rule::ALL`]; the rows are computed on threads of their own.
 pub fn rule_table(model: &ProcessModel, action: Action, tc: Option<f64>) -> Vec<RuleRow> {
     let plant = model.transfer_function();
-    Rule::ALL
-        .iter()
-        .map(|&rule| RuleRow {
-            rule,
-            result: row(model, &plant, rule, action, tc),
-        })
-        .collect()
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = Rule::ALL
+            .iter()
+            .map(|&rule| {
+                let plant = &plant;
+                scope.spawn(move || RuleRow {
+                    rule,
+                    result: row(model, plant, rule, action, tc),
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .collect()
+    })
 }
 
 fn row(
