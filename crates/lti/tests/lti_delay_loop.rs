@@ -482,3 +482,26 @@ mod table {
         assert!(t.setpoint_metrics.overshoot.unwrap() > 50.0);
     }
 }
+
+#[test]
+fn a_load_without_integral_action_settles_to_its_offset_as_a_step_does() {
+    // P control of 1.5·e^{−s}/(10s + 1), Kc = 2: y(∞) = K/(1 + K·Kc) = 0.375, reached
+    // without a peak; the band is 2 % of 0.375, crossed long before the end computed.
+    let g = Plant {
+        k: 1.5,
+        tau1: 10.0,
+        tau2: 0.0,
+        theta: 1.0,
+    }
+    .transfer_function();
+    let p = Controller::proportional(2.0).unwrap();
+    let r = loop_response(&g, &p, LoopInput::Load, Horizon::Auto).unwrap();
+    let m = loop_metrics(&r);
+    assert!((m.final_value.unwrap() - 0.375).abs() < 1e-15);
+    let ts = m.settling_time.unwrap();
+    assert!(ts < 0.5 * r.end(), "{ts} vs end {}", r.end());
+    assert!((r.value(ts) - 0.375).abs() > 0.0199 * 0.375);
+    assert!((r.value(ts) - 0.375).abs() < 0.0201 * 0.375);
+    assert_eq!(m.overshoot, Some(0.0));
+    assert_eq!((m.iae, m.itae), (None, None));
+}

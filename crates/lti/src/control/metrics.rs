@@ -9,7 +9,11 @@
 //! - **peak**: the largest value for a setpoint step; for a load step the **peak
 //!   deviation** from the setpoint, the largest |y| (with its sign), and its time;
 //! - **settling time** (s): the last time |y − y(∞)| leaves the 2 % band, the band being 2 %
-//!   of the setpoint change, or of the peak deviation for a load;
+//!   of the setpoint change, or for a load of the larger of the peak's distance from y(∞)
+//!   and y(∞) itself (without integral action the output creeps to its offset y(∞) without
+//!   a peak: it settles as a step response does);
+//! - a response that approaches y(∞) without passing it has its peak at the end of the time
+//!   computed, as `stepinfo` reports it;
 //! - **IAE** = ∫|e| dt and **ITAE** = ∫ t·|e| dt, e = r − y, only when e → 0 (the loop has
 //!   integral action or an integrating plant); otherwise they grow without bound and are
 //!   None.
@@ -126,7 +130,7 @@ pub fn loop_metrics(r: &LoopResponse) -> LoopMetrics {
             let swing = extreme(&after, |y| -(y - y_final) * deviation.signum());
             (
                 (deviation != 0.0).then(|| 100.0 * swing.value.max(0.0) / deviation.abs()),
-                SETTLING_BAND * deviation.abs(),
+                SETTLING_BAND * deviation.abs().max(y_final.abs()),
             )
         }
     };
