@@ -303,7 +303,11 @@ fn table(header: &[String], rows: &[(Vec<String>, Option<String>)]) -> Vec<Strin
     let mut lines = vec![line(header)];
     for (cells, tail) in rows {
         match tail {
-            Some(reason) => lines.push(format!("{}  {reason}", line(&cells[..1]))),
+            Some(reason) => {
+                let first = &cells[0];
+                let pad = widths[0].saturating_sub(first.chars().count());
+                lines.push(format!("{first}{}  {reason}", " ".repeat(pad)));
+            }
             None => lines.push(line(cells)),
         }
     }
