@@ -10,6 +10,9 @@
 //! (`--pade m,n`, default [`PadeOrder::default`]): everything after is of the approximated
 //! loop, the text says so and the JSON names the approximant (`approximant`, null when G has
 //! no delay).
+//!
+//! With `--controller p|pi|pd|pid` the loop is a controller's, its dead time kept exact
+//! ([`super::loop_controller`]).
 
 use std::io::{self, Write};
 use std::process::ExitCode;
@@ -28,6 +31,7 @@ use crate::text::cli::StepPhrase;
 use crate::text::feedback::{Loop as P, LoopError as LoopErrorText};
 use crate::text::{Lang, Localize};
 
+use super::loop_controller::ControllerLoopError;
 use super::{Analysis, CliError, Report, SystemSpec, finite_f64, human_report};
 
 const LOOP_EXAMPLES: &str = "\
@@ -35,7 +39,9 @@ Examples:
   degrau loop --num 0.5 --den 1,7,15,25 --kp 1
   degrau loop --num 1 --den 1,2,0 --find \"overshoot<=10\" --json
   degrau loop --poles \"-1+2j,-1-2j,-5\" --zeros -10 --gain 0.5 --locus --json
-  degrau loop --num 1 --den 10,1 --delay 2 --kp 3 --pade 3,3 --json";
+  degrau loop --num 1 --den 10,1 --delay 2 --kp 3 --pade 3,3 --json
+  degrau loop --num 1 --den 10,1 --delay 2 --controller pi --kc 2.5 --ti 10 --at 5,10,20
+  degrau loop --num 1 --den 10,1 --delay 2 --controller pid --kc 3 --ti 8 --td 1 --response load --json";
 
 /// `degrau loop` options: the system as for `degrau step`, then the gain or the specs.
 #[derive(Debug, Default, Args)]
@@ -43,7 +49,8 @@ Examples:
 pub struct LoopArgs {
     #[command(flatten)]
     pub system: super::SystemArgs,
-    /// The proportional gain Kp of the loop (default 1).
+    /// The proportional gain Kp of the loop (default 1). With --controller it is read as the
+    /// controller gain Kc (the same number in the ideal and the parallel forms).
     #[arg(long, value_name = "KP", allow_hyphen_values = true, value_parser = finite_f64, conflicts_with = "find")]
     pub kp: Option<f64>,
     /// Find the gain meeting specs, e.g. "overshoot<=10" (%), "settling<=2" (s, 2 %),
@@ -65,6 +72,8 @@ pub struct LoopArgs {
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub control: super::loop_controller::ControllerFlags,
 }
 
 /// What can go wrong in `degrau loop` (its words: [`crate::text::feedback`]).
@@ -80,6 +89,8 @@ pub enum LoopError {
     BadSpec(String),
     /// No gain K > 0 meets the specs.
     NoGain,
+    /// `--controller`: the controller or its loop.
+    Controller(#[from] ControllerLoopError),
 }
 
 impl From<LtiError> for LoopError {
@@ -96,6 +107,7 @@ impl Localize for LoopError {
             LoopError::BadPade(item) => LoopErrorText::BadPade(item.clone()).text(lang),
             LoopError::BadSpec(item) => LoopErrorText::BadSpec(item.clone()).text(lang),
             LoopError::NoGain => LoopErrorText::NoGain.text(lang),
+            LoopError::Controller(e) => e.text(lang),
         }
     }
 }
@@ -173,7 +185,7 @@ pub struct LoopAnalysis {
 }
 
 impl LoopArgs {
-    fn spec(&self) -> Result<SystemSpec, CliError> {
+    pub(super) fn spec(&self) -> Result<SystemSpec, CliError> {
         let step = super::StepArgs {
             system: self.system.clone(),
             ..Default::default()
@@ -412,6 +424,9 @@ pub fn human_loop_report(a: &LoopAnalysis, lang: Lang) -> String {
 
 /// `degrau loop`.
 pub fn run_loop(args: &LoopArgs, lang: Lang) -> Result<(), LoopError> {
+    if let Some(action) = args.control.controller {
+        return super::loop_controller::run(args, action, lang);
+    }
     let a = analyse_loop(args)?;
     let mut out = io::stdout().lock();
     let written = if args.json {

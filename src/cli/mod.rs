@@ -21,9 +21,12 @@ pub mod fit;
 pub mod hand;
 mod human;
 pub mod loop_cmd;
+pub mod loop_controller;
 pub mod prbs;
 mod report;
 pub mod rls;
+pub mod tune;
+pub mod tune_plant;
 
 pub use batch::run_batch;
 pub use human::*;
@@ -96,6 +99,9 @@ pub enum Command {
     Pade(approx::PadeArgs),
     /// Unity-feedback loop around Kp·G(s): closed loop, gain for specs, error constants, root locus.
     Loop(loop_cmd::LoopArgs),
+    /// PI or PID controllers for a first- or second-order plant with a dead time, by the
+    /// published rules, each judged on its loop (exact dead time).
+    Tune(tune::TuneArgs),
     /// Least squares on the samples: an ARX model (na, nb, nk), its parameters and errors.
     Arx(arx::ArxArgs),
     /// Recursive least squares on the samples, with the parameter trajectory.
@@ -431,6 +437,7 @@ pub fn main() -> ExitCode {
         Some(Command::Approx(args)) => approx::finish(approx::run_approx(&args, lang), lang),
         Some(Command::Pade(args)) => approx::finish(approx::run_pade(&args, lang), lang),
         Some(Command::Loop(args)) => loop_cmd::main(&args, lang),
+        Some(Command::Tune(args)) => tune::main(&args, lang),
         Some(Command::Arx(args)) => arx::finish(arx::run_arx(&args, lang), lang),
         Some(Command::Rls(args)) => arx::finish(rls::run_rls(&args, lang), lang),
         Some(Command::Prbs(args)) => arx::finish(prbs::run_prbs(&args, lang), lang),

@@ -22,6 +22,7 @@ pub use degrau_words::{Lang, Localize, Message};
 pub mod approx;
 pub mod clap_words;
 pub mod cli;
+pub mod control;
 pub mod hand;
 pub mod lsq;
 
@@ -31,6 +32,7 @@ pub mod lsq;
 pub fn every_message() -> Vec<Message> {
     let mut all = cli::messages();
     all.extend(approx::cli_messages());
+    all.extend(control::messages());
     all
 }
 

@@ -599,3 +599,260 @@ fn routh_counts_the_right_half_plane_roots() {
     assert_eq!(routh_unstable_roots(&[1.0, -1.0]), Some(1));
     assert_eq!(routh_unstable_roots(&[1.0, 1.0, 1.0, 1.0]), None, "±j");
 }
+
+/// The plant of the controller tests: 1/(10s + 1)·e^{−2s}.
+const FOPTD: [&str; 6] = ["--num", "1", "--den", "10,1", "--delay", "2"];
+
+fn controller_loop(extra: &[&str]) -> Value {
+    json(&[&["loop"], &FOPTD[..], extra, &["--json"]].concat())
+}
+
+#[test]
+fn a_pi_controller_removes_the_offset_with_the_exact_dead_time() {
+    let v = controller_loop(&["--controller", "pi", "--kc", "2.5", "--ti", "10"]);
+    assert_eq!(v["exact_delay"], true);
+    assert_eq!(v["response"], "setpoint");
+    assert_eq!(v["settled"], true);
+    let c = &v["controller"];
+    assert_eq!(c["action"], "pi");
+    assert_eq!(c["form"], "ideal");
+    for (key, want) in [
+        ("kc", 2.5),
+        ("ti", 10.0),
+        ("td", 0.0),
+        ("n", 10.0),
+        ("b", 1.0),
+        ("kp", 2.5),
+        ("ki", 0.25),
+        ("kd", 0.0),
+        ("tf", 0.0),
+    ] {
+        assert!((num(&c[key]) - want).abs() < 1e-15, "{key}: {}", c[key]);
+    }
+    let m = &v["metrics"];
+    assert!((num(&m["final_value"]) - 1.0).abs() < 1e-12, "{m}");
+    // Nothing moves before the dead time, and the error integrals exist (integral action).
+    assert!(num(&m["peak_time"]) > 2.0, "{m}");
+    assert!(num(&m["peak"]) >= 1.0, "{m}");
+    assert!(num(&m["overshoot"]) >= 0.0, "{m}");
+    assert!(num(&m["settling_time"]) > 2.0, "{m}");
+    // IAE ≥ the dead time's share (e = 1 on [0, 2]); ITAE ≥ ∫0² t dt = 2.
+    assert!(num(&m["iae"]) > 2.0 && num(&m["itae"]) > 2.0, "{m}");
+    assert!(v.get("samples").is_none());
+    assert!(
+        v.get("approximant").is_none(),
+        "no Padé in the controller's loop"
+    );
+}
+
+#[test]
+fn the_at_samples_are_the_loops_values_at_those_instants() {
+    use degrau::lti::TransferFunction;
+    use degrau::lti::control::{Action, Controller, Horizon, LoopInput, loop_response};
+    let times = [0.0, 1.0, 2.0, 2.5, 5.0, 10.0, 30.0, 2000.0];
+    let list = times.map(|t| t.to_string()).join(",");
+    for (input, key) in [(LoopInput::Setpoint, "setpoint"), (LoopInput::Load, "load")] {
+        let v = controller_loop(&[
+            "--controller",
+            "pid",
+            "--kc",
+            "3",
+            "--ti",
+            "8",
+            "--td",
+            "1",
+            "--n",
+            "8",
+            "--b",
+            "0.5",
+            "--response",
+            key,
+            "--at",
+            &list,
+        ]);
+        assert_eq!(v["response"], key);
+        let plant = TransferFunction::from_coeffs(&[1.0], &[10.0, 1.0])
+            .unwrap()
+            .with_delay(2.0)
+            .unwrap();
+        let c = Controller::new(Action::PID, 3.0, 8.0, 1.0)
+            .unwrap()
+            .with_filter(8.0)
+            .unwrap()
+            .with_setpoint_weight(0.5)
+            .unwrap();
+        let r = loop_response(&plant, &c, input, Horizon::Until(2000.0)).unwrap();
+        assert_eq!(numbers(&v["samples"]["t"]), times.to_vec());
+        let y = numbers(&v["samples"]["y"]);
+        for (t, y) in times.iter().zip(&y) {
+            assert!((y - r.value(*t)).abs() < 1e-12, "{key} t = {t}: {y}");
+        }
+        // Nothing reaches the output before the dead time.
+        assert_eq!(y[..3], [0.0, 0.0, 0.0], "{key}");
+        let tf = num(&v["controller"]["tf"]);
+        assert!((tf - 1.0 / 8.0).abs() < 1e-15);
+    }
+}
+
+#[test]
+fn a_p_controller_leaves_the_offset_k_kc_over_one_plus_k_kc() {
+    // K = 1.5, Kc = 2: y(∞) = 3/4; no IAE or ITAE (the error does not vanish).
+    let args = [
+        "loop",
+        "--num",
+        "1.5",
+        "--den",
+        "10,1",
+        "--delay",
+        "1",
+        "--controller",
+        "p",
+    ];
+    for gain in [["--kc", "2"], ["--kp", "2"]] {
+        let v = json(&[&args[..], &gain[..], &["--json"]].concat());
+        let m = &v["metrics"];
+        assert!((num(&m["final_value"]) - 0.75).abs() < 1e-12, "{m}");
+        assert_eq!(m["iae"], Value::Null);
+        assert_eq!(m["itae"], Value::Null);
+        assert_eq!(v["controller"]["ti"], "inf");
+        assert_eq!(num(&v["controller"]["kc"]), 2.0);
+    }
+    let text = stdout(&degrau(&[&args[..], &["--kc", "2"]].concat()));
+    assert!(
+        text.contains("none: the error does not vanish without integral action"),
+        "{text}"
+    );
+}
+
+#[test]
+fn the_load_response_has_a_peak_deviation_and_returns_to_zero() {
+    let v = controller_loop(&[
+        "--controller",
+        "pi",
+        "--kc",
+        "2.5",
+        "--ti",
+        "10",
+        "--response",
+        "load",
+    ]);
+    let m = &v["metrics"];
+    assert!(num(&m["final_value"]).abs() < 1e-12, "{m}");
+    let (peak, at) = (num(&m["peak"]), num(&m["peak_time"]));
+    // A unit load through 1/(10s + 1) for at least the dead time, before the controller acts.
+    assert!(peak > 1.0 - (-0.2f64).exp() && peak < 1.0, "{m}");
+    assert!(at > 2.0, "{m}");
+}
+
+#[test]
+fn the_controllers_text_says_the_dead_time_is_exact_in_both_languages() {
+    for (lang, words) in [
+        (
+            "en",
+            [
+                "exact dead time (no Padé)",
+                "Controller PI",
+                "Settling time, 2 % (s)",
+                "Settled: yes",
+            ],
+        ),
+        (
+            "pt",
+            [
+                "atraso exato (sem Padé)",
+                "Controlador PI",
+                "Tempo de acomodação, 2 % (s)",
+                "Acomodou: sim",
+            ],
+        ),
+    ] {
+        let out = degrau(
+            &[
+                &["--lang", lang, "loop"],
+                &FOPTD[..],
+                &[
+                    "--controller",
+                    "pi",
+                    "--kc",
+                    "2.5",
+                    "--ti",
+                    "10",
+                    "--at",
+                    "3",
+                ],
+            ]
+            .concat(),
+        );
+        assert!(out.status.success(), "{}", stderr(&out));
+        let text = stdout(&out);
+        for w in words {
+            assert!(text.contains(w), "{lang}: {w}\n{text}");
+        }
+        assert!(!text.contains("Padé (3, 3)"), "{text}");
+    }
+}
+
+#[test]
+fn a_controller_missing_a_parameter_is_refused_in_both_languages() {
+    for (lang, args, words) in [
+        (
+            "en",
+            vec!["--controller", "pi", "--kc", "2"],
+            "--controller pi needs --ti (the integral time Ti, s)",
+        ),
+        (
+            "pt",
+            vec!["--controller", "pi", "--kc", "2"],
+            "--controller pi precisa de --ti (o tempo integral Ti, s)",
+        ),
+        (
+            "en",
+            vec!["--controller", "pid", "--kc", "2", "--ti", "3"],
+            "needs --td",
+        ),
+        ("en", vec!["--controller", "p"], "needs --kc"),
+        (
+            "en",
+            vec!["--controller", "p", "--kc", "1", "--ti", "3"],
+            "--ti is for a controller that has that action (pi, pid)",
+        ),
+        (
+            "en",
+            vec!["--controller", "pi", "--kc", "1", "--ti", "-3"],
+            "the integral time Ti must be a positive number of seconds",
+        ),
+        (
+            "pt",
+            vec!["--controller", "pi", "--kc", "1", "--ti", "3", "--b", "2"],
+            "o peso da referência b deve estar entre 0 e 1",
+        ),
+        (
+            "en",
+            vec![
+                "--controller",
+                "pi",
+                "--kc",
+                "1",
+                "--ti",
+                "3",
+                "--at",
+                "1,-2",
+            ],
+            "--at: each instant must be 0 or a positive number of seconds, not -2",
+        ),
+    ] {
+        let out = degrau(&[&["--lang", lang, "loop"], &FOPTD[..], &args[..]].concat());
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(stderr(&out).contains(words), "{args:?}: {}", stderr(&out));
+    }
+    // Flags of the controller without it, and --kc with --kp, are clap's refusals.
+    for args in [
+        vec!["--kc", "2"],
+        vec!["--ti", "2"],
+        vec!["--controller", "p", "--kc", "2", "--kp", "2"],
+        vec!["--controller", "p", "--kc", "2", "--pade", "1,1"],
+    ] {
+        let out = degrau(&[&["loop"], &FOPTD[..], &args[..]].concat());
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+    }
+}

@@ -14,6 +14,7 @@ mod cli_lsq;
 mod cli_multistep;
 mod cli_step_large;
 mod cli_test_causes;
+mod cli_tune;
 #[path = "../../crates/lti/tests/exact/mod.rs"]
 mod exact;
 mod lti_discrete;
