@@ -5,6 +5,7 @@
 use crate::kit;
 
 use degrau::app::DegrauApp;
+use degrau::lti::C64;
 use degrau::lti::locus::relative_residual;
 use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
@@ -504,4 +505,61 @@ fn only_the_closed_loops_markers_are_labelled() {
         painted.iter().any(|t| t.trim() == label),
         "{label} in {painted:?}"
     );
+}
+
+#[test]
+fn a_pi_controller_in_the_loop_adds_its_integrator_and_zero_and_k_is_kc() {
+    let mut h = harness();
+    click(&mut h, "Close the loop: unity feedback around Kp·G(s)");
+    let before = h
+        .state()
+        .design
+        .feedback
+        .open_loop
+        .clone()
+        .unwrap()
+        .unwrap();
+    click(&mut h, "PI");
+    kit::type_number(&mut h, "Ti", 0, "2");
+    let feedback = &h.state().saved.design.feedback;
+    assert_eq!(feedback.controller.action, degrau::lti::control::Action::PI);
+    assert_eq!(feedback.controller.ti, 2.0);
+    // The open loop is (1 + 1/(2s))·G: one pole more (at the origin) and a zero at −0.5.
+    let g = h
+        .state()
+        .design
+        .feedback
+        .open_loop
+        .clone()
+        .unwrap()
+        .unwrap();
+    assert_eq!(g.order(), before.order() + 1);
+    assert!(g.poles().iter().any(|p| p.norm() == 0.0));
+    assert!(
+        g.zeros()
+            .iter()
+            .any(|z| (z.re + 0.5).abs() < 1e-12 && z.im == 0.0)
+    );
+    let s = C64::new(0.3, 0.7);
+    let expected = before.eval(s) * (1.0 + 1.0 / (2.0 * s));
+    assert!((g.eval(s) - expected).norm() < 1e-12 * expected.norm());
+    // The integrator makes the loop type 1: no steady-state error to a step.
+    let constants = h.state().design.feedback.constants.unwrap();
+    assert_eq!(constants.system_type, 1);
+    assert_on_the_shaped_locus(&h, &g);
+    // A typed Ti of 0 is refused and the PI stays.
+    kit::type_number(&mut h, "Ti", 0, "0");
+    assert_eq!(h.state().saved.design.feedback.controller.ti, 2.0);
+}
+
+/// Every closed-loop pole a root of den + Kp·num of the shaped open loop.
+#[track_caller]
+fn assert_on_the_shaped_locus(h: &Harness<'_, DegrauApp>, g: &degrau::lti::TransferFunction) {
+    let kp = h.state().saved.design.feedback.kp;
+    let poles = &h.state().design.feedback.closed_poles;
+    assert_eq!(poles.len(), g.order());
+    for p in poles {
+        let r = relative_residual(&g.num(), &g.den(), kp, *p);
+        assert!(r < 1e-9, "pole {p} at Kp {kp}: residual {r}");
+    }
 }

@@ -71,6 +71,8 @@ pub enum LimitReason {
     Gain,
     /// A count (of starts, of samples).
     Count,
+    /// A controller's time (Ti, Td), in seconds.
+    ControllerTime,
 }
 
 impl Localize for LimitReason {
@@ -90,6 +92,10 @@ impl Localize for LimitReason {
             LimitReason::DeadTime => lang.pick("the dead time (s)", "o tempo morto (s)"),
             LimitReason::Gain => lang.pick("the gain", "o ganho"),
             LimitReason::Count => lang.pick("the count", "a contagem"),
+            LimitReason::ControllerTime => lang.pick(
+                "a controller's time Ti or Td (s)",
+                "um tempo do controlador, Ti ou Td (s)",
+            ),
         }
         .to_string()
     }
@@ -142,6 +148,7 @@ pub fn examples() -> Vec<Message> {
         LimitReason::DeadTime,
         LimitReason::Gain,
         LimitReason::Count,
+        LimitReason::ControllerTime,
     ];
     let errors = [
         FieldError::Empty,

@@ -5,6 +5,12 @@
 //! second-order check and the response to the chosen input). No egui here, and nothing is
 //! recomputed while drawing: the views read these caches.
 //!
+//! The loop's controller is P (Kp alone) or a PI, PD or PID of fixed shape
+//! ([`ControllerShape`]: Ti, Td and the filter N) whose gain Kc is the loop's K: the open
+//! loop is then (C/Kc)·G, so the root locus, the gain search and the constants follow K
+//! with the controller's zeros and poles in place (the Tune mode computes the loop with the
+//! exact dead time).
+//!
 //! A system with a dead time is closed through a Padé approximant of its delay (of the
 //! order the student chose, [`PadeOrder`]): the open loop, the locus, the closed loop and
 //! the gain search are then of the approximated loop, and [`LoopDerived::approximant`]
@@ -13,6 +19,7 @@
 use serde::{Deserialize, Serialize};
 
 use degrau_lti::approx::ApproxError;
+use degrau_lti::control::{Action, Controller, ControllerError};
 use degrau_lti::feedback::{
     ErrorConstants, FormulaCheck, GainSearch, Input, InputResponse, LoopApproximant, PadeOrder,
     RationalLoop, Spec, find_gain,
@@ -87,6 +94,44 @@ pub struct LoopSettings {
     pub input: Input,
     /// The Padé order standing in for a dead time in the loop.
     pub pade: PadeOrder,
+    /// The controller's shape; its gain is Kp.
+    pub controller: ControllerShape,
+}
+
+/// A controller's shape: the action and, where it has them, Ti, Td and N (its gain is the
+/// loop's K). P is the plain proportional loop.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ControllerShape {
+    pub action: Action,
+    /// Ti (s).
+    pub ti: f64,
+    /// Td (s).
+    pub td: f64,
+    /// The derivative filter N.
+    pub n: f64,
+}
+
+impl Default for ControllerShape {
+    fn default() -> Self {
+        Self {
+            action: Action::P,
+            ti: 1.0,
+            td: 0.1,
+            n: degrau_lti::control::controller::DEFAULT_FILTER,
+        }
+    }
+}
+
+impl ControllerShape {
+    /// C(s)/Kc as a transfer function, None for P; an error names a parameter refused.
+    pub fn unit_gain(&self) -> Result<Option<TransferFunction>, ControllerError> {
+        if self.action == Action::P {
+            return Ok(None);
+        }
+        let c = Controller::new(self.action, 1.0, self.ti, self.td)?.with_filter(self.n)?;
+        Ok(c.transfer_function())
+    }
 }
 
 impl LoopSettings {
@@ -99,6 +144,9 @@ impl LoopSettings {
         if !self.pade.is_valid() {
             return Err(LoopProblem::Pade(self.pade));
         }
+        if let Err(e) = self.controller.unit_gain() {
+            return Err(LoopProblem::Controller(e));
+        }
         Ok(())
     }
 }
@@ -110,6 +158,8 @@ pub enum LoopProblem {
     Gain(f64),
     /// A Padé order the menu does not offer.
     Pade(PadeOrder),
+    /// A controller parameter refused.
+    Controller(ControllerError),
 }
 
 impl Default for LoopSettings {
@@ -122,6 +172,7 @@ impl Default for LoopSettings {
             specs: Specs::default(),
             input: Input::Step,
             pade: PadeOrder::default(),
+            controller: ControllerShape::default(),
         }
     }
 }
@@ -147,8 +198,8 @@ pub enum Found {
 /// The derived data of the loop, recomputed only when its inputs change.
 #[derive(Debug, Clone, Default)]
 pub struct LoopDerived {
-    /// The system and the Padé order the locus is for.
-    system: Option<(System, PadeOrder)>,
+    /// The system, the Padé order and the controller's shape the locus is for.
+    system: Option<(System, PadeOrder, ControllerShape)>,
     /// The open loop G(s) (rational: a dead time replaced by its Padé approximant), or why
     /// there is no loop.
     pub open_loop: Option<Result<TransferFunction, ApproxError>>,
@@ -189,10 +240,10 @@ impl LoopDerived {
         options: StepInfoOptions,
         dragging: bool,
     ) {
-        let for_system = (system.clone(), settings.pade);
+        let for_system = (system.clone(), settings.pade, settings.controller);
         if self.system.as_ref() != Some(&for_system) {
             self.system = Some(for_system);
-            let rational = open_loop(system, settings.pade);
+            let rational = open_loop(system, settings.pade, &settings.controller);
             self.approximant = rational.as_ref().ok().and_then(|r| r.approximant);
             self.open_loop = Some(rational.map(|r| r.g));
             self.locus = None;
@@ -351,9 +402,18 @@ impl LoopDerived {
     }
 }
 
-/// G(s) for the loop, rational: a dead time replaced by Padé `order`.
-fn open_loop(system: &System, order: PadeOrder) -> Result<RationalLoop, ApproxError> {
-    RationalLoop::new(&system.transfer_function()?, order)
+/// (C/Kc)·G(s) for the loop, rational: a dead time replaced by Padé `order`. A controller
+/// refused leaves G alone (the panel says why).
+fn open_loop(
+    system: &System,
+    order: PadeOrder,
+    shape: &ControllerShape,
+) -> Result<RationalLoop, ApproxError> {
+    let mut rational = RationalLoop::new(&system.transfer_function()?, order)?;
+    if let Ok(Some(c)) = shape.unit_gain() {
+        rational.g = rational.g.series(&c)?;
+    }
+    Ok(rational)
 }
 
 fn branches(locus: &Locus) -> Vec<Vec<[f64; 2]>> {

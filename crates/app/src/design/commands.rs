@@ -7,7 +7,7 @@ use degrau_lti::StepInfoOptions;
 use degrau_lti::feedback::{Input, PadeOrder};
 use serde::{Deserialize, Serialize};
 
-use super::closed_loop::Specs;
+use super::closed_loop::{ControllerShape, Specs};
 
 use super::plane::View;
 use super::state::{GainMode, Root, RootId, RootRole, System};
@@ -108,6 +108,8 @@ pub enum Command {
     SetInput(Input),
     /// The Padé order standing in for a dead time in the loop.
     SetPadeOrder(PadeOrder),
+    /// The loop's controller shape (P, or a PI/PD/PID with Ti, Td, N; its gain is Kp).
+    SetLoopController(ControllerShape),
 }
 
 /// Which markers the step plot draws (kept between runs).

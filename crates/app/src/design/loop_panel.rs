@@ -18,9 +18,10 @@ use degrau_lti::words::feedback::{Loop as P, LoopLine, SpecName};
 use degrau_words::Lang;
 use degrau_words::Localize;
 
-use super::closed_loop::{Found, KP_LIMIT, LoopSettings, Specs};
+use super::closed_loop::{ControllerShape, Found, KP_LIMIT, LoopSettings, Specs};
 use super::commands::Command;
 use super::session::{Saved, Session};
+use degrau_lti::control::Action;
 
 /// Width of a number field (points).
 const FIELD_WIDTH: f32 = 70.0;
@@ -47,6 +48,7 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Vec<Co
     if let Some(a) = &derived.approximant {
         out.extend(approximant(ui, a, settings.pade, look));
     }
+    out.extend(controller_controls(ui, &settings.controller, lang));
     out.extend(gain_controls(ui, session, settings, lang));
     let mut shown = settings.locus;
     let mut complementary = settings.complementary;
@@ -107,6 +109,54 @@ fn approximant(ui: &mut Ui, a: &LoopApproximant, order: PadeOrder, look: &Look) 
         Vec::new()
     } else {
         vec![Command::SetPadeOrder(chosen)]
+    }
+}
+
+/// The controller's shape: P, PI, PD or PID, with Ti, Td and N where it has them (its gain
+/// is Kp below; the locus then runs over K with the controller's zeros and poles in place).
+fn controller_controls(ui: &mut Ui, shape: &ControllerShape, lang: Lang) -> Vec<Command> {
+    let mut next = *shape;
+    ui.horizontal_wrapped(|ui| {
+        ui.label(P::ControllerLabel.get(lang))
+            .on_hover_text(P::ControllerHelp.get(lang));
+        for action in Action::ALL {
+            ui.selectable_value(&mut next.action, action, action.key().to_uppercase());
+        }
+    });
+    let time = Limits::new(1e-6, 1e6, LimitReason::ControllerTime);
+    ui.horizontal_wrapped(|ui| {
+        if next.action.integral()
+            && let Some(ti) = NumberField::new("Ti", next.ti)
+                .limits(time)
+                .width(FIELD_WIDTH)
+                .show(ui, lang)
+        {
+            next.ti = ti;
+        }
+        if next.action.derivative() {
+            if let Some(td) = NumberField::new("Td", next.td)
+                .limits(time)
+                .width(FIELD_WIDTH)
+                .show(ui, lang)
+            {
+                next.td = td;
+            }
+            if let Some(n) = NumberField::new("N", next.n)
+                .limits(Limits::new(1.0, 1000.0, LimitReason::Gain))
+                .width(FIELD_WIDTH)
+                .show(ui, lang)
+            {
+                next.n = n;
+            }
+        }
+    });
+    if next.action != Action::P {
+        ui.add(egui::Label::new(P::ControllerGainIsK.get(lang)).wrap());
+    }
+    if next == *shape {
+        Vec::new()
+    } else {
+        vec![Command::SetLoopController(next)]
     }
 }
 

@@ -266,6 +266,11 @@ impl Session {
                     kept.feedback.pade = order;
                 }
             }
+            Command::SetLoopController(shape) => {
+                if shape.unit_gain().is_ok() {
+                    kept.feedback.controller = shape;
+                }
+            }
         }
     }
 

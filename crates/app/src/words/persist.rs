@@ -161,6 +161,7 @@ impl Localize for LoopProblem {
             (LoopProblem::Pade(PadeOrder { m, n }), Lang::Pt) => {
                 format!("a ordem de Padé ({m}, {n}) não é uma das oferecidas")
             }
+            (LoopProblem::Controller(e), _) => e.text(lang),
         }
     }
 }
@@ -364,6 +365,9 @@ pub fn reasons() -> Vec<Reason> {
         Reason::Options(degrau_lti::LtiError::BadSettlingBand(7.0)),
         Reason::Loop(LoopProblem::Gain(1e300)),
         Reason::Loop(LoopProblem::Pade(PadeOrder { m: 9, n: 1 })),
+        Reason::Loop(LoopProblem::Controller(
+            degrau_lti::control::ControllerError::IntegralTime(0.0),
+        )),
         Reason::View(View {
             center_re: -5e29,
             center_im: 0.0,
