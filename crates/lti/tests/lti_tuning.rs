@@ -187,7 +187,7 @@ const THETA: f64 = 2.0;
 
 #[test]
 fn ziegler_nichols_reaction_curve_on_a_first_order_model() {
-    // Ziegler & Nichols (1942); Seborg et al., Table 12.6: a = Kθ/τ; P 1/a; PI 0.9/a,
+    // Ziegler & Nichols (1942); Seborg et al., ch. 12: a = Kθ/τ; P 1/a; PI 0.9/a,
     // Ti = 3.33θ (θ/0.3); PID 1.2/a, 2θ, θ/2.
     let m = foptd(K, TAU, THETA);
     let a = K * THETA / TAU;
@@ -273,7 +273,7 @@ fn ziegler_nichols_ultimate_cycle() {
 
 #[test]
 fn cohen_coon() {
-    // Cohen & Coon (1953); Seborg et al., Table 12.6, r = θ/τ.
+    // Cohen & Coon (1953); Seborg et al., ch. 12, r = θ/τ.
     let m = foptd(K, TAU, THETA);
     let r = THETA / TAU;
     let g = TAU / (K * THETA);
@@ -305,7 +305,7 @@ fn cohen_coon() {
 
 #[test]
 fn imc() {
-    // Rivera, Morari & Skogestad (1986); Seborg et al., Table 12.1; τc = θ by default.
+    // Rivera, Morari & Skogestad (1986); Seborg et al., ch. 12; τc = θ by default.
     let m = foptd(K, TAU, THETA);
     let t = tune(&m, Rule::Imc, Action::PI, None).unwrap();
     assert_eq!(t.closed_loop_time_constant, Some(THETA));
@@ -394,7 +394,7 @@ fn simc() {
 
 #[test]
 fn amigo() {
-    // Åström & Hägglund, Advanced PID Control (2006), §7.6, eqs. (7.7) and (7.8).
+    // Åström & Hägglund, Advanced PID Control (2006), ch. 7.
     let m = foptd(K, TAU, THETA);
     let (l, t) = (THETA, TAU);
     assert_parameters(
@@ -419,7 +419,7 @@ fn amigo() {
 
 #[test]
 fn lambda() {
-    // Dahlin (1968); Åström & Hägglund (2006) §7.5; λ = τ by default.
+    // Dahlin (1968); Åström & Hägglund (2006); λ = τ by default.
     let m = foptd(K, TAU, THETA);
     assert_parameters(
         "PI",

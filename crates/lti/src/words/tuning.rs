@@ -188,40 +188,41 @@ impl Formula {
 
     /// Where the formula is published.
     pub fn source(&self, lang: Lang) -> String {
-        let seborg = |table: &str| {
+        // The textbook's chapter on PID tuning (its table numbers change between editions).
+        let seborg = || {
             lang.pick(
-                format!("Seborg, Edgar, Mellichamp & Doyle, Process Dynamics and Control, Table {table}"),
-                format!("Seborg, Edgar, Mellichamp & Doyle, Process Dynamics and Control, Tabela {table}"),
+                "Seborg, Edgar, Mellichamp & Doyle, Process Dynamics and Control, ch. 12",
+                "Seborg, Edgar, Mellichamp & Doyle, Process Dynamics and Control, cap. 12",
             )
         };
         match self.rule {
             Rule::ZieglerNicholsOpen => format!(
                 "Ziegler & Nichols (1942), Trans. ASME 64:759–768; {}",
-                seborg("12.6")
+                seborg()
             ),
             Rule::ZieglerNicholsUltimate => format!(
                 "Ziegler & Nichols (1942), Trans. ASME 64:759–768; {}",
-                seborg("12.7")
+                seborg()
             ),
             Rule::CohenCoon => format!(
                 "Cohen & Coon (1953), Trans. ASME 75:827–834; {}",
-                seborg("12.6")
+                seborg()
             ),
             Rule::Imc => format!(
                 "Rivera, Morari & Skogestad (1986), Ind. Eng. Chem. Process Des. Dev. 25:252–265; {}",
-                seborg("12.1")
+                seborg()
             ),
             Rule::Simc => lang.pick(
-                "Skogestad (2003), J. Process Control 13:291–309, equations (27)–(28) and the half rule",
-                "Skogestad (2003), J. Process Control 13:291–309, equações (27)–(28) e a regra da metade",
+                "Skogestad (2003), J. Process Control 13:291–309: the SIMC rules and the half rule",
+                "Skogestad (2003), J. Process Control 13:291–309: as regras SIMC e a regra da metade",
             ).into(),
             Rule::Amigo => lang.pick(
-                "Åström & Hägglund (2004), J. Process Control 14:635–650; Advanced PID Control (2006), §7.6".into(),
-                "Åström & Hägglund (2004), J. Process Control 14:635–650; Advanced PID Control (2006), seção 7.6".into(),
+                "Åström & Hägglund (2004), J. Process Control 14:635–650, and their book Advanced PID Control (2006)".into(),
+                "Åström & Hägglund (2004), J. Process Control 14:635–650, e o livro Advanced PID Control (2006)".into(),
             ),
             Rule::Lambda => lang.pick(
-                "Dahlin (1968), Instruments and Control Systems 41:77–83; Åström & Hägglund, Advanced PID Control (2006), §7.5".into(),
-                "Dahlin (1968), Instruments and Control Systems 41:77–83; Åström & Hägglund, Advanced PID Control (2006), seção 7.5".into(),
+                "Dahlin (1968), Instruments and Control Systems 41:77–83; lambda tuning as in Åström & Hägglund, Advanced PID Control (2006)".into(),
+                "Dahlin (1968), Instruments and Control Systems 41:77–83; a sintonia lambda como em Åström & Hägglund, Advanced PID Control (2006)".into(),
             ),
         }
     }

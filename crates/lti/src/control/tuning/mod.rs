@@ -169,7 +169,7 @@ pub enum Rule {
     Imc,
     /// Skogestad (2003), "simple/Skogestad IMC".
     Simc,
-    /// Åström & Hägglund (2004, 2006 §7.6), approximate M-constrained integral gain
+    /// Åström & Hägglund (2004, 2006, ch. 7), approximate M-constrained integral gain
     /// optimisation.
     Amigo,
     /// Lambda tuning (Dahlin 1968).

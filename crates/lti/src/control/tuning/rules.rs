@@ -53,7 +53,7 @@ fn model_basis(model: &ProcessModel) -> Basis {
 }
 
 /// Ziegler–Nichols reaction curve (Ziegler & Nichols 1942; Seborg et al., Process Dynamics
-/// and Control, Table 12.6; Åström & Hägglund 1995 §4.3), a = K·θ/τ: P Kc = 1/a; PI
+/// and Control, ch. 12; Åström & Hägglund 1995 §4.3), a = K·θ/τ: P Kc = 1/a; PI
 /// Kc = 0.9/a, Ti = θ/0.3 = 3.33·θ (Ziegler and Nichols' 3.33 L, as Seborg prints it; some
 /// texts round it to 3θ); PID Kc = 1.2/a, Ti = 2θ, Td = θ/2. A second-order model is read as
 /// its reaction curve ([`reaction_curve`]).
@@ -99,7 +99,7 @@ pub fn reaction_curve(tau1: f64, tau2: f64, theta: f64) -> (f64, f64) {
     (theta + ti - y / slope, 1.0 / slope)
 }
 
-/// Ziegler–Nichols ultimate cycle (Ziegler & Nichols 1942; Seborg et al., Table 12.7): P
+/// Ziegler–Nichols ultimate cycle (Ziegler & Nichols 1942; Seborg et al., ch. 12): P
 /// Kc = 0.5·Kcr; PI Kc = 0.45·Kcr, Ti = Pcr/1.2; PID Kc = 0.6·Kcr, Ti = Pcr/2, Td = Pcr/8,
 /// with Kcr and Pcr exact with the dead time ([`frequency::ultimate`]).
 pub(super) fn ultimate_rule(model: &ProcessModel, action: Action) -> Result<Found, NotApplicable> {
@@ -123,7 +123,7 @@ fn first_order(model: &ProcessModel) -> (f64, f64, f64) {
     }
 }
 
-/// Cohen–Coon (Cohen & Coon 1953; Seborg et al., Table 12.6), r = θ/τ: P
+/// Cohen–Coon (Cohen & Coon 1953; Seborg et al., ch. 12), r = θ/τ: P
 /// Kc = (τ/(Kθ))(1 + r/3); PI Kc = (τ/(Kθ))(0.9 + r/12), Ti = θ(30 + 3r)/(9 + 20r); PID
 /// Kc = (τ/(Kθ))(4/3 + r/4), Ti = θ(32 + 6r)/(13 + 8r), Td = 4θ/(11 + 2r).
 pub(super) fn cohen_coon(model: &ProcessModel, action: Action) -> Found {
@@ -159,7 +159,7 @@ fn time_constant_or_dead_time(
     }
 }
 
-/// IMC (Rivera, Morari & Skogestad 1986; Seborg et al., Table 12.1), τc = θ by default:
+/// IMC (Rivera, Morari & Skogestad 1986; Seborg et al., ch. 12), τc = θ by default:
 /// FOPTD PI Kc = τ/(K(τc + θ)), Ti = τ; FOPTD PID (the delay as Padé 1/1)
 /// Kc = (τ + θ/2)/(K(τc + θ/2)), Ti = τ + θ/2, Td = τθ/(2τ + θ); SOPTD PID
 /// Kc = (τ1 + τ2)/(K(τc + θ)), Ti = τ1 + τ2, Td = τ1τ2/(τ1 + τ2).
@@ -251,7 +251,7 @@ fn simc_pi(k: f64, tau: f64, theta: f64, tc: f64) -> [f64; 3] {
     [tau / (k * (tc + theta)), tau.min(4.0 * (tc + theta)), 0.0]
 }
 
-/// AMIGO (Åström & Hägglund 2004; Advanced PID Control 2006, §7.6): PI
+/// AMIGO (Åström & Hägglund 2004; Advanced PID Control 2006, ch. 7): PI
 /// Kc = 0.15/K + (0.35 − θτ/(θ + τ)²)·τ/(Kθ), Ti = 0.35θ + 13θτ²/(τ² + 12θτ + 7θ²); PID
 /// Kc = (1/K)(0.2 + 0.45τ/θ), Ti = θ(0.4θ + 0.8τ)/(θ + 0.1τ), Td = 0.5θτ/(0.3θ + τ).
 pub(super) fn amigo(model: &ProcessModel, action: Action) -> Found {
@@ -273,7 +273,7 @@ pub(super) fn amigo(model: &ProcessModel, action: Action) -> Found {
     Found::new(model_basis(model), values)
 }
 
-/// Lambda tuning (Dahlin 1968; Åström & Hägglund 2006, §7.5), λ = τ by default (τ1 for a
+/// Lambda tuning (Dahlin 1968; Åström & Hägglund 2006), λ = τ by default (τ1 for a
 /// second-order model): FOPTD PI Kc = τ/(K(λ + θ)), Ti = τ; SOPTD PID
 /// Kc = (τ1 + τ2)/(K(λ + θ)), Ti = τ1 + τ2, Td = τ1τ2/(τ1 + τ2).
 pub(super) fn lambda(model: &ProcessModel, tc: Option<f64>) -> Found {
