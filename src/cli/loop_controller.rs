@@ -14,9 +14,10 @@ use clap::Args;
 use serde::Serialize;
 
 use crate::lti::TransferFunction;
+use crate::lti::control::frequency::{closed_loop_unstable_roots, max_sensitivity};
 use crate::lti::control::{
     Action, Controller, ControllerError, DelayLoopError, Horizon, LoopInput, LoopMetrics,
-    LoopResponse, loop_metrics, loop_response,
+    LoopResponse, Sensitivity, loop_metrics, loop_response,
 };
 use crate::lti::feedback::Limit;
 use crate::lti::parse::parse_real_list;
@@ -194,6 +195,11 @@ pub struct ControllerLoop {
     pub controller: Controller,
     pub response: LoopResponse,
     pub metrics: LoopMetrics,
+    /// The closed loop's roots in the right half-plane (exact with the dead time); None
+    /// when they cannot be counted (a root on the imaginary axis).
+    pub unstable_roots: Option<usize>,
+    /// Ms and where, when the loop is stable.
+    pub sensitivity: Option<Sensitivity>,
     /// y at the `--at` instants.
     pub samples: Option<Samples>,
 }
@@ -226,11 +232,19 @@ pub fn analyse(args: &LoopArgs, action: Action) -> Result<ControllerLoop, LoopEr
             Some(Samples::checked(t, y)?)
         }
     };
+    let unstable_roots = closed_loop_unstable_roots(&plant, &controller).ok();
+    let sensitivity = if unstable_roots == Some(0) {
+        max_sensitivity(&plant, &controller)
+    } else {
+        None
+    };
     Ok(ControllerLoop {
         plant,
         controller,
         response,
         metrics,
+        unstable_roots,
+        sensitivity,
         samples,
     })
 }
@@ -317,6 +331,11 @@ pub struct ControllerLoopReport {
     pub metrics: MetricKeys,
     /// Whether the response settled within the time computed.
     pub settled: bool,
+    /// The closed loop's roots in the right half-plane (null when a root lies on the
+    /// imaginary axis and they cannot be counted).
+    pub unstable_roots: Option<usize>,
+    /// Ms = max |1/(1 + L(jω))|, null when the loop is not stable.
+    pub ms: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub samples: Option<Samples>,
 }
@@ -330,6 +349,8 @@ impl ControllerLoopReport {
             delay: a.plant.delay(),
             metrics: MetricKeys::new(&a.metrics),
             settled: a.response.settled,
+            unstable_roots: a.unstable_roots,
+            ms: a.sensitivity.map(|s| s.ms),
             samples: a.samples.clone(),
         }
     }
@@ -424,6 +445,11 @@ pub fn human_report(a: &ControllerLoop, lang: Lang) -> String {
     }
     lines.push(String::new());
     lines.extend(controller_lines(&a.controller, lang));
+    lines.push(words::stability_line(
+        a.unstable_roots,
+        a.sensitivity.map(|s| (lang.num(s.ms, 4), lang.num(s.w, 4))),
+        lang,
+    ));
     lines.push(String::new());
     lines.push(words::response_heading(a.response.input, lang));
     lines.extend(aligned(metric_rows(&a.metrics, a.response.input, lang)));

@@ -200,6 +200,36 @@ pub fn at_time(value: &str, time: &str, lang: Lang) -> String {
     )
 }
 
+/// The closed loop's stability and its maximum sensitivity (`ms`, `w` as text).
+pub fn stability_line(unstable: Option<usize>, ms: Option<(String, String)>, lang: Lang) -> String {
+    match (unstable, ms, lang) {
+        (Some(0), Some((ms, w)), Lang::En) => format!(
+            "Closed loop: stable (no root in the right half-plane); Ms = {ms}, the peak of |1/(1 + L(jω))|, at ω = {w} rad/s"
+        ),
+        (Some(0), Some((ms, w)), Lang::Pt) => format!(
+            "Malha fechada: estável (nenhuma raiz no semiplano direito); Ms = {ms}, o pico de |1/(1 + L(jω))|, em ω = {w} rad/s"
+        ),
+        (Some(0), None, _) => lang
+            .pick(
+                "Closed loop: stable (no root in the right half-plane)",
+                "Malha fechada: estável (nenhuma raiz no semiplano direito)",
+            )
+            .to_string(),
+        (Some(n), _, Lang::En) => {
+            format!("Closed loop: unstable, {n} roots in the right half-plane")
+        }
+        (Some(n), _, Lang::Pt) => {
+            format!("Malha fechada: instável, {n} raízes no semiplano direito")
+        }
+        (None, _, _) => lang
+            .pick(
+                "Closed loop: at the limit of stability (a root on the imaginary axis)",
+                "Malha fechada: no limite da estabilidade (uma raiz no eixo imaginário)",
+            )
+            .to_string(),
+    }
+}
+
 /// Whether the response settled, computed up to `end` (written, s).
 pub fn settled_line(settled: bool, end: &str, lang: Lang) -> String {
     match (settled, lang) {
@@ -341,6 +371,18 @@ pub fn messages() -> Vec<Message> {
         response_heading(LoopInput::Load, l)
     }));
     all.push(Message::said("control::at_time", |l| at_time("1", "2", l)));
+    for (id, roots, ms) in [
+        (
+            "control::stable_line",
+            Some(0),
+            Some(("1.6".to_string(), "0.3".to_string())),
+        ),
+        ("control::stable_line_no_ms", Some(0), None),
+        ("control::unstable_line", Some(2), None),
+        ("control::marginal_line", None, None),
+    ] {
+        all.push(Message::said(id, |l| stability_line(roots, ms.clone(), l)));
+    }
     all.push(Message::said("control::settled_line", |l| {
         settled_line(true, "10", l)
     }));

@@ -856,3 +856,38 @@ fn a_controller_missing_a_parameter_is_refused_in_both_languages() {
         assert_eq!(out.status.code(), Some(2), "{args:?}");
     }
 }
+
+#[test]
+fn the_controllers_loop_says_whether_it_is_stable_and_its_ms() {
+    // 1/(10s + 1)·e^{−2s}: P control is stable below Kcr = 8.5024, exactly.
+    let v = controller_loop(&["--controller", "p", "--kc", "8.4"]);
+    assert_eq!(v["unstable_roots"], 0);
+    let ms = num(&v["ms"]);
+    // Near the ultimate gain L(jωcr) ≈ −8.4/8.5024: Ms ≥ 1/(1 − 8.4/8.5024) ≈ 83.
+    assert!(ms > 80.0, "{ms}");
+    let v = controller_loop(&["--controller", "p", "--kc", "8.6"]);
+    assert_eq!(v["unstable_roots"], 2);
+    assert!(v["ms"].is_null());
+    let out = degrau(&[
+        "--lang",
+        "pt",
+        "loop",
+        "--num",
+        "1",
+        "--den",
+        "10,1",
+        "--delay",
+        "2",
+        "--controller",
+        "pi",
+        "--kc",
+        "2.5",
+        "--ti",
+        "10",
+    ]);
+    assert!(
+        stdout(&out).contains("Malha fechada: estável"),
+        "{}",
+        stdout(&out)
+    );
+}
