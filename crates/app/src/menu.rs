@@ -56,6 +56,11 @@ impl DegrauApp {
                 Mode::LeastSquares,
                 crate::words::lsq_app::Phrase::ModeName.get(lang),
             );
+            ui.selectable_value(
+                &mut mode,
+                Mode::Tune,
+                crate::words::tune::Tune::ModeName.get(lang),
+            );
             if mode != self.saved.mode {
                 out.push(Command::SetMode(mode));
             }
