@@ -32,7 +32,7 @@ fn tune_app(mut saved: Saved) -> Harness<'static, DegrauApp> {
     harness(DegrauApp::new(saved), [1360.0, 860.0])
 }
 
-/// The words painted under the plot named `title` (its metrics), in reading order.
+/// The words painted beside the plot named `title` (its metrics), in reading order.
 fn metrics_under(h: &Harness<'_, DegrauApp>, title: &str) -> Vec<String> {
     let plot = h
         .get_all_by_role(egui::accesskit::Role::Canvas)
@@ -42,7 +42,7 @@ fn metrics_under(h: &Harness<'_, DegrauApp>, title: &str) -> Vec<String> {
     let mut texts: Vec<(String, egui::Rect)> = kit::painted_texts(h)
         .into_iter()
         .filter(|(_, r)| {
-            r.top() > plot.bottom() && (plot.left()..=plot.right()).contains(&r.center().x)
+            r.left() > plot.right() && (plot.top()..=plot.bottom()).contains(&r.center().y)
         })
         .collect();
     texts.sort_by(|a, b| {
@@ -98,7 +98,7 @@ fn a_fitted_tclab_model_is_tuned_and_its_responses_follow_ti() {
     h.run_steps(1);
     kit::wait_for(&mut h, |h| h.query_by_label("Fitted P1D").is_some());
     let fitted = h.state().ident.report.clone().expect("a fit").model;
-    h.get_by_label("Tune a controller").click();
+    h.get_by_label("Tune a controller").click_accesskit();
     h.run_steps(3);
     assert_eq!(h.state().saved.mode, Mode::Tune);
     h.get_by_label_contains("From the Identify mode: the fitted P1D");

@@ -12,7 +12,7 @@ use crate::tune::session::Refusal;
 degrau_words::phrases! {
     /// The labels the Tune mode draws.
     pub enum Tune {
-        ModeName => ("Controller tuning", "Sintonia de controladores"),
+        ModeName => ("Tuning", "Sintonia"),
         TuneButton => ("Tune a controller", "Sintonizar um controlador"),
         TuneButtonHelp => (
             "Open the fitted first- or second-order model with dead time in the Tune mode",
