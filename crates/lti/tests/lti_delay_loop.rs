@@ -407,3 +407,78 @@ fn the_metrics_agree_with_the_fine_integration() {
         }
     }
 }
+
+mod table {
+    use degrau_lti::control::{
+        Action, Controller, ProcessModel, RowError, Rule, rule_table, tuned_loop,
+    };
+
+    #[test]
+    fn the_rule_table_sets_every_rule_side_by_side_with_both_responses() {
+        // K = 1, τ = 10, θ = 2: SIMC (Skogestad 2003, τc = θ) gives Kc = τ/(K(τc + θ)) = 2.5
+        // and Ti = min(τ, 4(τc + θ)) = 10.
+        let model = ProcessModel::foptd(1.0, 10.0, 2.0).unwrap();
+        let rows = rule_table(&model, Action::PI, None);
+        assert_eq!(rows.len(), Rule::ALL.len());
+        for row in &rows {
+            let (tuning, tuned) = row
+                .result
+                .as_ref()
+                .unwrap_or_else(|e| panic!("{:?}: {e}", row.rule));
+            assert!(tuned.is_stable(), "{:?}", row.rule);
+            let sp = tuned.setpoint_metrics;
+            let load = tuned.load_metrics;
+            assert_eq!(sp.final_value, Some(1.0), "{:?}", row.rule);
+            assert_eq!(load.final_value, Some(0.0), "{:?}", row.rule);
+            assert!(sp.iae.is_some() && load.iae.is_some() && sp.settling_time.is_some());
+            // The load's peak deviation lies between 0 and the open loop's K = 1.
+            let peak = load.peak.unwrap();
+            assert!(
+                peak.value > 0.0 && peak.value < 1.0,
+                "{:?}: {peak:?}",
+                row.rule
+            );
+            let ms = tuned.ms.unwrap();
+            assert!((1.0..4.0).contains(&ms), "{:?}: Ms {ms}", row.rule);
+            assert_eq!(tuning.rule, row.rule);
+        }
+        let simc = rows.iter().find(|r| r.rule == Rule::Simc).unwrap();
+        let (tuning, _) = simc.result.as_ref().unwrap();
+        assert!((tuning.controller.kc - 2.5).abs() < 1e-12);
+        assert!((tuning.controller.ti - 10.0).abs() < 1e-12);
+        // Ziegler–Nichols' quarter decay is the most aggressive: its load peak is the
+        // smallest and its overshoot larger than SIMC's.
+        let zn = rows
+            .iter()
+            .find(|r| r.rule == Rule::ZieglerNicholsOpen)
+            .unwrap();
+        let (_, zn) = zn.result.as_ref().unwrap();
+        let (_, simc) = simc.result.as_ref().unwrap();
+        assert!(zn.setpoint_metrics.overshoot > simc.setpoint_metrics.overshoot);
+        assert!(zn.ms > simc.ms);
+    }
+
+    #[test]
+    fn a_rule_that_does_not_apply_says_why_in_its_row() {
+        let model = ProcessModel::soptd(2.0, 8.0, 3.0, 1.0).unwrap();
+        let rows = rule_table(&model, Action::PID, None);
+        let cohen = rows.iter().find(|r| r.rule == Rule::CohenCoon).unwrap();
+        assert!(matches!(cohen.result, Err(RowError::NotApplicable(_))));
+        let simc = rows.iter().find(|r| r.rule == Rule::Simc).unwrap();
+        assert!(simc.result.as_ref().is_ok_and(|(_, t)| t.is_stable()));
+    }
+
+    #[test]
+    fn past_the_ultimate_gain_the_loop_is_unstable_and_has_no_metrics() {
+        let g = ProcessModel::foptd(1.0, 10.0, 2.0)
+            .unwrap()
+            .transfer_function()
+            .unwrap();
+        let t = tuned_loop(&g, &Controller::proportional(9.0).unwrap()).unwrap();
+        assert_eq!(t.unstable_roots, Some(2));
+        assert_eq!((t.ms, t.setpoint_metrics.overshoot), (None, None));
+        let t = tuned_loop(&g, &Controller::proportional(8.0).unwrap()).unwrap();
+        assert!(t.is_stable());
+        assert!(t.setpoint_metrics.overshoot.unwrap() > 50.0);
+    }
+}

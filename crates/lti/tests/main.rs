@@ -10,3 +10,4 @@ mod lti_feedback;
 mod lti_known_answers;
 mod lti_locus;
 mod lti_properties;
+mod lti_tuning;

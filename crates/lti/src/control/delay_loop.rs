@@ -292,12 +292,18 @@ fn coefficient_map(nodes: &[f64; NODES]) -> DMatrix<f64> {
         .unwrap_or_else(|| DMatrix::zeros(NODES, NODES))
 }
 
-/// Per node: s_i = Φ_i·s0 + Q_i·w_nodes + g_i, flat row-major.
+/// Per node: s_i = Φ_i·s0 + Q_i·w_nodes + g_i, each matrix flat row-major.
 #[derive(Debug, Clone)]
 struct NodeMaps {
-    phi: Vec<DMatrix<f64>>,
-    q: Vec<DMatrix<f64>>,
+    phi: Vec<Vec<f64>>,
+    q: Vec<Vec<f64>>,
     g: Vec<Vec<f64>>,
+}
+
+fn row_major(m: &DMatrix<f64>) -> Vec<f64> {
+    (0..m.nrows())
+        .flat_map(|r| (0..m.ncols()).map(move |c| m[(r, c)]))
+        .collect()
 }
 
 fn node_maps(sys: &LoopSystem, nodes: &[f64; NODES]) -> NodeMaps {
@@ -310,8 +316,8 @@ fn node_maps(sys: &LoopSystem, nodes: &[f64; NODES]) -> NodeMaps {
     };
     for &tau in nodes.iter() {
         let p = propagator(&aug, sys.n, tau);
-        maps.q.push(&p.gamma * &vinv);
-        maps.phi.push(p.phi);
+        maps.q.push(row_major(&(&p.gamma * &vinv)));
+        maps.phi.push(row_major(&p.phi));
         maps.g.push(p.g);
     }
     maps
@@ -332,8 +338,8 @@ pub struct LoopResponse {
     y: Vec<f64>,
     /// v (the controller's output plus the load) at the nodes, NODES per step.
     v: Vec<f64>,
-    /// The states at each step's start.
-    starts: Vec<Vec<f64>>,
+    /// The states at each step's start, n per step.
+    starts: Vec<f64>,
     /// Steps per dead time (0 without a delay).
     per_delay: usize,
     sys: LoopSystem,
@@ -461,6 +467,7 @@ impl LoopResponse {
     fn run(&mut self, maps: &NodeMaps, horizon: Horizon, limit: f64) {
         let n = self.sys.n;
         let mut s = vec![0.0; n];
+        let mut si = vec![0.0; n];
         let mut w = [0.0; NODES];
         let mut monitor = Settling::new(self.final_value, self.final_input, self.delay);
         let mut j = 0usize;
@@ -470,24 +477,20 @@ impl LoopResponse {
                 break;
             }
             self.fill_forcing(j, &mut w);
-            self.starts.push(s.clone());
-            let mut end = vec![0.0; n];
+            self.starts.extend_from_slice(&s);
             for i in 0..NODES {
-                let si = if i == 0 {
-                    s.clone()
+                if i == 0 {
+                    si.copy_from_slice(&s);
                 } else {
-                    apply(&maps.phi[i], &s, &maps.q[i], &w, &maps.g[i])
-                };
+                    apply(&maps.phi[i], &s, &maps.q[i], &w, &maps.g[i], &mut si);
+                }
                 let y = dot(&self.sys.y, &si) + self.sys.dp * w[i] + self.sys.y0;
                 let v = self.v_of(&si, w[i]);
                 self.y.push(y);
                 self.v.push(v);
                 monitor.see(t0 + self.offsets[i], y, v);
-                if i == NODES - 1 {
-                    end = si;
-                }
             }
-            s = end;
+            s.copy_from_slice(&si);
             j += 1;
             if horizon == Horizon::Auto && monitor.done(t0 + self.step) {
                 self.settled = true;
@@ -524,18 +527,18 @@ impl LoopResponse {
 
     /// The time computed up to (s).
     pub fn end(&self) -> f64 {
-        self.starts.len() as f64 * self.step
+        self.steps() as f64 * self.step
     }
 
     /// Number of steps computed.
     pub fn steps(&self) -> usize {
-        self.starts.len()
+        self.y.len() / NODES
     }
 
     /// The node times and outputs (for plots: about 28 points per step, denser where the
     /// nodes cluster at the steps' ends).
     pub fn samples(&self) -> (Vec<f64>, Vec<f64>) {
-        let t = (0..self.starts.len())
+        let t = (0..self.steps())
             .flat_map(|j| {
                 let t0 = j as f64 * self.step;
                 self.offsets.iter().map(move |o| t0 + o)
@@ -564,19 +567,20 @@ impl LoopResponse {
                 0.0
             };
         }
-        let steps = self.starts.len();
+        let steps = self.steps();
         if steps == 0 {
             return 0.0;
         }
         let j = ((t / self.step).floor() as usize).min(steps - 1);
         let tau = (t - j as f64 * self.step).min(self.step);
+        let n = self.sys.n;
         let mut w = [0.0; NODES];
         self.fill_forcing(j, &mut w);
         let aug = augmented(&self.sys);
         let p = propagator(&aug, self.sys.n, tau);
         let coeffs = &coefficient_map(&self.offsets) * nalgebra::DVector::from_column_slice(&w);
         let gc = &p.gamma * &coeffs;
-        let state = &p.phi * nalgebra::DVector::from_column_slice(&self.starts[j])
+        let state = &p.phi * nalgebra::DVector::from_column_slice(&self.starts[j * n..(j + 1) * n])
             + gc
             + nalgebra::DVector::from_vec(p.g);
         let mut y = self.sys.y0 + dot(&self.sys.y, state.as_slice());
@@ -644,19 +648,10 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-/// Φ·s + Q·w + g.
-fn apply(phi: &DMatrix<f64>, s: &[f64], q: &DMatrix<f64>, w: &[f64; NODES], g: &[f64]) -> Vec<f64> {
+/// out = Φ·s + Q·w + g (Φ, Q flat row-major).
+fn apply(phi: &[f64], s: &[f64], q: &[f64], w: &[f64; NODES], g: &[f64], out: &mut [f64]) {
     let n = s.len();
-    (0..n)
-        .map(|r| {
-            let mut acc = g[r];
-            for k in 0..n {
-                acc += phi[(r, k)] * s[k];
-            }
-            for (k, wk) in w.iter().enumerate() {
-                acc += q[(r, k)] * wk;
-            }
-            acc
-        })
-        .collect()
+    for (r, o) in out.iter_mut().enumerate() {
+        *o = g[r] + dot(&phi[r * n..(r + 1) * n], s) + dot(&q[r * NODES..(r + 1) * NODES], w);
+    }
 }

@@ -291,26 +291,83 @@ const GAUSS: [(f64, f64); 8] = [
 
 /// ∫|e| and ∫t·|e| over every step, e = reference − y, split where e changes sign.
 fn error_integrals(pieces: &[Piece], reference: f64) -> (f64, f64) {
+    let Some(first) = pieces.first() else {
+        return (0.0, 0.0);
+    };
+    let basis = gauss_basis(first);
     let (mut iae, mut itae) = (0.0, 0.0);
     for p in pieces {
-        let e = |t: f64| reference - p.eval(t);
-        let mut cuts = vec![p.time(0)];
-        for i in 0..p.values.len() - 1 {
-            let (a, b) = (reference - p.values[i], reference - p.values[i + 1]);
-            if a * b < 0.0 {
-                cuts.push(crossing(e, p.time(i), p.time(i + 1)));
-            }
+        let signs_change = p
+            .values
+            .windows(2)
+            .any(|v| (reference - v[0]) * (reference - v[1]) < 0.0);
+        let (a, b) = if signs_change {
+            split_integrals(p, reference)
+        } else {
+            whole_integrals(p, reference, &basis)
+        };
+        iae += a;
+        itae += b;
+    }
+    (iae, itae)
+}
+
+/// The interpolation basis of a step at its Gauss points: row g, the weights of the node
+/// values giving y there (the same for every step: the nodes sit at the same offsets).
+fn gauss_basis(p: &Piece) -> Vec<Vec<f64>> {
+    let h = p.offsets[p.offsets.len() - 1];
+    GAUSS
+        .iter()
+        .map(|&(x, _)| {
+            let t = p.t0 + h * (1.0 + x) / 2.0;
+            (0..p.values.len())
+                .map(|i| {
+                    let mut unit = vec![0.0; p.values.len()];
+                    unit[i] = 1.0;
+                    Piece {
+                        values: &unit,
+                        ..*p
+                    }
+                    .eval(t)
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The integrals over a step where e keeps its sign.
+fn whole_integrals(p: &Piece, reference: f64, basis: &[Vec<f64>]) -> (f64, f64) {
+    let h = p.offsets[p.offsets.len() - 1];
+    let half = h / 2.0;
+    let (mut iae, mut itae) = (0.0, 0.0);
+    for ((x, wt), row) in GAUSS.iter().zip(basis) {
+        let y: f64 = row.iter().zip(p.values).map(|(l, v)| l * v).sum();
+        let v = (reference - y).abs();
+        iae += wt * half * v;
+        itae += wt * half * (p.t0 + half * (1.0 + x)) * v;
+    }
+    (iae, itae)
+}
+
+/// The integrals over a step where e changes sign: cut at each change.
+fn split_integrals(p: &Piece, reference: f64) -> (f64, f64) {
+    let e = |t: f64| reference - p.eval(t);
+    let mut cuts = vec![p.time(0)];
+    for i in 0..p.values.len() - 1 {
+        let (a, b) = (reference - p.values[i], reference - p.values[i + 1]);
+        if a * b < 0.0 {
+            cuts.push(crossing(e, p.time(i), p.time(i + 1)));
         }
-        cuts.push(p.time(p.values.len() - 1));
-        for w in cuts.windows(2) {
-            let (a, b) = (w[0], w[1]);
-            let (mid, half) = ((a + b) / 2.0, (b - a) / 2.0);
-            for (x, wt) in GAUSS {
-                let t = mid + half * x;
-                let v = e(t).abs();
-                iae += wt * half * v;
-                itae += wt * half * t * v;
-            }
+    }
+    cuts.push(p.time(p.values.len() - 1));
+    let (mut iae, mut itae) = (0.0, 0.0);
+    for w in cuts.windows(2) {
+        let (mid, half) = ((w[0] + w[1]) / 2.0, (w[1] - w[0]) / 2.0);
+        for (x, wt) in GAUSS {
+            let t = mid + half * x;
+            let v = e(t).abs();
+            iae += wt * half * v;
+            itae += wt * half * t * v;
         }
     }
     (iae, itae)

@@ -3,7 +3,7 @@
 //! responses and metrics, in English and Brazilian Portuguese (controlador, sintonia,
 //! perturbação de carga, tempo integral, tempo derivativo, …).
 
-use crate::control::{ControllerError, DelayLoopError};
+use crate::control::{ControllerError, DelayLoopError, RowError};
 
 #[cfg(test)]
 use degrau_words::Message;
@@ -88,6 +88,16 @@ impl Localize for DelayLoopError {
                     lang.num(fastest, 4)
                 ),
             ),
+        }
+    }
+}
+
+impl Localize for RowError {
+    fn text(&self, lang: Lang) -> String {
+        match self {
+            RowError::NotApplicable(e) => e.text(lang),
+            RowError::Loop(e) => e.text(lang),
+            RowError::Model(e) => e.text(lang),
         }
     }
 }

@@ -305,6 +305,15 @@ degrau_words::phrases! {
             "Sem ganho crítico: o lugar das raízes nunca cruza o eixo jω para K > 0"
         ),
         LocusHeading => ("Root locus (K, closed-loop poles):", "Lugar das raízes (K, polos de malha fechada):"),
+        ControllerLabel => ("Controller:", "Controlador:"),
+        ControllerHelp => (
+            "P, or a PI, PD or PID of fixed Ti, Td and filter N whose gain Kc is Kp: the root locus then follows K with the controller's zeros and poles in place",
+            "P, ou um PI, PD ou PID de Ti, Td e filtro N fixos cujo ganho Kc é o Kp: o lugar das raízes segue então K com os zeros e polos do controlador no lugar"
+        ),
+        ControllerGainIsK => (
+            "Kc = Kp below (the locus's K). With a dead time this loop uses Padé; the Tune mode computes it with the exact dead time.",
+            "Kc = Kp abaixo (o K do lugar das raízes). Com tempo morto esta malha usa Padé; o modo Sintonia a calcula com o atraso exato."
+        ),
         ClosedLoopHeading => ("Closed loop:", "Malha fechada:"),
         LoopHeading => ("Closed loop", "Malha fechada"),
         CoefficientsHelp => (

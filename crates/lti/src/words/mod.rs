@@ -9,6 +9,7 @@ pub mod expr;
 pub mod feedback;
 pub mod lti;
 pub mod step;
+pub mod tuning;
 
 /// Every message of the lti crate: its catalogues' phrases and an example of each fact it
 /// says (errors, metrics, approximations, loops, discrete models, y(t)). A new catalogue or fact adds its line here.
@@ -22,6 +23,7 @@ pub fn messages() -> Vec<degrau_words::Message> {
     all.extend(discrete::messages());
     all.extend(expr::messages());
     all.extend(control::messages());
+    all.extend(tuning::messages());
     all
 }
 
