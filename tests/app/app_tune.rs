@@ -9,6 +9,7 @@ use degrau::app::tune::model::ModelKind;
 use degrau::app::{DegrauApp, Mode, Saved};
 use degrau::ident::model::Param as FitParam;
 use degrau::lti::control::Action;
+use degrau::text::Lang;
 use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
@@ -116,6 +117,30 @@ fn a_fitted_tclab_model_is_tuned_and_its_responses_follow_ti() {
             "{title}: {texts:?}"
         );
     }
+    // The SIMC row: its Kc is Skogestad's τ/(K(τc + θ)) with τc = θ for the fitted model.
+    let (k, tau, theta) = (model.k, model.tau1, model.theta);
+    let kc = tau / (k * 2.0 * theta);
+    let ti = tau.min(8.0 * theta);
+    let shown = Lang::En.num(kc, 3);
+    assert!(
+        h.query_all_by_label(&shown).next().is_some(),
+        "SIMC's Kc {shown} in the table"
+    );
+    h.get_by_label("SIMC").click_accesskit();
+    h.run_steps(3);
+    let c = h.state().saved.tune.controller;
+    assert!((c.kc - kc).abs() < 1e-9 * kc.abs(), "{} vs {kc}", c.kc);
+    assert!((c.ti - ti).abs() < 1e-9 * ti, "{} vs {ti}", c.ti);
+    h.get_by_label("SIMC (Skogestad's IMC)");
+    h.get_by_label_contains("Formula: PI: Kc = ");
+    h.get_by_label_contains("Source: Skogestad (2003)");
+    for title in [SETPOINT, LOAD] {
+        let texts = metrics_under(&h, title);
+        assert!(
+            texts.iter().any(|t| t == "Overshoot (%)"),
+            "{title}: {texts:?}"
+        );
+    }
     let load_before = metrics_under(&h, LOAD);
     let iae_before = metric(&h, LOAD, "IAE, integral of |e|");
     // Ti typed: the load response's metrics change.
@@ -153,6 +178,31 @@ fn a_zero_ti_is_refused_with_a_reason_and_nothing_is_lost() {
     kit::type_number(&mut h, "Integral time Ti (s)", 0, "15");
     assert_eq!(h.state().saved.tune.controller.ti, 15.0);
     assert!(h.query_by_label_contains("Refused:").is_none());
+}
+
+#[test]
+fn a_typed_model_shows_each_rules_controller_and_a_rule_loads_it() {
+    let mut h = tune_app(Saved::default());
+    kit::type_number(&mut h, "Process gain K", 0, "2");
+    kit::type_number(&mut h, "Time constant τ (s)", 0, "12");
+    kit::type_number(&mut h, "Dead time θ (s)", 0, "3");
+    // SIMC's PI: Kc = τ/(K(τc + θ)) = 12/(2·6) = 1, Ti = min(τ, 4(τc + θ)) = 12.
+    let simc = h.state().tune.table.iter().find(|r| r.rule.key() == "simc");
+    let (tuning, _) = simc
+        .expect("a SIMC row")
+        .result
+        .as_ref()
+        .expect("it applies");
+    assert!((tuning.controller.kc - 1.0).abs() < 1e-12);
+    h.get_by_label("SIMC").click_accesskit();
+    h.run_steps(3);
+    let c = h.state().saved.tune.controller;
+    assert!((c.kc - 1.0).abs() < 1e-12 && (c.ti - 12.0).abs() < 1e-12);
+    assert_eq!(h.state().saved.tune.rule.as_deref(), Some("simc"));
+    // PD has no rule: each row says why.
+    h.get_by_label("PD").click();
+    h.run_steps(3);
+    assert!(h.query_all_by_label_contains("does not apply:").count() >= 7);
 }
 
 #[test]
@@ -225,7 +275,9 @@ fn the_tune_mode_fits_every_classroom_size() {
     saved.mode = Mode::Tune;
     saved.tune.model.kind = ModelKind::Soptd;
     saved.tune.controller.action = Action::PID;
+    saved.tune.rule = Some("simc".into());
     let mut h = harness(DegrauApp::new(saved), [1600.0, 900.0]);
+    h.get_by_label_contains("Source: Skogestad (2003)");
     kit::type_number(&mut h, "Integral time Ti (s)", 0, "0");
     h.get_by_label_contains("Refused:");
     let mut problems = crate::app_classroom::problems_everywhere(&mut h, "Tune", 2);

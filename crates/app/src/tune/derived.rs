@@ -2,10 +2,7 @@
 //! responses with their metrics (the dead time exact, no Padé). A few milliseconds: done on
 //! the UI thread when the model or the controller changed, never every frame.
 
-use degrau_lti::control::{
-    ControllerError, DelayLoopError, Horizon, LoopInput, LoopMetrics, LoopResponse, loop_metrics,
-    loop_response,
-};
+use degrau_lti::control::{ControllerError, DelayLoopError, LoopMetrics, LoopResponse, tuned_loop};
 
 use super::model::{ModelProblem, ProcessSettings};
 use super::session::ControllerSettings;
@@ -32,6 +29,8 @@ pub struct Response {
 pub struct LoopView {
     pub setpoint: Response,
     pub load: Response,
+    /// The maximum sensitivity Ms (none: the loop is not stable).
+    pub ms: Option<f64>,
 }
 
 /// Why there are no responses.
@@ -52,9 +51,8 @@ pub fn compute(
         .transfer_function()
         .ok_or(LoopTrouble::Model(ModelProblem::Gain(model.k)))?;
     let c = controller.controller().map_err(LoopTrouble::Controller)?;
-    let run = |input| loop_response(&plant, &c, input, Horizon::Auto).map_err(LoopTrouble::Loop);
-    let (setpoint, load) = (run(LoopInput::Setpoint)?, run(LoopInput::Load)?);
-    let (ms, ml) = (loop_metrics(&setpoint), loop_metrics(&load));
+    let tuned = tuned_loop(&plant, &c).map_err(LoopTrouble::Loop)?;
+    let (ms, ml) = (tuned.setpoint_metrics, tuned.load_metrics);
     // Both plots on one time scale: until a while after the later one settled.
     let settled = [ms.settling_time, ml.settling_time];
     let until = match settled {
@@ -62,8 +60,9 @@ pub fn compute(
         _ => f64::INFINITY,
     };
     Ok(LoopView {
-        setpoint: response(&setpoint, ms, until),
-        load: response(&load, ml, until),
+        setpoint: response(&tuned.setpoint, ms, until),
+        load: response(&tuned.load, ml, until),
+        ms: tuned.ms,
     })
 }
 
@@ -87,7 +86,7 @@ fn response(r: &LoopResponse, metrics: LoopMetrics, until: f64) -> Response {
     Response {
         curve,
         metrics,
-        settled: r.settled,
+        settled: r.settled && metrics != LoopMetrics::NONE,
         shown_until: until,
     }
 }

@@ -5,7 +5,7 @@
 //!
 //! The mode is a [`Session`] (the derived data; no egui) over its settings ([`Saved`], kept
 //! in the app's state file), and views that read them and return [`Command`]s: [`panel`]
-//! (the left side: the model, the controller, τc and the rules) and [`plots`] (the centre:
+//! (the left side: the model, the controller, τc and the rules' [`table`]) and [`plots`] (the centre:
 //! both responses with their [`metrics`]). The app applies each command with
 //! [`Session::apply`] once per frame, after the views.
 
@@ -16,6 +16,7 @@ pub mod model;
 pub mod panel;
 pub mod plots;
 pub mod session;
+pub mod table;
 mod tc_field;
 
 use eframe::egui::{self, Ui};

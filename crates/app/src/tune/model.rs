@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use degrau_ident::model::{Model as Fitted, Param as FitParam};
 use degrau_lti::TransferFunction;
+use degrau_lti::control::{ModelError, ProcessModel};
 
 /// Which of the two models.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -119,6 +120,14 @@ impl ProcessSettings {
         TransferFunction::from_coeffs(&[self.k], &den)
             .and_then(|tf| tf.with_delay(self.theta))
             .ok()
+    }
+
+    /// The lti crate's model, which the tuning rules read.
+    pub fn process_model(&self) -> Result<ProcessModel, ModelError> {
+        match self.kind {
+            ModelKind::Foptd => ProcessModel::foptd(self.k, self.tau1, self.theta),
+            ModelKind::Soptd => ProcessModel::soptd(self.k, self.tau1, self.tau2, self.theta),
+        }
     }
 
     /// The model of a fit of the Identify mode: P1D (or P1) as FOPTD, P2D (or P2) as

@@ -24,6 +24,8 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look, out: &mut
     controller_section(ui, session, kept, look, out);
     ui.separator();
     super::tc_field::show(ui, session, kept, look, out);
+    ui.separator();
+    super::table::show(ui, session, kept, look, out);
 }
 
 /// The refusal `matches` picks, in the error colour.

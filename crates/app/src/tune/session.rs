@@ -7,7 +7,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use degrau_lti::control::{Action, Controller, ControllerError, controller::DEFAULT_FILTER};
+use degrau_lti::control::{
+    Action, Controller, ControllerError, RuleRow, controller::DEFAULT_FILTER, rule_table,
+};
 
 use super::commands::{Command, Param};
 use super::derived::{LoopTrouble, LoopView, compute};
@@ -130,6 +132,10 @@ pub struct Session {
     computed: Option<(ProcessSettings, ControllerSettings)>,
     /// How many times the loop was computed (a test sees it is not every frame).
     pub computations: usize,
+    /// Every rule's row for the model, the action and τc (none: the model is no model).
+    pub table: Vec<RuleRow>,
+    /// The model, action and τc the table was computed from.
+    table_inputs: Option<(ProcessSettings, Action, Option<f64>)>,
 }
 
 impl Session {
@@ -142,6 +148,15 @@ impl Session {
 
     /// Recomputes the loop when the model or the controller changed (else nothing).
     pub fn refresh(&mut self, kept: &Saved) {
+        let table_inputs = (kept.model, kept.controller.action, kept.tc);
+        if self.table_inputs != Some(table_inputs) {
+            self.table = kept
+                .model
+                .process_model()
+                .map(|m| rule_table(&m, kept.controller.action, kept.tc))
+                .unwrap_or_default();
+            self.table_inputs = Some(table_inputs);
+        }
         let inputs = (kept.model, kept.controller);
         if self.computed == Some(inputs) {
             return;
@@ -153,7 +168,7 @@ impl Session {
 
     /// Applies one command to `kept`, then brings the derived data up to date.
     pub fn apply(&mut self, kept: &mut Saved, command: Command) {
-        if let Err(refusal) = carry_out(kept, command) {
+        if let Err(refusal) = carry_out(kept, command, &self.table) {
             self.refusal = Some(refusal);
         } else {
             self.refusal = None;
@@ -162,7 +177,7 @@ impl Session {
     }
 }
 
-fn carry_out(kept: &mut Saved, command: Command) -> Result<(), Refusal> {
+fn carry_out(kept: &mut Saved, command: Command, table: &[RuleRow]) -> Result<(), Refusal> {
     match command {
         Command::SetModelKind(kind) => {
             kept.model.kind = kind;
@@ -192,7 +207,26 @@ fn carry_out(kept: &mut Saved, command: Command) -> Result<(), Refusal> {
             }
             kept.tc = tc;
         }
-        Command::UseRule(key) => kept.rule = Some(key),
+        Command::UseRule(key) => {
+            let tuned = table
+                .iter()
+                .filter(|row| row.rule.key() == key)
+                .find_map(|row| row.result.as_ref().ok());
+            if let Some((tuning, _)) = tuned {
+                let c = &tuning.controller;
+                let k = &mut kept.controller;
+                k.action = c.action;
+                k.kc = c.kc;
+                // A P controller's Ti (infinite) and a PI's Td (0) leave the student's kept.
+                if c.action.integral() {
+                    k.ti = c.ti;
+                }
+                if c.action.derivative() {
+                    k.td = c.td;
+                }
+                kept.rule = Some(key);
+            }
+        }
     }
     Ok(())
 }

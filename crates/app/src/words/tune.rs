@@ -57,6 +57,12 @@ degrau_words::phrases! {
             "A tabela de regras precisa de um modelo e de uma ação com regras."
         ),
         NotApplicable => ("does not apply:", "não se aplica:"),
+        ZnOpenShort => ("ZN (reaction curve)", "ZN (curva de reação)"),
+        ZnUltimateShort => ("ZN (ultimate cycle)", "ZN (ciclo último)"),
+        RulesHelp => (
+            "Click a rule to load its Kc, Ti and Td into the controller. OS and ts: the setpoint step; peak dev. and the second IAE: the load step.",
+            "Clique numa regra para carregar seu Kc, Ti e Td no controlador. Sobress. e ts: o degrau de referência; desvio máx. e o segundo IAE: o degrau de carga."
+        ),
         Chosen => ("chosen", "escolhida"),
         SetpointShort => ("setpoint", "referência"),
         LoadShort => ("load", "carga"),
