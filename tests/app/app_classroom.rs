@@ -350,7 +350,11 @@ fn present(h: &mut Harness<'_, DegrauApp>, size: [f32; 2], zoom: f32, lang: Lang
 }
 
 /// The problems of `h`'s mode at every size, zoom and language, each line saying where.
-fn problems_everywhere(h: &mut Harness<'_, DegrauApp>, mode: &str, canvases: usize) -> Vec<String> {
+pub(crate) fn problems_everywhere(
+    h: &mut Harness<'_, DegrauApp>,
+    mode: &str,
+    canvases: usize,
+) -> Vec<String> {
     let mut out = Vec::new();
     for size in SIZES {
         for zoom in ZOOMS {

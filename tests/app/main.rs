@@ -14,6 +14,7 @@ mod app_lsq;
 mod app_multistep;
 mod app_robust;
 mod app_test_causes;
+mod app_tune;
 #[path = "../kit/mod.rs"]
 mod kit;
 #[path = "../run/mod.rs"]

@@ -2,7 +2,8 @@
 //! links egui, eframe and rfd); its own words are in [`words`]. The top level is thin: one
 //! [`Saved`] (what is kept between runs, with each mode's own: [`design::Saved`],
 //! [`identify::Saved`]), the sessions of the modes (Design: [`design`]; Identify:
-//! [`identify`]; least squares: [`lsq`]), the export window, the notices and the saver.
+//! [`identify`]; least squares: [`lsq`]; Tune: [`tune`], its settings [`tune::Saved`]), the
+//! export window, the notices and the saver.
 //!
 //! Each frame the views draw from the sessions and return [`Command`]s (egui's own
 //! `wrap_app.rs` pattern), and one function applies them: the menu's, the keys', the
@@ -35,6 +36,7 @@ mod menu;
 pub mod persist;
 pub mod plot_span;
 mod state_file;
+pub mod tune;
 pub mod words;
 
 use std::collections::VecDeque;
@@ -93,6 +95,8 @@ pub enum Mode {
     Identify,
     /// Least squares on the samples: ARX, RLS, PRBS, validation.
     LeastSquares,
+    /// From a process model to a controller: rules, drags, the loop's responses.
+    Tune,
 }
 
 /// What is kept between runs (the state file of [`persist`]). The Design mode's part is
@@ -104,6 +108,8 @@ pub struct Saved {
     pub ident: identify::Saved,
     #[serde(flatten)]
     pub design: design::Saved,
+    /// The Tune mode's model, controller, τc and rule.
+    pub tune: tune::Saved,
     pub dark: bool,
     /// The language of every label.
     pub lang: Lang,
@@ -117,6 +123,7 @@ impl Default for Saved {
             mode: Mode::default(),
             ident: identify::Saved::default(),
             design: design::Saved::default(),
+            tune: tune::Saved::default(),
             dark: false,
             lang: Lang::default(),
             scale: 1.0,
@@ -149,6 +156,7 @@ pub enum Command {
     Design(design::Command),
     Identify(identify::Command),
     Lsq(lsq::Command),
+    Tune(tune::Command),
 }
 
 /// What the Identify mode asks of the app after a command.
@@ -159,6 +167,10 @@ fn after_identify(outcome: identify::Outcome) -> Vec<Command> {
                 &tf, du,
             ))),
             Command::SetMode(Mode::Design),
+        ],
+        identify::Outcome::Tune { model, code } => vec![
+            Command::Tune(tune::Command::Receive { model, code }),
+            Command::SetMode(Mode::Tune),
         ],
         identify::Outcome::Pick(pick) => vec![Command::Pick(pick)],
     }
@@ -181,6 +193,8 @@ pub struct DegrauApp {
     pub ident: identify::Session,
     /// The least-squares mode's session (on the Identify mode's record).
     pub lsq: lsq::Session,
+    /// The Tune mode's derived data (its settings are `saved.tune`).
+    pub tune: tune::Session,
     /// Messages for the student (what could not be restored or saved), dismissable.
     pub notices: Vec<Notice>,
     export: ExportState,
@@ -219,11 +233,13 @@ impl DegrauApp {
     /// An app showing `saved` as it is (the callers check it first).
     fn unchecked(saved: Saved) -> Self {
         let ident = identify::Session::with_settings(saved.ident.clone());
+        let tune = tune::Session::new(&saved.tune);
         Self {
             design: design::Session::new(&saved.design),
             saved,
             ident,
             lsq: lsq::Session::default(),
+            tune,
             notices: Vec::new(),
             export: ExportState::default(),
             plot_rect: None,
@@ -282,6 +298,7 @@ impl DegrauApp {
         // Whatever changed the state outside a command (a test, a restored file) is
         // analysed before anything draws.
         self.design.refresh(&self.saved.design);
+        self.tune.refresh(&self.saved.tune);
         let look = self.look();
         let mut commands = self.keyboard(ui);
         commands.extend(
@@ -339,6 +356,10 @@ impl DegrauApp {
                     .map(Command::Lsq)
                     .collect()
             }
+            Mode::Tune => tune::show(ui, &self.tune, &self.saved.tune, look)
+                .into_iter()
+                .map(Command::Tune)
+                .collect(),
             Mode::Design => {
                 let shown = design::show(ui, &self.design, &self.saved.design, look);
                 self.plot_rect = shown.plot_rect;
@@ -475,6 +496,7 @@ impl DegrauApp {
             Command::Identify(c) => {
                 return self.ident.apply(c).map_or_else(Vec::new, after_identify);
             }
+            Command::Tune(c) => self.tune.apply(&mut self.saved.tune, c),
             Command::Lsq(c) => {
                 let design = self.design.analysis.tf.as_ref().ok();
                 return self

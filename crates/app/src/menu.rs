@@ -49,6 +49,10 @@ impl DegrauApp {
         let kept = &self.saved.design;
         egui::MenuBar::new().ui(ui, |ui| {
             let mut mode = self.saved.mode;
+            // Four modes and the rest of the bar in a 1000-point window in Portuguese: the
+            // tabs sit a little closer than egui's spacing.
+            let spacing = ui.spacing().item_spacing.x;
+            ui.spacing_mut().item_spacing.x = spacing / 2.0;
             ui.selectable_value(&mut mode, Mode::Design, T::ModeDesign.get(lang));
             ui.selectable_value(&mut mode, Mode::Identify, T::ModeIdentify.get(lang));
             ui.selectable_value(
@@ -56,9 +60,15 @@ impl DegrauApp {
                 Mode::LeastSquares,
                 crate::words::lsq_app::Phrase::ModeName.get(lang),
             );
+            ui.selectable_value(
+                &mut mode,
+                Mode::Tune,
+                crate::words::tune::Tune::ModeName.get(lang),
+            );
             if mode != self.saved.mode {
                 out.push(Command::SetMode(mode));
             }
+            ui.spacing_mut().item_spacing.x = spacing;
             ui.separator();
             ui.menu_button(T::File.get(lang), |ui| {
                 let mut item = |ui: &mut Ui, text: T, enabled: bool, command: Command| {
@@ -205,7 +215,22 @@ impl DegrauApp {
         {
             out.push(Command::SetScale(scale + step));
         }
+        // As wide as the longest language's name, not egui's 100 points.
+        let name_width = Lang::ALL
+            .iter()
+            .map(|l| {
+                ui.painter()
+                    .layout_no_wrap(
+                        l.name().to_string(),
+                        egui::TextStyle::Button.resolve(ui.style()),
+                        egui::Color32::PLACEHOLDER,
+                    )
+                    .size()
+                    .x
+            })
+            .fold(0.0, f32::max);
         egui::ComboBox::from_id_salt("language")
+            .width(name_width + ui.spacing().icon_width + ui.spacing().button_padding.x * 2.0)
             .selected_text(lang.name())
             .show_ui(ui, |ui| {
                 for l in Lang::ALL {

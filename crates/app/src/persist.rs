@@ -35,6 +35,7 @@ use super::design::plane::{SPlaneState, View};
 use super::design::state::{self, RootRole, System};
 use super::identify;
 use super::look::clamp_scale;
+use super::tune;
 use degrau_ident::experiment::{Experiment, Offset};
 use degrau_ident::fit::MAX_STARTS;
 use degrau_ident::model::Structure;
@@ -192,6 +193,7 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
     let mut saved = Saved {
         mode: f.take("mode", d.mode),
         ident: restore_ident(f.nested("ident"), d.ident),
+        tune: restore_tune(f.nested("tune"), d.tune),
         design,
         dark: f.take("dark", d.dark),
         lang: f.take("lang", d.lang),
@@ -293,6 +295,24 @@ fn restore_ident(mut f: Fields<'_>, d: identify::Saved) -> identify::Saved {
                 Err(Reason::Starts(n))
             }
         }),
+    }
+}
+
+/// The Tune mode's settings: a model that is a model, a controller whose every number is
+/// usable (Ti and Td included, whatever the action), a positive τc.
+fn restore_tune(mut f: Fields<'_>, d: tune::Saved) -> tune::Saved {
+    tune::Saved {
+        model: f.checked("model", d.model, |m| m.check().map_err(Reason::TuneModel)),
+        received: f.take("received", d.received),
+        controller: f.checked("controller", d.controller, |c| {
+            c.check().map_err(Reason::Controller)
+        }),
+        tc: f.checked("tc", d.tc, |t| {
+            t.map_or(Ok(()), |t| {
+                tune::session::check_tc(t).map_err(Reason::TuneModel)
+            })
+        }),
+        rule: f.take("rule", d.rule),
     }
 }
 

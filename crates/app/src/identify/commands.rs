@@ -163,6 +163,8 @@ pub enum Command {
     Landscape(LandscapeCommand),
     /// Open the fitted model in the Design mode.
     ShowOnSPlane,
+    /// Open the fitted model in the Tune mode.
+    TuneController,
     /// The hand methods' section.
     Hand(super::hand_state::HandCommand),
 }
@@ -174,6 +176,11 @@ pub enum Outcome {
     ShowOnSPlane {
         tf: degrau_lti::TransferFunction,
         du: f64,
+    },
+    /// Tune a controller for the fitted model (`code`: its structure), or say why it cannot.
+    Tune {
+        model: Result<crate::tune::model::ProcessSettings, crate::tune::model::ModelProblem>,
+        code: String,
     },
     /// Choose a file with the file dialog (the app opens it).
     Pick(crate::dialog::Pick),

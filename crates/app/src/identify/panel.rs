@@ -571,6 +571,13 @@ fn results(ui: &mut Ui, session: &Session, look: &Look, out: &mut Vec<Command>) 
         if ui.button(Phrase::ShowOnSPlane.get(lang)).clicked() {
             out.push(Command::ShowOnSPlane);
         }
+        if ui
+            .button(crate::words::tune::Tune::TuneButton.get(lang))
+            .on_hover_text(crate::words::tune::Tune::TuneButtonHelp.get(lang))
+            .clicked()
+        {
+            out.push(Command::TuneController);
+        }
         if ui.button(Phrase::CostLandscape.get(lang)).clicked() {
             out.push(Command::Landscape(LandscapeCommand::Open));
         }

@@ -385,6 +385,13 @@ impl Session {
                     .fitted_transfer_function()
                     .map(|(tf, du)| Outcome::ShowOnSPlane { tf, du });
             }
+            Command::TuneController => {
+                let report = self.shown_report()?;
+                return Some(Outcome::Tune {
+                    model: crate::tune::model::ProcessSettings::from_fitted(&report.model),
+                    code: report.model.structure.code(),
+                });
+            }
         }
         None
     }

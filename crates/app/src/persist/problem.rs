@@ -117,6 +117,10 @@ pub enum Reason {
     Starts(usize),
     /// A presentation size out of range.
     Scale(f32),
+    /// The Tune mode's model (or τc) makes no model.
+    TuneModel(crate::tune::model::ModelProblem),
+    /// The Tune mode's controller numbers make no controller.
+    Controller(degrau_lti::control::ControllerError),
 }
 
 /// A part of a saved session that could not be restored and was reset to its default.

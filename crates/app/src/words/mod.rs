@@ -8,6 +8,7 @@ pub mod design;
 pub mod identify;
 pub mod lsq_app;
 pub mod persist;
+pub mod tune;
 
 /// Every message of the app: its labels' catalogues and an example of each fact its
 /// panels say. A new catalogue or fact adds its line here.
@@ -20,6 +21,7 @@ pub fn messages() -> Vec<degrau_words::Message> {
     all.extend(identify::messages());
     all.extend(lsq_app::messages());
     all.extend(persist::messages());
+    all.extend(tune::messages());
     all
 }
 

@@ -285,6 +285,8 @@ impl Localize for Reason {
                 format!("{starts} starts, not 1 to {MAX_STARTS}"),
                 format!("{starts} partidas, não de 1 a {MAX_STARTS}"),
             ),
+            Reason::TuneModel(p) => p.text(lang),
+            Reason::Controller(e) => e.text(lang),
             Reason::Scale(s) => say(
                 format!(
                     "the presentation size {} is not from 1 to 2",
@@ -379,6 +381,8 @@ pub fn reasons() -> Vec<Reason> {
         Reason::Code("Q9".into()),
         Reason::Starts(100_000),
         Reason::Scale(3.5),
+        Reason::TuneModel(crate::tune::model::ModelProblem::Delay(-1.0)),
+        Reason::Controller(degrau_lti::control::ControllerError::IntegralTime(0.0)),
     ]
 }
 
