@@ -271,8 +271,10 @@ fn a_saved_controller_that_is_no_controller_falls_back_alone() {
 /// metrics; then a P controller whose loop does not settle (its notes shown).
 #[test]
 fn the_tune_mode_fits_every_classroom_size() {
-    let mut saved = Saved::default();
-    saved.mode = Mode::Tune;
+    let mut saved = Saved {
+        mode: Mode::Tune,
+        ..Default::default()
+    };
     saved.tune.model.kind = ModelKind::Soptd;
     saved.tune.controller.action = Action::PID;
     saved.tune.rule = Some("simc".into());
@@ -281,8 +283,10 @@ fn the_tune_mode_fits_every_classroom_size() {
     kit::type_number(&mut h, "Integral time Ti (s)", 0, "0");
     h.get_by_label_contains("Refused:");
     let mut problems = crate::app_classroom::problems_everywhere(&mut h, "Tune", 2);
-    let mut saved = Saved::default();
-    saved.mode = Mode::Tune;
+    let mut saved = Saved {
+        mode: Mode::Tune,
+        ..Default::default()
+    };
     saved.tune.controller.action = Action::P;
     saved.tune.controller.kc = 40.0;
     let mut unstable = harness(DegrauApp::new(saved), [1600.0, 900.0]);
