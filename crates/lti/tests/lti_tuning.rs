@@ -3,6 +3,7 @@
 //! closed-loop roots in the right half-plane against the roots of high-order Padé loops; the
 //! peak sensitivity against a dense grid.
 
+use degrau_lti::locus::multiply;
 use std::f64::consts::{E, PI};
 
 use degrau_lti::control::frequency::{
@@ -536,16 +537,6 @@ fn pade(m: usize, theta: f64, sign: f64) -> Vec<f64> {
         .collect()
 }
 
-fn convolve(a: &[f64], b: &[f64]) -> Vec<f64> {
-    let mut out = vec![0.0; a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] += x * y;
-        }
-    }
-    out
-}
-
 fn add(a: &[f64], b: &[f64]) -> Vec<f64> {
     let n = a.len().max(b.len());
     let mut out = vec![0.0; n];
@@ -562,8 +553,8 @@ fn add(a: &[f64], b: &[f64]) -> Vec<f64> {
 /// d_c·d_g·P(θs) + n_c·n_g·P(−θs), from the polynomial's roots.
 fn pade_count(g: &TransferFunction, c: &Controller, m: usize) -> usize {
     let (nc, dc) = c.feedback_coeffs();
-    let d = convolve(&convolve(&dc, &g.den()), &pade(m, g.delay(), 1.0));
-    let n = convolve(&convolve(&nc, &g.num()), &pade(m, g.delay(), -1.0));
+    let d = multiply(&multiply(&dc, &g.den()), &pade(m, g.delay(), 1.0));
+    let n = multiply(&multiply(&nc, &g.num()), &pade(m, g.delay(), -1.0));
     let roots = poly::roots(&add(&d, &n)).expect("roots");
     roots.iter().filter(|r| r.re > 0.0).count()
 }

@@ -5,7 +5,7 @@ use eframe::egui::{self, RichText, Ui};
 
 use degrau_lti::control::Action;
 use degrau_lti::words::control::ControlWord as W;
-use degrau_words::Localize;
+use degrau_words::{Lang, Localize};
 
 use super::commands::{Command, Param};
 use super::model::{ModelKind, ModelParam};
@@ -70,15 +70,28 @@ fn model_section(
         }
     }
     fields.push((ModelParam::Delay, T::DeadTime));
+    let fields = fields.into_iter().map(|(p, label)| (p, label.get(lang)));
+    number_fields(ui, lang, fields, |p| m.get(p), Command::SetModel, out);
+    refusal_line(ui, session, look, |r| matches!(r, Refusal::Model(..)));
+}
+
+/// A number field per (parameter, label), each typed value a command.
+fn number_fields<P: Copy>(
+    ui: &mut Ui,
+    lang: Lang,
+    fields: impl Iterator<Item = (P, &'static str)>,
+    value: impl Fn(P) -> f64,
+    command: impl Fn(P, f64) -> Command,
+    out: &mut Vec<Command>,
+) {
     for (p, label) in fields {
-        if let Some(v) = NumberField::new(label.get(lang), m.get(p))
+        if let Some(v) = NumberField::new(label, value(p))
             .width(FIELD_WIDTH)
             .show(ui, lang)
         {
-            out.push(Command::SetModel(p, v));
+            out.push(command(p, v));
         }
     }
-    refusal_line(ui, session, look, |r| matches!(r, Refusal::Model(..)));
 }
 
 fn controller_section(
@@ -108,14 +121,8 @@ fn controller_section(
         fields.extend([(Param::Td, W::DerivativeTime), (Param::N, W::Filter)]);
     }
     fields.push((Param::B, W::SetpointWeight));
-    for (p, label) in fields {
-        if let Some(v) = NumberField::new(label.get(lang), c.get(p))
-            .width(FIELD_WIDTH)
-            .show(ui, lang)
-        {
-            out.push(Command::SetParam(p, v));
-        }
-    }
+    let fields = fields.into_iter().map(|(p, label)| (p, label.get(lang)));
+    number_fields(ui, lang, fields, |p| c.get(p), Command::SetParam, out);
     refusal_line(ui, session, look, |r| matches!(r, Refusal::Controller(..)));
     drag_row(ui, kept, look, out);
     ui.weak(W::IdealForm.get(lang));

@@ -255,8 +255,8 @@ impl Characteristic {
     fn of(plant: &TransferFunction, c: &Controller) -> Result<Self, StabilityError> {
         let (nc, dc) = c.feedback_coeffs();
         let dc_roots = poly::roots(&dc).map_err(|_| StabilityError::Roots)?;
-        let d = convolve(&dc, &plant.den());
-        let n = convolve(&nc, &plant.num());
+        let d = crate::locus::multiply(&dc, &plant.den());
+        let n = crate::locus::multiply(&nc, &plant.num());
         let mut roots = dc_roots;
         roots.extend_from_slice(plant.poles());
         let scale = geometric_scale(&root_scales(roots.iter(), plant.delay()));
@@ -363,17 +363,6 @@ impl Characteristic {
     }
 }
 
-/// The product of two polynomials (descending powers).
-fn convolve(a: &[f64], b: &[f64]) -> Vec<f64> {
-    let mut out = vec![0.0; a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] += x * y;
-        }
-    }
-    out
-}
-
 fn poly_scaled(p: &[f64], k: f64) -> Vec<f64> {
     p.iter().map(|c| c * k).collect()
 }
@@ -463,8 +452,8 @@ pub fn max_sensitivity(plant: &TransferFunction, c: &Controller) -> Option<Sensi
         return None;
     }
     let (nc, dc) = c.feedback_coeffs();
-    let n = convolve(&nc, &plant.num());
-    let d = convolve(&dc, &plant.den());
+    let n = crate::locus::multiply(&nc, &plant.num());
+    let d = crate::locus::multiply(&dc, &plant.den());
     let c_roots = poly::roots(&dc).ok()?;
     let c_zeros = poly::roots(&nc).ok()?;
     let all: Vec<C64> = plant
@@ -557,7 +546,7 @@ fn abs2_in_omega2(p: &[f64]) -> Vec<f64> {
         .enumerate()
         .map(|(i, c)| if (degree - i) % 2 == 1 { -c } else { *c })
         .collect();
-    let product = convolve(p, &mirrored);
+    let product = crate::locus::multiply(p, &mirrored);
     // product has degree 2·degree; keep the even powers s^(2m), m = degree … 0.
     (0..=degree)
         .map(|i| {

@@ -224,15 +224,8 @@ impl Rule {
 /// What a rule read to give its controller.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum Basis {
-    /// A first-order model's K, τ, θ.
-    Foptd { k: f64, tau: f64, theta: f64 },
-    /// A second-order model's K, τ1, τ2, θ.
-    Soptd {
-        k: f64,
-        tau1: f64,
-        tau2: f64,
-        theta: f64,
-    },
+    /// The model's own K, τ (or τ1, τ2), θ.
+    Model(ProcessModel),
     /// SIMC's half rule on a second-order model: τ = τ1 + τ2/2, θ = θ + τ2/2.
     HalfRule { k: f64, tau: f64, theta: f64 },
     /// The reaction curve's tangent at the inflection of the step response: the apparent

@@ -36,20 +36,7 @@ impl Found {
 
 /// The basis of a model as it is.
 fn model_basis(model: &ProcessModel) -> Basis {
-    match *model {
-        ProcessModel::Foptd { k, tau, theta } => Basis::Foptd { k, tau, theta },
-        ProcessModel::Soptd {
-            k,
-            tau1,
-            tau2,
-            theta,
-        } => Basis::Soptd {
-            k,
-            tau1,
-            tau2,
-            theta,
-        },
-    }
+    Basis::Model(*model)
 }
 
 /// Ziegler–Nichols reaction curve (Ziegler & Nichols 1942; Seborg et al., Process Dynamics
