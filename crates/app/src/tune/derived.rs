@@ -7,6 +7,8 @@ use degrau_lti::control::{ControllerError, DelayLoopError, LoopMetrics, LoopResp
 use super::model::{ModelProblem, ProcessSettings};
 use super::session::ControllerSettings;
 
+/// How far a response that does not settle is drawn (a unit step's output units).
+const GROWTH_SHOWN: f64 = 100.0;
 /// The most points a curve is drawn with.
 const MAX_POINTS: usize = 4000;
 /// How far past the later settling time the curves are drawn (a factor).
@@ -69,10 +71,17 @@ pub fn compute(
 fn response(r: &LoopResponse, metrics: LoopMetrics, until: f64) -> Response {
     let until = until.min(r.end());
     let (t, y) = r.samples();
+    // A loop that does not settle is drawn until it leaves ±GROWTH_SHOWN: enough to see it
+    // grow, and the axis stays readable.
+    let bound = if r.settled {
+        f64::INFINITY
+    } else {
+        GROWTH_SHOWN
+    };
     let kept: Vec<[f64; 2]> = t
         .into_iter()
         .zip(y)
-        .take_while(|(t, _)| *t <= until)
+        .take_while(|(t, y)| *t <= until && y.abs() <= bound)
         .filter(|(_, y)| y.is_finite())
         .map(|(t, y)| [t, y])
         .collect();

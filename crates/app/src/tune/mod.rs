@@ -28,10 +28,17 @@ use crate::look::Look;
 
 /// The width the left panel starts with (points).
 const PANEL_WIDTH: f32 = 360.0;
+/// The widest the left panel starts (points): the rule table's ten columns whole.
+const PANEL_WIDE: f32 = 680.0;
+/// The share of the window the left panel starts with, between the two widths above.
+const PANEL_SHARE: f32 = 0.42;
 /// The narrowest the left panel goes (points).
 const PANEL_MIN: f32 = 240.0;
-/// Room kept for the plots beside the left panel (points).
-const CENTRE_MIN: f32 = 2.0 * (crate::design::PLOT_MIN + 24.0);
+/// Room kept beside the left panel (points): a plot at its narrowest and the metrics'
+/// column beside it.
+const CENTRE_MIN: f32 = crate::design::PLOT_MIN + METRICS_WIDTH;
+/// The metrics' column beside each plot, with the margins (points).
+const METRICS_WIDTH: f32 = 360.0;
 
 /// Draws the Tune mode in `ui` (the area below the menu and notices). Returns what the
 /// student asked.
@@ -41,7 +48,11 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Vec<Co
     let side_max = (full - CENTRE_MIN).max(PANEL_MIN);
     egui::Panel::left("tune")
         .resizable(true)
-        .default_size(PANEL_WIDTH.min(side_max))
+        .default_size(
+            (PANEL_SHARE * full)
+                .clamp(PANEL_WIDTH, PANEL_WIDE)
+                .min(side_max),
+        )
         .size_range(PANEL_MIN..=side_max)
         .show(ui, |ui| {
             egui::ScrollArea::vertical()
