@@ -126,6 +126,24 @@ fn controller_section(
     refusal_line(ui, session, look, |r| matches!(r, Refusal::Controller(..)));
     drag_row(ui, kept, look, out);
     ui.weak(W::IdealForm.get(lang));
+    if let Ok(controller) = c.controller() {
+        let p = controller.parallel();
+        let n = |x: f64| lang.num(x, 4);
+        ui.add(
+            egui::Label::new(
+                RichText::new(format!(
+                    "{}: Kp = {}, Ki = {} 1/s, Kd = {} s, Tf = {} s",
+                    W::ParallelForm.get(lang),
+                    n(p.kp),
+                    n(p.ki),
+                    n(p.kd),
+                    n(p.tf)
+                ))
+                .weak(),
+            )
+            .wrap(),
+        );
+    }
 }
 
 /// Kc, Ti and Td as drag values: the responses follow the drag frame by frame.
@@ -158,7 +176,8 @@ fn drag_row(ui: &mut Ui, kept: &Saved, look: &Look, out: &mut Vec<Command>) {
                     egui::DragValue::new(&mut v)
                         .speed(speed)
                         .range(range)
-                        .max_decimals(4),
+                        .custom_formatter(move |x, _| lang.num(x, 4))
+                        .custom_parser(|text| crate::field::parse_number(text).ok()),
                 )
                 .labelled_by(label.id)
                 .on_hover_text(T::DragHelp.get(lang));
