@@ -144,8 +144,9 @@ impl Localize for TuneError {
     }
 }
 
-/// The model of the flags: from `--fit`, or from the system flags.
-pub fn model(args: &TuneArgs) -> Result<ProcessModel, TuneError> {
+/// The model of the flags: from `--fit` (with the fitted dead time when it was negative
+/// and θ = 0 is used), or from the system flags.
+pub fn model(args: &TuneArgs) -> Result<(ProcessModel, Option<f64>), TuneError> {
     if let Some(path) = &args.fit {
         return Ok(model_of_fit_file(path)?);
     }
@@ -154,7 +155,7 @@ pub fn model(args: &TuneArgs) -> Result<ProcessModel, TuneError> {
         ..Default::default()
     };
     let g = step.spec()?.transfer_function()?;
-    Ok(model_of_system(&g)?)
+    Ok((model_of_system(&g)?, None))
 }
 
 /// The rows asked for: one rule's, or every rule's.
@@ -440,7 +441,10 @@ pub fn human_report(model: &ProcessModel, action: Action, rows: &[RuleRow], lang
 
 /// `degrau tune`.
 pub fn run_tune(args: &TuneArgs, lang: Lang) -> Result<(), TuneError> {
-    let model = model(args)?;
+    let (model, negative_delay) = model(args)?;
+    if let Some(td) = negative_delay {
+        eprintln!("{}", words::negative_delay_note(&lang.num(td, 4), lang));
+    }
     let rows = rows(args, &model);
     let mut out = io::stdout().lock();
     let written = if args.json {

@@ -70,8 +70,11 @@ pub fn model_of_system(g: &TransferFunction) -> Result<ProcessModel, PlantError>
     })
 }
 
-/// The model of the JSON `degrau fit --json` wrote to `path` (a P1, P1D, P2 or P2D fit).
-pub fn model_of_fit_file(path: &Path) -> Result<ProcessModel, PlantError> {
+/// The model of the JSON `degrau fit --json` wrote to `path` (a P1, P1D, P2 or P2D fit),
+/// and the fitted dead time when it was negative. A fit may place the step's effect up to a
+/// sample before the step logged (the step fell between samples); a loop cannot have a
+/// negative dead time, so it is tuned with θ = 0 and the caller says so.
+pub fn model_of_fit_file(path: &Path) -> Result<(ProcessModel, Option<f64>), PlantError> {
     let name = path.display().to_string();
     let text =
         std::fs::read_to_string(path).map_err(|e| PlantError::Read(name.clone(), e.to_string()))?;
@@ -86,15 +89,17 @@ pub fn model_of_fit_file(path: &Path) -> Result<ProcessModel, PlantError> {
             .and_then(serde_json::Value::as_f64)
             .ok_or(PlantError::Param(key))
     };
-    let theta = |delayed: bool| if delayed { param("Td") } else { Ok(0.0) };
-    Ok(match code {
-        "P1" | "P1D" => ProcessModel::foptd(param("Kp")?, param("Tp1")?, theta(code == "P1D")?)?,
-        "P2" | "P2D" => ProcessModel::soptd(
-            param("Kp")?,
-            param("Tp1")?,
-            param("Tp2")?,
-            theta(code == "P2D")?,
-        )?,
+    let fitted_delay = if code.ends_with('D') {
+        param("Td")?
+    } else {
+        0.0
+    };
+    let negative = (fitted_delay < 0.0).then_some(fitted_delay);
+    let theta = fitted_delay.max(0.0);
+    let model = match code {
+        "P1" | "P1D" => ProcessModel::foptd(param("Kp")?, param("Tp1")?, theta)?,
+        "P2" | "P2D" => ProcessModel::soptd(param("Kp")?, param("Tp1")?, param("Tp2")?, theta)?,
         other => return Err(PlantError::ModelCode(other.to_string())),
-    })
+    };
+    Ok((model, negative))
 }

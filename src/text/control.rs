@@ -200,6 +200,18 @@ pub fn at_time(value: &str, time: &str, lang: Lang) -> String {
     )
 }
 
+/// The note of a fit whose dead time came out negative (`td` written, s).
+pub fn negative_delay_note(td: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => format!(
+            "note: the fit's dead time is {td} s, below 0 (the step's effect began between samples, before the step logged); a loop has no negative dead time, so it is tuned with θ = 0"
+        ),
+        Lang::Pt => format!(
+            "nota: o tempo morto do ajuste é {td} s, abaixo de 0 (o efeito do degrau começou entre amostras, antes do degrau registrado); uma malha não tem tempo morto negativo, então a sintonia usa θ = 0"
+        ),
+    }
+}
+
 /// The closed loop's stability and its maximum sensitivity (`ms`, `w` as text).
 pub fn stability_line(unstable: Option<usize>, ms: Option<(String, String)>, lang: Lang) -> String {
     match (unstable, ms, lang) {
@@ -383,6 +395,9 @@ pub fn messages() -> Vec<Message> {
     ] {
         all.push(Message::said(id, |l| stability_line(roots, ms.clone(), l)));
     }
+    all.push(Message::said("control::negative_delay_note", |l| {
+        negative_delay_note("-0.57", l)
+    }));
     all.push(Message::said("control::settled_line", |l| {
         settled_line(true, "10", l)
     }));

@@ -290,3 +290,33 @@ fn bad_plants_and_rules_are_refused_in_words() {
         assert!(!err.contains("panicked"), "{err}");
     }
 }
+
+#[test]
+fn a_fit_whose_dead_time_came_out_negative_is_tuned_with_theta_zero_and_says_so() {
+    let dir = std::env::temp_dir().join(format!("degrau-tune-negative-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("p2d.json");
+    std::fs::write(
+        &path,
+        r#"{"model":"P2D","params":{"Kp":0.7,"Td":-0.57,"Tp1":20.0,"Tp2":140.0,"Y0":20.9}}"#,
+    )
+    .unwrap();
+    let out = degrau(&[
+        "tune",
+        "--fit",
+        path.to_str().unwrap(),
+        "--rule",
+        "zn-open",
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("tuned with θ = 0"),
+        "{}",
+        stderr(&out)
+    );
+    let v: Value = serde_json::from_str(&stdout(&out)).unwrap();
+    // Two lags and no dead time: the reaction curve's tangent still gives ZN a θ′ > 0.
+    assert_eq!(v["applies"], true, "{v}");
+    std::fs::remove_dir_all(&dir).ok();
+}

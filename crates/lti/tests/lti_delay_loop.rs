@@ -505,3 +505,17 @@ fn a_load_without_integral_action_settles_to_its_offset_as_a_step_does() {
     assert_eq!(m.overshoot, Some(0.0));
     assert_eq!((m.iae, m.itae), (None, None));
 }
+
+#[test]
+fn the_reaction_curve_of_a_second_order_model_without_dead_time_is_tuned() {
+    // Two lags and no θ: the tangent at the inflection still crosses 0 after t = 0, so
+    // Ziegler–Nichols' reaction-curve rule reads an apparent dead time θ′ > 0 (for equal lags
+    // τ: θ′ = (3 − e)τ, τ′ = e·τ).
+    use degrau_lti::control::{ProcessModel, Rule, tuning::tune};
+    let model = ProcessModel::soptd(2.0, 5.0, 5.0, 0.0).unwrap();
+    let t = tune(&model, Rule::ZieglerNicholsOpen, Action::PI, None).unwrap();
+    let (theta, tau) = ((3.0 - std::f64::consts::E) * 5.0, std::f64::consts::E * 5.0);
+    // PI: Kc = 0.9·τ′/(K·θ′), Ti = θ′/0.3.
+    assert!((t.controller.kc - 0.9 * tau / (2.0 * theta)).abs() < 1e-9 * t.controller.kc);
+    assert!((t.controller.ti - theta / 0.3).abs() < 1e-9 * t.controller.ti);
+}

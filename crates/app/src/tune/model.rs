@@ -141,8 +141,10 @@ impl ProcessSettings {
             2 if plain => ModelKind::Soptd,
             _ => return Err(ModelProblem::NotTunable(code)),
         };
+        // A fit may place the step's effect up to a sample before the step logged (a step
+        // between samples): a loop has no negative dead time, so that is θ = 0.
         let theta = if s.delay {
-            fitted.get(FitParam::Td)
+            fitted.get(FitParam::Td).max(0.0)
         } else {
             0.0
         };

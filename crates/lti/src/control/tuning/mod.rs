@@ -324,7 +324,10 @@ pub fn tune(
     {
         return Err(NotApplicable::BadTimeConstant(t));
     }
-    if rule.needs_dead_time() && model.dead_time() <= 0.0 {
+    // The reaction curve of a second-order model has an apparent dead time of its own
+    // (the tangent's intercept), so ZN's reaction-curve rule applies to it without θ.
+    let reads_tangent = rule == Rule::ZieglerNicholsOpen && model.kind() == ModelKind::Soptd;
+    if rule.needs_dead_time() && model.dead_time() <= 0.0 && !reads_tangent {
         return Err(NotApplicable::NeedsDeadTime { rule });
     }
     let found = match rule {
