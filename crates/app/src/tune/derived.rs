@@ -9,8 +9,8 @@ use super::session::ControllerSettings;
 
 /// How far a response that does not settle is drawn (a unit step's output units).
 const GROWTH_SHOWN: f64 = 100.0;
-/// The most points a curve is drawn with.
-const MAX_POINTS: usize = 4000;
+/// The points a curve is drawn with.
+const CURVE_POINTS: usize = 1500;
 /// How far past the later settling time the curves are drawn (a factor).
 const PAST_SETTLING: f64 = 1.6;
 
@@ -68,6 +68,34 @@ pub fn compute(
     })
 }
 
+/// `points` evenly spread over the span of `nodes` (sorted by time), each interpolated
+/// between the two nodes around it; the last node closes the curve.
+fn evenly(nodes: &[[f64; 2]], points: usize) -> Vec<[f64; 2]> {
+    let (Some(first), Some(last)) = (nodes.first(), nodes.last()) else {
+        return Vec::new();
+    };
+    let span = last[0] - first[0];
+    if span <= 0.0 || points < 2 {
+        return nodes.to_vec();
+    }
+    let mut out = Vec::with_capacity(points);
+    let mut i = 0;
+    for k in 0..points {
+        let t = first[0] + span * k as f64 / (points - 1) as f64;
+        while i + 1 < nodes.len() && nodes[i + 1][0] < t {
+            i += 1;
+        }
+        let (a, b) = (nodes[i], nodes[(i + 1).min(nodes.len() - 1)]);
+        let y = if b[0] > a[0] {
+            a[1] + (b[1] - a[1]) * (t - a[0]) / (b[0] - a[0])
+        } else {
+            b[1]
+        };
+        out.push([t, y]);
+    }
+    out
+}
+
 fn response(r: &LoopResponse, metrics: LoopMetrics, until: f64) -> Response {
     let until = until.min(r.end());
     let (t, y) = r.samples();
@@ -85,13 +113,11 @@ fn response(r: &LoopResponse, metrics: LoopMetrics, until: f64) -> Response {
         .filter(|(_, y)| y.is_finite())
         .map(|(t, y)| [t, y])
         .collect();
-    let stride = kept.len().div_ceil(MAX_POINTS).max(1);
-    let mut curve: Vec<[f64; 2]> = kept.iter().step_by(stride).copied().collect();
-    if let (Some(last), Some(shown)) = (kept.last(), curve.last())
-        && last != shown
-    {
-        curve.push(*last);
-    }
+    // The nodes cluster at each step's ends (Chebyshev–Lobatto): drawn as they are, the
+    // segments far shorter than the line is wide tessellate as a broken line. The curve is
+    // drawn through CURVE_POINTS instants evenly spread, each read between its two nodes
+    // (a step holds eight, so the straight piece between them is within a pixel).
+    let curve = evenly(&kept, CURVE_POINTS);
     Response {
         curve,
         metrics,
@@ -112,7 +138,22 @@ mod tests {
         let fv = view.setpoint.metrics.final_value.expect("a final value");
         assert!((fv - 1.0).abs() < 1e-6, "{fv}");
         assert!(view.load.metrics.peak.is_some());
-        assert!(view.setpoint.curve.len() > 10 && view.setpoint.curve.len() <= MAX_POINTS + 1);
+        assert_eq!(view.setpoint.curve.len(), CURVE_POINTS);
+    }
+
+    #[test]
+    fn the_curve_is_evenly_spread_and_runs_through_the_nodes() {
+        // y = t² at uneven nodes: the even points lie on the chords between them.
+        let nodes: Vec<[f64; 2]> = [0.0, 0.1, 0.15, 1.0, 2.0]
+            .iter()
+            .map(|&t| [t, t * t])
+            .collect();
+        let curve = evenly(&nodes, 5);
+        let t: Vec<f64> = curve.iter().map(|p| p[0]).collect();
+        assert_eq!(t, vec![0.0, 0.5, 1.0, 1.5, 2.0]);
+        // 0.5 between 0.15 (0.0225) and 1 (1): 0.0225 + 0.9775·0.35/0.85.
+        assert!((curve[1][1] - (0.0225 + 0.9775 * 0.35 / 0.85)).abs() < 1e-15);
+        assert_eq!((curve[2][1], curve[4][1]), (1.0, 4.0));
     }
 
     #[test]

@@ -74,6 +74,12 @@ fn one(ui: &mut Ui, which: Which, r: &Response, look: &Look, height: f32) {
         Which::Setpoint => (1.0, T::SetpointLine),
         Which::Load => (0.0, T::Undisturbed),
     };
+    // The legend where the curve is not: below the setpoint's line; for a load, on the side
+    // away from its peak deviation (the curve returns to 0 along the other side).
+    let corner = match which {
+        Which::Load if r.metrics.peak.is_some_and(|p| p.value > 0.0) => egui_plot::Corner::RightTop,
+        _ => egui_plot::Corner::RightBottom,
+    };
     ui.horizontal_top(|ui| {
         let shown = crate::grid::app_axes(Plot::new(("tune plot", which as u8)), lang)
             .x_grid_spacer(crate::grid::one_two_five())
@@ -84,7 +90,7 @@ fn one(ui: &mut Ui, which: Which, r: &Response, look: &Look, height: f32) {
             .min_size(egui::vec2(crate::design::PLOT_MIN, crate::design::PLOT_MIN))
             .legend(
                 egui_plot::Legend::default()
-                    .position(egui_plot::Corner::RightBottom)
+                    .position(corner)
                     .background_alpha(0.75),
             )
             .show(ui, |plot| {
