@@ -13,6 +13,7 @@
 
 pub mod analysis;
 pub mod approx;
+pub mod bode;
 pub mod control;
 pub mod discrete;
 pub mod divided;

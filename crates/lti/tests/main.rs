@@ -4,6 +4,7 @@
 
 mod exact;
 mod lti_approx;
+mod lti_bode;
 mod lti_clusters;
 mod lti_delay_loop;
 mod lti_feedback;
