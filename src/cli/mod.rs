@@ -15,6 +15,7 @@ use std::process::ExitCode;
 pub mod approx;
 pub mod arx;
 pub mod batch;
+pub mod bode;
 pub mod diagnose;
 pub mod discrete;
 pub mod fit;
@@ -102,6 +103,8 @@ pub enum Command {
     /// PI or PID controllers for a first- or second-order plant with a dead time, by the
     /// published rules, each judged on its loop (exact dead time).
     Tune(tune::TuneArgs),
+    /// The Bode diagram of G(jω), exact with the dead time, with the notes' asymptotes.
+    Bode(bode::BodeArgs),
     /// Least squares on the samples: an ARX model (na, nb, nk), its parameters and errors.
     Arx(arx::ArxArgs),
     /// Recursive least squares on the samples, with the parameter trajectory.
@@ -438,6 +441,7 @@ pub fn main() -> ExitCode {
         Some(Command::Pade(args)) => approx::finish(approx::run_pade(&args, lang), lang),
         Some(Command::Loop(args)) => loop_cmd::main(&args, lang),
         Some(Command::Tune(args)) => tune::main(&args, lang),
+        Some(Command::Bode(args)) => bode::main(&args, lang),
         Some(Command::Arx(args)) => arx::finish(arx::run_arx(&args, lang), lang),
         Some(Command::Rls(args)) => arx::finish(rls::run_rls(&args, lang), lang),
         Some(Command::Prbs(args)) => arx::finish(prbs::run_prbs(&args, lang), lang),

@@ -20,6 +20,7 @@ pub use degrau_lti::words::{feedback, lti, step};
 pub use degrau_words::{Lang, Localize, Message};
 
 pub mod approx;
+pub mod bode;
 pub mod clap_words;
 pub mod cli;
 pub mod control;
@@ -33,6 +34,7 @@ pub fn every_message() -> Vec<Message> {
     let mut all = cli::messages();
     all.extend(approx::cli_messages());
     all.extend(control::messages());
+    all.extend(bode::messages());
     all
 }
 

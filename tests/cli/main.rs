@@ -3,6 +3,7 @@
 
 mod cli;
 mod cli_approx;
+mod cli_bode;
 mod cli_diagnose;
 mod cli_fit;
 mod cli_flags;
