@@ -23,6 +23,7 @@ pub mod hand;
 mod human;
 pub mod loop_cmd;
 pub mod loop_controller;
+pub mod margins;
 pub mod prbs;
 mod report;
 pub mod rls;
@@ -100,6 +101,9 @@ pub enum Command {
     Pade(approx::PadeArgs),
     /// Unity-feedback loop around Kp·G(s): closed loop, gain for specs, error constants, root locus.
     Loop(loop_cmd::LoopArgs),
+    /// Gain, phase and delay margins of the loop C(s)·G(s), the dead time exact; Ms and the
+    /// closed loop's bandwidth.
+    Margins(margins::MarginsArgs),
     /// PI or PID controllers for a first- or second-order plant with a dead time, by the
     /// published rules, each judged on its loop (exact dead time).
     Tune(tune::TuneArgs),
@@ -440,6 +444,7 @@ pub fn main() -> ExitCode {
         Some(Command::Approx(args)) => approx::finish(approx::run_approx(&args, lang), lang),
         Some(Command::Pade(args)) => approx::finish(approx::run_pade(&args, lang), lang),
         Some(Command::Loop(args)) => loop_cmd::main(&args, lang),
+        Some(Command::Margins(args)) => margins::main(&args, lang),
         Some(Command::Tune(args)) => tune::main(&args, lang),
         Some(Command::Bode(args)) => bode::main(&args, lang),
         Some(Command::Arx(args)) => arx::finish(arx::run_arx(&args, lang), lang),

@@ -26,6 +26,7 @@ pub mod cli;
 pub mod control;
 pub mod hand;
 pub mod lsq;
+pub mod margins;
 
 /// Every message of the command line: its catalogues' phrases and an example of every fact
 /// it says (the lti, ident and app crates' tests check theirs).
@@ -35,6 +36,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(approx::cli_messages());
     all.extend(control::messages());
     all.extend(bode::messages());
+    all.extend(margins::messages());
     all
 }
 

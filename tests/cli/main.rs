@@ -12,6 +12,7 @@ mod cli_hand;
 mod cli_lang;
 mod cli_loop;
 mod cli_lsq;
+mod cli_margins;
 mod cli_multistep;
 mod cli_step_large;
 mod cli_test_causes;

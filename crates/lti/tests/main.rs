@@ -10,5 +10,6 @@ mod lti_delay_loop;
 mod lti_feedback;
 mod lti_known_answers;
 mod lti_locus;
+mod lti_margins;
 mod lti_properties;
 mod lti_tuning;

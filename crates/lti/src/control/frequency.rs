@@ -107,7 +107,7 @@ fn branch(phase: f64) -> i64 {
 }
 
 /// The root of `f` between `a` and `b` (where its signs differ), to the last bit.
-fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+pub(crate) fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
     let fa = f(a);
     for _ in 0..200 {
         let mid = 0.5 * (a + b);
@@ -181,7 +181,7 @@ fn angle_change(r: C64, w: f64) -> f64 {
 
 /// The frequencies that set the scale of a transfer function: its roots' moduli (the origin
 /// left out) and 1/θ.
-fn root_scales<'a>(roots: impl Iterator<Item = &'a C64>, delay: f64) -> Vec<f64> {
+pub(crate) fn root_scales<'a>(roots: impl Iterator<Item = &'a C64>, delay: f64) -> Vec<f64> {
     let mut scales: Vec<f64> = roots.map(|r| r.norm()).filter(|&m| m > 0.0).collect();
     if delay > 0.0 {
         scales.push(1.0 / delay);
@@ -206,7 +206,7 @@ fn scan_range(scales: &[f64], delay: f64, roots: usize) -> Option<(f64, f64)> {
 }
 
 /// Frequencies around each lightly damped root's ω = Im r, where the phase turns fast.
-fn resonances<'a>(roots: impl Iterator<Item = &'a C64>) -> Vec<f64> {
+pub(crate) fn resonances<'a>(roots: impl Iterator<Item = &'a C64>) -> Vec<f64> {
     let mut out = Vec::new();
     for r in roots.filter(|r| r.im > 0.0) {
         for i in -24..=24 {
@@ -218,7 +218,7 @@ fn resonances<'a>(roots: impl Iterator<Item = &'a C64>) -> Vec<f64> {
 
 /// A grid from `lo` to `hi`: [`PER_DECADE`] points a decade, never more than
 /// [`DELAY_STEP`]/θ apart, with the `extra` frequencies inside the range added.
-fn frequency_grid(lo: f64, hi: f64, delay: f64, extra: &[f64]) -> Vec<f64> {
+pub(crate) fn frequency_grid(lo: f64, hi: f64, delay: f64, extra: &[f64]) -> Vec<f64> {
     let ratio = 10f64.powf(1.0 / PER_DECADE) - 1.0;
     let cap = if delay > 0.0 {
         DELAY_STEP / delay
@@ -512,7 +512,7 @@ fn high_frequency_limit(n: &[f64], d: &[f64], delay: f64) -> f64 {
 
 /// The largest ω ≥ 0 where |n(jω)| = δ·|d(jω)| (0 when none): past it |L(jω)| < δ for good
 /// (δ above the high-frequency limit of |n/d|). None when the roots are not found.
-fn last_crossing(n: &[f64], d: &[f64], delta: f64) -> Option<f64> {
+pub(crate) fn last_crossing(n: &[f64], d: &[f64], delta: f64) -> Option<f64> {
     let nn = abs2_in_omega2(n);
     let dd = abs2_in_omega2(d);
     let len = nn.len().max(dd.len());

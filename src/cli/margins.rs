@@ -1,0 +1,186 @@
+//! `degrau margins`: the stability margins of the unity-feedback loop L(s) = C(s)·G(s), the
+//! plant given as for `degrau step` with its dead time kept exact, the controller P (the
+//! default, Kc = 1), PI, PD or PID as for `degrau loop --controller`: the gain margin and
+//! its phase crossover, the phase margin and its gain crossover (the smallest, as MATLAB's
+//! `margin`), the delay margin, Ms and the closed loop's −3 dB bandwidth, with every
+//! crossing found ([`crate::lti::control::margins`]). Text, or one JSON object with stable
+//! keys; an infinite margin is written "inf" in the JSON, as `degrau loop` writes ∞.
+
+use std::io::{self, Write};
+use std::process::ExitCode;
+
+use clap::Args;
+use serde::Serialize;
+
+use crate::lti::control::{Action, GainCrossing, Margins, PhaseCrossing, margins};
+use crate::lti::feedback::Limit;
+use crate::text::cli::StepPhrase;
+use crate::text::margins::MarginLine;
+use crate::text::{Lang, Localize};
+
+use super::loop_cmd::{LoopArgs, LoopError};
+use super::loop_controller::{ActionArg, ControllerFlags, controller_of};
+use super::{CliError, finite_f64};
+
+const MARGINS_EXAMPLES: &str = "\
+Examples:
+  degrau margins --num 1 --den 1,3,2,0 --kc 2
+  degrau margins --num 1 --den 10,1 --delay 2 --controller pi --kc 2.5 --ti 10 --json";
+
+/// `degrau margins` options: the plant as for `degrau step`, then the controller.
+#[derive(Debug, Default, Args)]
+#[command(after_help = MARGINS_EXAMPLES)]
+pub struct MarginsArgs {
+    #[command(flatten)]
+    pub system: super::SystemArgs,
+    /// The controller: p (the default), pi, pd or pid, in the ideal form
+    /// Kc·(1 + 1/(Ti·s) + Td·s/(1 + Td·s/N)).
+    #[arg(
+        long,
+        value_name = "ACTION",
+        value_parser = clap::builder::TypedValueParser::map(
+            clap::builder::EnumValueParser::<ActionArg>::new(),
+            Action::from
+        )
+    )]
+    pub controller: Option<Action>,
+    /// The controller gain Kc (default 1).
+    #[arg(long, value_name = "KC", allow_hyphen_values = true, value_parser = finite_f64)]
+    pub kc: Option<f64>,
+    /// With --controller pi or pid: the integral time Ti (s).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = finite_f64)]
+    pub ti: Option<f64>,
+    /// With --controller pd or pid: the derivative time Td (s).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true, value_parser = finite_f64)]
+    pub td: Option<f64>,
+    /// With --controller pd or pid: the derivative filter N, Tf = Td/N (default 10).
+    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = finite_f64)]
+    pub n: Option<f64>,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// The crossings of the JSON report.
+#[derive(Debug, Serialize)]
+pub struct Crossings<'a> {
+    pub phase: &'a [PhaseCrossing],
+    pub gain: &'a [GainCrossing],
+}
+
+/// The JSON report: infinite margins as "inf", a missing crossover frequency as null.
+#[derive(Debug, Serialize)]
+pub struct MarginsReport<'a> {
+    pub gm: Limit,
+    pub gm_db: Limit,
+    pub w_pc: Option<f64>,
+    pub pm: Limit,
+    pub w_gc: Option<f64>,
+    pub delay_margin: Limit,
+    /// Null unless the closed loop is stable.
+    pub ms: Option<f64>,
+    /// Null when |T(0)| is 0 or infinite.
+    pub bandwidth: Option<Limit>,
+    pub crossings: Crossings<'a>,
+}
+
+fn limit(x: f64) -> Limit {
+    if x.is_finite() {
+        Limit::Finite(x)
+    } else {
+        Limit::Infinite
+    }
+}
+
+impl<'a> MarginsReport<'a> {
+    pub fn new(m: &'a Margins) -> Self {
+        Self {
+            gm: limit(m.gm),
+            gm_db: limit(m.gm_db),
+            w_pc: m.w_pc,
+            pm: limit(m.pm),
+            w_gc: m.w_gc,
+            delay_margin: limit(m.delay_margin),
+            ms: m.ms,
+            bandwidth: m.bandwidth.map(limit),
+            crossings: Crossings {
+                phase: &m.phase_crossings,
+                gain: &m.gain_crossings,
+            },
+        }
+    }
+}
+
+/// The plant and the controller of the flags, and their margins.
+fn compute(args: &MarginsArgs) -> Result<(String, Margins), LoopError> {
+    let action = args.controller.unwrap_or(Action::P);
+    let loop_args = LoopArgs {
+        system: args.system.clone(),
+        control: ControllerFlags {
+            controller: Some(action),
+            kc: Some(args.kc.unwrap_or(1.0)),
+            ti: args.ti,
+            td: args.td,
+            n: args.n,
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    let plant = loop_args.spec()?.transfer_function()?;
+    let c = controller_of(&loop_args, action)?;
+    Ok((plant.describe_rounded(), margins(&plant, &c)))
+}
+
+/// The text report's lines.
+pub fn text_lines(plant: &str, m: &Margins, lang: Lang) -> Vec<String> {
+    let mut lines = vec![MarginLine::Loop(plant.to_string())];
+    lines.push(match m.w_pc {
+        Some(w) => MarginLine::Gain {
+            gm: m.gm,
+            gm_db: m.gm_db,
+            w,
+        },
+        None => MarginLine::NoPhaseCrossover,
+    });
+    lines.push(match m.w_gc {
+        Some(w) => MarginLine::Phase { pm: m.pm, w },
+        None => MarginLine::NoGainCrossover,
+    });
+    lines.push(MarginLine::Delay(m.delay_margin));
+    lines.push(m.ms.map_or(MarginLine::NoSensitivity, MarginLine::Sensitivity));
+    lines.push(
+        m.bandwidth
+            .map_or(MarginLine::NoBandwidth, MarginLine::Bandwidth),
+    );
+    lines.push(MarginLine::Crossings {
+        phase: m.phase_crossings.len(),
+        gain: m.gain_crossings.len(),
+    });
+    lines.iter().map(|l| l.text(lang)).collect()
+}
+
+fn run(args: &MarginsArgs, lang: Lang) -> Result<(), LoopError> {
+    let (plant, m) = compute(args)?;
+    let out = if args.json {
+        serde_json::to_string(&MarginsReport::new(&m))
+            .map_err(|e| CliError::JsonFields(e.to_string()))?
+    } else {
+        text_lines(&plant, &m, lang).join("\n")
+    };
+    writeln!(io::stdout().lock(), "{out}").map_err(CliError::WriteOutput)?;
+    Ok(())
+}
+
+/// Runs `degrau margins`: 0 on success, 2 on bad input.
+pub fn main(args: &MarginsArgs, lang: Lang) -> ExitCode {
+    match run(args, lang) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(LoopError::Cli(CliError::WriteOutput(e))) if e.kind() == io::ErrorKind::BrokenPipe => {
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{}: {}", StepPhrase::Error.get(lang), e.text(lang));
+            ExitCode::from(2)
+        }
+    }
+}
