@@ -2,7 +2,6 @@
 //! the course notes in words), in English and Brazilian Portuguese.
 
 use crate::cli::bode::BodeCliError;
-use crate::lti::number::format_number as n;
 
 #[cfg(test)]
 use super::Message;
@@ -10,6 +9,7 @@ use super::{Lang, Localize};
 
 impl Localize for BodeCliError {
     fn text(&self, lang: Lang) -> String {
+        let n = |x: f64| lang.num(x, 6);
         match self {
             BodeCliError::Cli(e) => e.text(lang),
             BodeCliError::NotPositive { flag, value } => lang.pick(
@@ -67,6 +67,7 @@ pub enum Line {
 
 impl Localize for Line {
     fn text(&self, lang: Lang) -> String {
+        let n = |x: f64| lang.num(x, 6);
         match *self {
             Line::Low {
                 db,

@@ -4,7 +4,6 @@
 #[cfg(test)]
 use super::Message;
 use super::{Lang, Localize};
-use crate::lti::number::format_number;
 
 /// A line of the `degrau margins` report (numbers already rounded by the caller as they
 /// should print; infinite ones say so).
@@ -34,11 +33,12 @@ pub enum MarginLine {
     Crossings { phase: usize, gain: usize },
 }
 
-fn num(x: f64) -> String {
+/// A number with six significant digits and `lang`'s decimal separator, ∞ as such.
+fn num(x: f64, lang: Lang) -> String {
     if x.is_infinite() {
         "∞".into()
     } else {
-        format_number(x)
+        lang.num(x, 6)
     }
 }
 
@@ -50,7 +50,7 @@ impl Localize for MarginLine {
                 format!("Malha aberta L(s) = C(s)·G(s), G = {l}"),
             ),
             MarginLine::Gain { gm, gm_db, w } => {
-                let (gm, db, w) = (num(*gm), num(*gm_db), num(*w));
+                let (gm, db, w) = (num(*gm, lang), num(*gm_db, lang), num(*w, lang));
                 lang.pick(
                     format!("Gain margin: {gm} ({db} dB) at the phase crossover ω = {w} rad/s"),
                     format!(
@@ -65,7 +65,7 @@ impl Localize for MarginLine {
                 )
                 .into(),
             MarginLine::Phase { pm, w } => {
-                let (pm, w) = (num(*pm), num(*w));
+                let (pm, w) = (num(*pm, lang), num(*w, lang));
                 lang.pick(
                     format!("Phase margin: {pm}° at the gain crossover ω = {w} rad/s"),
                     format!(
@@ -80,14 +80,14 @@ impl Localize for MarginLine {
                 )
                 .into(),
             MarginLine::Delay(d) => {
-                let d = num(*d);
+                let d = num(*d, lang);
                 lang.pick(
                     format!("Delay margin: {d} s (the extra dead time that destabilises)"),
                     format!("Margem de atraso: {d} s (o tempo morto a mais que desestabiliza)"),
                 )
             }
             MarginLine::Sensitivity(ms) => {
-                let ms = num(*ms);
+                let ms = num(*ms, lang);
                 lang.pick(
                     format!("Maximum sensitivity Ms: {ms}"),
                     format!("Sensibilidade máxima Ms: {ms}"),
@@ -100,7 +100,7 @@ impl Localize for MarginLine {
                 )
                 .into(),
             MarginLine::Bandwidth(w) => {
-                let w = num(*w);
+                let w = num(*w, lang);
                 lang.pick(
                     format!("Closed-loop bandwidth (−3 dB): {w} rad/s"),
                     format!("Banda passante da malha fechada (−3 dB): {w} rad/s"),
