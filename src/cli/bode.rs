@@ -14,7 +14,6 @@ use serde::Serialize;
 use crate::lti::bode::{Corner, asymptotes, bode, default_range, log_grid};
 use crate::lti::number::format_number;
 use crate::text::bode::Line;
-use crate::text::cli::StepPhrase;
 use crate::text::{Lang, Localize};
 
 use super::{CliError, MAX_SAMPLES, SystemArgs, finite_f64};
@@ -192,16 +191,12 @@ pub fn run_bode(args: &BodeArgs, lang: Lang) -> Result<(), BodeCliError> {
 /// The exit code of `degrau bode`, its error printed in words (code 2, a closed pipe is
 /// success).
 pub fn main(args: &BodeArgs, lang: Lang) -> ExitCode {
-    match run_bode(args, lang) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(BodeCliError::Cli(CliError::WriteOutput(e)))
-            if e.kind() == io::ErrorKind::BrokenPipe =>
-        {
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("{}: {}", StepPhrase::Error.get(lang), e.text(lang));
-            ExitCode::from(2)
-        }
-    }
+    super::exit_code(
+        run_bode(args, lang),
+        |e| match e {
+            BodeCliError::Cli(c) => Some(c),
+            _ => None,
+        },
+        lang,
+    )
 }

@@ -27,7 +27,6 @@ use crate::lti::feedback::{
 };
 use crate::lti::locus::{Breakaway, Locus, Side};
 use crate::lti::{LtiError, StepInfoOptions, StepResponse, TransferFunction, analyse};
-use crate::text::cli::StepPhrase;
 use crate::text::feedback::{Loop as P, LoopError as LoopErrorText};
 use crate::text::{Lang, Localize};
 
@@ -443,14 +442,12 @@ pub fn run_loop(args: &LoopArgs, lang: Lang) -> Result<(), LoopError> {
 
 /// The exit code of `degrau loop`, its error printed in words.
 pub fn main(args: &LoopArgs, lang: Lang) -> ExitCode {
-    match run_loop(args, lang) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(LoopError::Cli(CliError::WriteOutput(e))) if e.kind() == io::ErrorKind::BrokenPipe => {
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("{}: {}", StepPhrase::Error.get(lang), e.text(lang));
-            ExitCode::from(2)
-        }
-    }
+    super::exit_code(
+        run_loop(args, lang),
+        |e| match e {
+            LoopError::Cli(c) => Some(c),
+            _ => None,
+        },
+        lang,
+    )
 }

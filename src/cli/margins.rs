@@ -14,7 +14,6 @@ use serde::Serialize;
 
 use crate::lti::control::{Action, GainCrossing, Margins, PhaseCrossing, margins};
 use crate::lti::feedback::Limit;
-use crate::text::cli::StepPhrase;
 use crate::text::margins::MarginLine;
 use crate::text::{Lang, Localize};
 
@@ -173,14 +172,12 @@ fn run(args: &MarginsArgs, lang: Lang) -> Result<(), LoopError> {
 
 /// Runs `degrau margins`: 0 on success, 2 on bad input.
 pub fn main(args: &MarginsArgs, lang: Lang) -> ExitCode {
-    match run(args, lang) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(LoopError::Cli(CliError::WriteOutput(e))) if e.kind() == io::ErrorKind::BrokenPipe => {
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("{}: {}", StepPhrase::Error.get(lang), e.text(lang));
-            ExitCode::from(2)
-        }
-    }
+    super::exit_code(
+        run(args, lang),
+        |e| match e {
+            LoopError::Cli(c) => Some(c),
+            _ => None,
+        },
+        lang,
+    )
 }

@@ -475,15 +475,29 @@ fn refuse_arguments(e: &clap::Error, args: &[std::ffi::OsString], lang: Lang) ->
 
 /// The exit code of a headless command, its error printed in words.
 fn finish(result: Result<(), CliError>, lang: Lang) -> ExitCode {
+    exit_code(result, |e| Some(e), lang)
+}
+
+/// The exit code of a command's result: success, or a closed pipe (the reader stopped
+/// reading: nothing left to do), is 0; any other error is printed in words and is
+/// [`EXIT_BAD_INPUT`]. `cli` reads the command's error as the common [`CliError`] where it
+/// is one.
+pub fn exit_code<E: Localize>(
+    result: Result<(), E>,
+    cli: impl Fn(&E) -> Option<&CliError>,
+    lang: Lang,
+) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(CliError::WriteOutput(e)) if e.kind() == io::ErrorKind::BrokenPipe => {
-            ExitCode::SUCCESS // the reader stopped reading: nothing left to do
-        }
-        Err(e) => {
-            eprintln!("{}: {}", StepPhrase::Error.get(lang), e.text(lang));
-            ExitCode::from(EXIT_BAD_INPUT)
-        }
+        Err(e) => match cli(&e) {
+            Some(CliError::WriteOutput(w)) if w.kind() == io::ErrorKind::BrokenPipe => {
+                ExitCode::SUCCESS
+            }
+            _ => {
+                eprintln!("{}: {}", StepPhrase::Error.get(lang), e.text(lang));
+                ExitCode::from(EXIT_BAD_INPUT)
+            }
+        },
     }
 }
 

@@ -18,7 +18,6 @@ use crate::lti::control::tuning::{ModelKind, formula, tune};
 use crate::lti::control::{
     Action, ProcessModel, RowError, Rule, RuleRow, TunedLoop, Tuning, rule_table, tuned_loop,
 };
-use crate::text::cli::StepPhrase;
 use crate::text::control::{self as words, ControlWord, TuneWord};
 use crate::text::{Lang, Localize};
 
@@ -472,14 +471,12 @@ pub fn run_tune(args: &TuneArgs, lang: Lang) -> Result<(), TuneError> {
 
 /// The exit code of `degrau tune`, its error printed in words.
 pub fn main(args: &TuneArgs, lang: Lang) -> ExitCode {
-    match run_tune(args, lang) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(TuneError::Cli(CliError::WriteOutput(e))) if e.kind() == io::ErrorKind::BrokenPipe => {
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("{}: {}", StepPhrase::Error.get(lang), e.text(lang));
-            ExitCode::from(2)
-        }
-    }
+    super::exit_code(
+        run_tune(args, lang),
+        |e| match e {
+            TuneError::Cli(c) => Some(c),
+            _ => None,
+        },
+        lang,
+    )
 }
