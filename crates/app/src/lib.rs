@@ -27,6 +27,7 @@ pub mod design;
 pub mod dialog;
 pub mod export;
 pub mod field;
+pub mod frequency;
 pub mod grid;
 pub mod identify;
 pub mod job;
@@ -97,6 +98,8 @@ pub enum Mode {
     LeastSquares,
     /// From a process model to a controller: rules, drags, the loop's responses.
     Tune,
+    /// The loop in frequency: Bode, margins, Nyquist, the sampled model on the z-plane.
+    Frequency,
 }
 
 /// What is kept between runs (the state file of [`persist`]). The Design mode's part is
@@ -110,6 +113,8 @@ pub struct Saved {
     pub design: design::Saved,
     /// The Tune mode's model, controller, τc and rule.
     pub tune: tune::Saved,
+    /// The Frequency mode's source, tab, sampling period and Nyquist zoom.
+    pub frequency: frequency::Saved,
     pub dark: bool,
     /// The language of every label.
     pub lang: Lang,
@@ -124,6 +129,7 @@ impl Default for Saved {
             ident: identify::Saved::default(),
             design: design::Saved::default(),
             tune: tune::Saved::default(),
+            frequency: frequency::Saved::default(),
             dark: false,
             lang: Lang::default(),
             scale: 1.0,
@@ -157,6 +163,7 @@ pub enum Command {
     Identify(identify::Command),
     Lsq(lsq::Command),
     Tune(tune::Command),
+    Frequency(frequency::Command),
 }
 
 /// What the Identify mode asks of the app after a command.
@@ -195,6 +202,8 @@ pub struct DegrauApp {
     pub lsq: lsq::Session,
     /// The Tune mode's derived data (its settings are `saved.tune`).
     pub tune: tune::Session,
+    /// The Frequency mode's derived data (its settings are `saved.frequency`).
+    pub frequency: frequency::Session,
     /// Messages for the student (what could not be restored or saved), dismissable.
     pub notices: Vec<Notice>,
     export: ExportState,
@@ -240,6 +249,7 @@ impl DegrauApp {
             ident,
             lsq: lsq::Session::default(),
             tune,
+            frequency: frequency::Session::default(),
             notices: Vec::new(),
             export: ExportState::default(),
             plot_rect: None,
@@ -360,11 +370,39 @@ impl DegrauApp {
                 .into_iter()
                 .map(Command::Tune)
                 .collect(),
+            Mode::Frequency => {
+                self.frequency
+                    .sync(&self.saved.frequency, self.frequency_sources());
+                frequency::show(ui, &self.frequency, &self.saved.frequency, look)
+                    .into_iter()
+                    .map(Command::Frequency)
+                    .collect()
+            }
             Mode::Design => {
                 let shown = design::show(ui, &self.design, &self.saved.design, look);
                 self.plot_rect = shown.plot_rect;
                 shown.commands.into_iter().map(Command::Design).collect()
             }
+        }
+    }
+
+    /// The transfer functions the Frequency mode can show, from the other modes.
+    fn frequency_sources(&self) -> frequency::Sources {
+        let alone = |plant: degrau_lti::TransferFunction| frequency::Source {
+            plant,
+            controller: None,
+        };
+        frequency::Sources {
+            design: self.design.analysis.tf.clone().ok().map(alone),
+            tune: self
+                .saved
+                .tune
+                .plant_and_controller()
+                .map(|(plant, c)| frequency::Source {
+                    plant,
+                    controller: Some(c),
+                }),
+            fitted: self.ident.fitted_transfer_function().map(|(tf, _)| alone(tf)),
         }
     }
 
@@ -497,6 +535,7 @@ impl DegrauApp {
                 return self.ident.apply(c).map_or_else(Vec::new, after_identify);
             }
             Command::Tune(c) => self.tune.apply(&mut self.saved.tune, c),
+            Command::Frequency(c) => self.frequency.apply(&mut self.saved.frequency, c),
             Command::Lsq(c) => {
                 let design = self.design.analysis.tf.as_ref().ok();
                 return self

@@ -65,6 +65,11 @@ impl DegrauApp {
                 Mode::Tune,
                 crate::words::tune::Tune::ModeName.get(lang),
             );
+            ui.selectable_value(
+                &mut mode,
+                Mode::Frequency,
+                crate::words::frequency::Frequency::ModeName.get(lang),
+            );
             if mode != self.saved.mode {
                 out.push(Command::SetMode(mode));
             }

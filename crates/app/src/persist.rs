@@ -31,6 +31,7 @@ use serde_json::{Map, Value};
 
 use super::Saved;
 use super::design;
+use super::frequency;
 use super::design::plane::{SPlaneState, View};
 use super::design::state::{self, RootRole, System};
 use super::identify;
@@ -194,6 +195,7 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
         mode: f.take("mode", d.mode),
         ident: restore_ident(f.nested("ident"), d.ident),
         tune: restore_tune(f.nested("tune"), d.tune),
+        frequency: restore_frequency(f.nested("frequency"), d.frequency),
         design,
         dark: f.take("dark", d.dark),
         lang: f.take("lang", d.lang),
@@ -313,6 +315,18 @@ fn restore_tune(mut f: Fields<'_>, d: tune::Saved) -> tune::Saved {
             })
         }),
         rule: f.take("rule", d.rule),
+    }
+}
+
+/// The Frequency mode's settings: a sampling period that is a positive number of seconds.
+fn restore_frequency(mut f: Fields<'_>, d: frequency::Saved) -> frequency::Saved {
+    frequency::Saved {
+        source: f.take("source", d.source),
+        tab: f.take("tab", d.tab),
+        h: f.checked("h", d.h, |&h| {
+            frequency::session::check_period(h).map_err(|_| Reason::SamplingPeriod(h))
+        }),
+        whole_curve: f.take("whole_curve", d.whole_curve),
     }
 }
 

@@ -121,6 +121,8 @@ pub enum Reason {
     TuneModel(crate::tune::model::ModelProblem),
     /// The Tune mode's controller numbers make no controller.
     Controller(degrau_lti::control::ControllerError),
+    /// The Frequency mode's sampling period is not a positive number of seconds.
+    SamplingPeriod(f64),
 }
 
 /// A part of a saved session that could not be restored and was reset to its default.

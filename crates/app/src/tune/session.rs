@@ -102,6 +102,16 @@ pub struct Saved {
     pub rule: Option<String>,
 }
 
+impl Saved {
+    /// The plant (its dead time included) and the controller of the loop, when both are
+    /// usable (the Frequency mode's loop source).
+    pub fn plant_and_controller(&self) -> Option<(degrau_lti::TransferFunction, Controller)> {
+        self.model.check().ok()?;
+        let plant = self.model.transfer_function()?;
+        Some((plant, self.controller.controller().ok()?))
+    }
+}
+
 /// Checks a τc: a positive number of seconds.
 pub fn check_tc(tc: f64) -> Result<(), ModelProblem> {
     if tc.is_finite() && tc > 0.0 && tc <= super::model::MAX_TIME {

@@ -287,6 +287,16 @@ impl Localize for Reason {
             ),
             Reason::TuneModel(p) => p.text(lang),
             Reason::Controller(e) => e.text(lang),
+            Reason::SamplingPeriod(h) => say(
+                format!(
+                    "the sampling period h = {} s is not a positive number",
+                    number(h, lang)
+                ),
+                format!(
+                    "o período de amostragem h = {} s não é um número positivo",
+                    number(h, lang)
+                ),
+            ),
             Reason::Scale(s) => say(
                 format!(
                     "the presentation size {} is not from 1 to 2",
@@ -383,6 +393,7 @@ pub fn reasons() -> Vec<Reason> {
         Reason::Scale(3.5),
         Reason::TuneModel(crate::tune::model::ModelProblem::Delay(-1.0)),
         Reason::Controller(degrau_lti::control::ControllerError::IntegralTime(0.0)),
+        Reason::SamplingPeriod(-0.1),
     ]
 }
 
