@@ -11,5 +11,7 @@ mod lti_feedback;
 mod lti_known_answers;
 mod lti_locus;
 mod lti_margins;
+mod lti_nyquist;
 mod lti_properties;
 mod lti_tuning;
+mod rng;
