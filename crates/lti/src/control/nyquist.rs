@@ -10,7 +10,7 @@
 //! roots of d there. The image of the lower half of the contour mirrors the upper half's, so
 //! the upper half is walked (from s = 0, or round a pole at 0 from its right, to jR, then the
 //! arc to R) and its turning doubled. Steps are taken so that 1 + L moves less than 0.2·|1 + L|
-//! (and L less than 0.05·|L| + 0.01, so the curve drawn is smooth); R is taken where a bound
+//! (and L less than 0.02·(|L| + 0.25), so the curve drawn is smooth); R is taken where a bound
 //! keeps 1 + L within a disc that excludes 0 on the whole arc, so the arc adds only its
 //! principal angle, and L within 1e-3 of its high-frequency limit, where the curve drawn ends.
 //!
@@ -57,6 +57,9 @@ pub struct Nyquist {
 
 /// The most steps of the walk before giving up.
 const MAX_STEPS: usize = 4_000_000;
+
+/// The largest step of the curve drawn, relative to |L| + 0.25.
+const DRAWN: f64 = 0.02;
 
 /// How close to its high-frequency limit |L| comes before the curve ends.
 const SETTLED: f64 = 1e-3;
@@ -300,7 +303,7 @@ impl<'s, 'a> Walk<'s, 'a> {
             if vanished {
                 return Err(StabilityError::Marginal { w: s(t).im });
             }
-            let tol = (0.2 * one.norm()).min(0.05 * prev.norm() + 0.01);
+            let tol = (0.2 * one.norm()).min(DRAWN * (prev.norm() + 0.25));
             let tol = if draw { tol } else { 0.2 * one.norm() };
             if (next - prev).norm() <= tol && (mid - prev).norm() <= tol {
                 self.turned += ((next + 1.0) / one).arg();
