@@ -12,4 +12,5 @@ mod lti_known_answers;
 mod lti_locus;
 mod lti_margins;
 mod lti_properties;
+mod lti_python_control;
 mod lti_tuning;
