@@ -4,12 +4,13 @@
 use degrau_lti::bode::{asymptotes, bode, frequency_grid, log_grid};
 use degrau_lti::{C64, TransferFunction};
 
-/// A small linear congruential generator: the same systems on every run.
-struct Lcg(u64);
+/// A small linear congruential generator: the same systems on every run (the z-plane tests
+/// draw theirs with it too).
+pub(crate) struct Lcg(pub(crate) u64);
 
 impl Lcg {
     /// A number in [0, 1).
-    fn next(&mut self) -> f64 {
+    pub(crate) fn next(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6_364_136_223_846_793_005)
@@ -17,7 +18,7 @@ impl Lcg {
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
 
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
+    pub(crate) fn range(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.next()
     }
 }

@@ -14,3 +14,4 @@ mod lti_margins;
 mod lti_properties;
 mod lti_python_control;
 mod lti_tuning;
+mod lti_zplane;
