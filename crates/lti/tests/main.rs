@@ -13,5 +13,7 @@ mod lti_locus;
 mod lti_margins;
 mod lti_nyquist;
 mod lti_properties;
+mod lti_python_control;
 mod lti_tuning;
+mod lti_zplane;
 mod rng;
