@@ -12,7 +12,9 @@ use std::process::ExitCode;
 use clap::Args;
 use serde::Serialize;
 
-use crate::lti::control::{Action, GainCrossing, Margins, PhaseCrossing, margins};
+use crate::lti::control::{
+    Action, GainCrossing, Margins, Nyquist, PhaseCrossing, StabilityError, margins, nyquist,
+};
 use crate::lti::feedback::Limit;
 use crate::text::margins::MarginLine;
 use crate::text::{Lang, Localize};
@@ -81,6 +83,19 @@ pub struct MarginsReport<'a> {
     /// Null when |T(0)| is 0 or infinite.
     pub bandwidth: Option<Limit>,
     pub crossings: Crossings<'a>,
+    /// The Nyquist criterion; null when it could not be counted.
+    pub nyquist: Option<NyquistCount>,
+}
+
+/// The Nyquist criterion's numbers: Z = N + P.
+#[derive(Debug, Serialize)]
+pub struct NyquistCount {
+    /// N, clockwise encirclements of −1.
+    pub encirclements: i64,
+    /// P, open-loop poles in the right half-plane.
+    pub open_loop_unstable: usize,
+    /// Z, closed-loop poles in the right half-plane.
+    pub closed_loop_unstable: i64,
 }
 
 fn limit(x: f64) -> Limit {
@@ -92,7 +107,7 @@ fn limit(x: f64) -> Limit {
 }
 
 impl<'a> MarginsReport<'a> {
-    pub fn new(m: &'a Margins) -> Self {
+    pub fn new(m: &'a Margins, ny: &Result<Nyquist, StabilityError>) -> Self {
         Self {
             gm: limit(m.gm),
             gm_db: limit(m.gm_db),
@@ -106,12 +121,24 @@ impl<'a> MarginsReport<'a> {
                 phase: &m.phase_crossings,
                 gain: &m.gain_crossings,
             },
+            nyquist: ny.as_ref().ok().map(|n| NyquistCount {
+                encirclements: n.encirclements,
+                open_loop_unstable: n.open_loop_unstable,
+                closed_loop_unstable: n.closed_loop_unstable,
+            }),
         }
     }
 }
 
-/// The plant and the controller of the flags, and their margins.
-fn compute(args: &MarginsArgs) -> Result<(String, Margins), LoopError> {
+/// What `degrau margins` reports of a loop.
+struct Computed {
+    plant: String,
+    margins: Margins,
+    nyquist: Result<Nyquist, StabilityError>,
+}
+
+/// The plant and the controller of the flags, their margins and the Nyquist count.
+fn compute(args: &MarginsArgs) -> Result<Computed, LoopError> {
     let action = args.controller.unwrap_or(Action::P);
     let loop_args = LoopArgs {
         system: args.system.clone(),
@@ -127,11 +154,20 @@ fn compute(args: &MarginsArgs) -> Result<(String, Margins), LoopError> {
     };
     let plant = loop_args.spec()?.transfer_function()?;
     let c = controller_of(&loop_args, action)?;
-    Ok((plant.describe_rounded(), margins(&plant, &c)))
+    Ok(Computed {
+        plant: plant.describe_rounded(),
+        margins: margins(&plant, &c),
+        nyquist: nyquist(&plant, &c),
+    })
 }
 
 /// The text report's lines.
-pub fn text_lines(plant: &str, m: &Margins, lang: Lang) -> Vec<String> {
+fn text_lines(
+    plant: &str,
+    m: &Margins,
+    ny: &Result<Nyquist, StabilityError>,
+    lang: Lang,
+) -> Vec<String> {
     let mut lines = vec![MarginLine::Loop(plant.to_string())];
     lines.push(match m.w_pc {
         Some(w) => MarginLine::Gain {
@@ -155,16 +191,24 @@ pub fn text_lines(plant: &str, m: &Margins, lang: Lang) -> Vec<String> {
         phase: m.phase_crossings.len(),
         gain: m.gain_crossings.len(),
     });
+    lines.push(match ny {
+        Ok(n) => MarginLine::Nyquist {
+            n: n.encirclements,
+            p: n.open_loop_unstable,
+            z: n.closed_loop_unstable,
+        },
+        Err(e) => MarginLine::NoNyquist(e.text(lang)),
+    });
     lines.iter().map(|l| l.text(lang)).collect()
 }
 
 fn run(args: &MarginsArgs, lang: Lang) -> Result<(), LoopError> {
-    let (plant, m) = compute(args)?;
+    let c = compute(args)?;
     let out = if args.json {
-        serde_json::to_string(&MarginsReport::new(&m))
+        serde_json::to_string(&MarginsReport::new(&c.margins, &c.nyquist))
             .map_err(|e| CliError::JsonFields(e.to_string()))?
     } else {
-        text_lines(&plant, &m, lang).join("\n")
+        text_lines(&c.plant, &c.margins, &c.nyquist, lang).join("\n")
     };
     writeln!(io::stdout().lock(), "{out}").map_err(CliError::WriteOutput)?;
     Ok(())

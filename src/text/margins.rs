@@ -31,6 +31,11 @@ pub enum MarginLine {
     NoBandwidth,
     /// How many crossings of each kind were found.
     Crossings { phase: usize, gain: usize },
+    /// The Nyquist criterion: N clockwise encirclements of −1, P open-loop poles in the right
+    /// half-plane, Z = N + P closed-loop roots there.
+    Nyquist { n: i64, p: usize, z: i64 },
+    /// The Nyquist count could not be made (the reason, in words).
+    NoNyquist(String),
 }
 
 /// A number with six significant digits and `lang`'s decimal separator, ∞ as such.
@@ -116,6 +121,25 @@ impl Localize for MarginLine {
                 format!("Crossings found: {phase} of phase, {gain} of gain"),
                 format!("Cruzamentos encontrados: {phase} de fase, {gain} de ganho"),
             ),
+            MarginLine::Nyquist { n, p, z } => {
+                let verdict = if *z == 0 {
+                    lang.pick("stable", "estável")
+                } else {
+                    lang.pick("unstable", "instável")
+                };
+                lang.pick(
+                    format!(
+                        "Nyquist: N = {n} clockwise encirclements of −1, P = {p} open-loop poles in the right half-plane, Z = N + P = {z} closed-loop poles there: {verdict}"
+                    ),
+                    format!(
+                        "Nyquist: N = {n} voltas de −1 no sentido horário, P = {p} polos de malha aberta no semiplano direito, Z = N + P = {z} polos de malha fechada nele: {verdict}"
+                    ),
+                )
+            }
+            MarginLine::NoNyquist(why) => lang.pick(
+                format!("Nyquist: no count ({why})"),
+                format!("Nyquist: sem contagem ({why})"),
+            ),
         }
     }
 }
@@ -139,6 +163,8 @@ pub fn messages() -> Vec<Message> {
         MarginLine::Bandwidth(2.0),
         MarginLine::NoBandwidth,
         MarginLine::Crossings { phase: 1, gain: 1 },
+        MarginLine::Nyquist { n: 2, p: 0, z: 2 },
+        MarginLine::NoNyquist("a closed-loop root on the imaginary axis".into()),
     ]
     .iter()
     .map(|l| Message::of(format!("margins::{l:?}"), l))

@@ -64,18 +64,49 @@ fn a_missing_margin_is_inf() {
     ]);
     assert!(v["ms"].is_null(), "{v}");
     assert!(num(&v["gm"]) < 1.0);
+    // Its Nyquist curve goes round −1 (N = 2 over the whole contour), P = 0: Z = 2, the
+    // complex pair of s³ + 3s² + 2s + 12 lies right of the axis.
+    assert_eq!(v["nyquist"]["encirclements"], 2, "{v}");
+    assert_eq!(v["nyquist"]["open_loop_unstable"], 0);
+    assert_eq!(v["nyquist"]["closed_loop_unstable"], 2);
+}
+
+#[test]
+fn the_nyquist_count_of_an_open_loop_unstable_plant() {
+    // 2/(s − 1): closed loop s + 1, stable: P = 1 and one counterclockwise turn, N = −1.
+    let v = json(&["margins", "--num", "2", "--den", "1,-1", "--json"]);
+    assert_eq!(v["nyquist"]["encirclements"], -1, "{v}");
+    assert_eq!(v["nyquist"]["open_loop_unstable"], 1);
+    assert_eq!(v["nyquist"]["closed_loop_unstable"], 0);
+    // At the edge, 8/(s + 1)³: a closed-loop pair on the axis (±j√3), no count.
+    let out = degrau(&["margins", "--num", "8", "--den", "1,3,3,1"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        stdout(&out).contains("Nyquist: no count"),
+        "{}",
+        stdout(&out)
+    );
 }
 
 #[test]
 fn the_text_in_both_languages() {
     for (lang, words) in [
-        ("en", ["Gain margin: 3 (", "Phase margin:", "Delay margin:"]),
+        (
+            "en",
+            [
+                "Gain margin: 3 (",
+                "Phase margin:",
+                "Delay margin:",
+                "Z = N + P = 0 closed-loop poles there: stable",
+            ],
+        ),
         (
             "pt",
             [
                 "Margem de ganho: 3 (",
                 "Margem de fase:",
                 "Margem de atraso:",
+                "Z = N + P = 0 polos de malha fechada nele: estável",
             ],
         ),
     ] {

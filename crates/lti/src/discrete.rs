@@ -184,6 +184,16 @@ impl DiscreteTf {
         Ok(poly::roots(&self.a)?)
     }
 
+    /// The zeros: the roots of b1·z^(nb−1) + … + b_nb. The power of z that the delays leave,
+    /// z^(na − nb + 1 − nk), adds zeros (or poles) at z = 0 that are not listed.
+    pub fn zeros(&self) -> Result<Vec<C64>, DiscreteError> {
+        let first = self.b.iter().position(|&c| c != 0.0).unwrap_or(0);
+        if self.b.len() - first <= 1 {
+            return Ok(Vec::new());
+        }
+        Ok(poly::roots(&self.b[first..])?)
+    }
+
     /// The static gain H(1) = ΣB/ΣA (±∞ with a pole at z = 1); for a model of [`c2d`], the
     /// exact G(0).
     pub fn dc_gain(&self) -> f64 {
@@ -626,6 +636,19 @@ mod tests {
         assert_eq!(d.na(), 1);
         assert_eq!(d.poles().unwrap(), vec![C64::new((-0.2f64).exp(), 0.0)]);
         assert_eq!(d.dc_gain(), 1.5);
+    }
+
+    #[test]
+    fn the_zoh_image_of_a_double_integrator_has_its_zero_at_minus_one() {
+        // 1/s² → h²(z + 1)/(2(z − 1)²).
+        let tf = TransferFunction::from_coeffs(&[1.0], &[1.0, 0.0, 0.0]).unwrap();
+        let z = c2d(&tf, 0.1).unwrap().zeros().unwrap();
+        assert_eq!(z.len(), 1);
+        assert!((z[0] - C64::new(-1.0, 0.0)).norm() < 1e-12, "{z:?}");
+        let d = DiscreteTf::new(vec![1.0, -1.5, 0.5], vec![0.0, 2.0, -1.0], 1, 1.0).unwrap();
+        assert_eq!(d.zeros().unwrap(), vec![C64::new(0.5, 0.0)]);
+        let gain = DiscreteTf::new(vec![1.0, -0.5], vec![3.0], 1, 1.0).unwrap();
+        assert!(gain.zeros().unwrap().is_empty());
     }
 
     #[test]

@@ -1,26 +1,9 @@
 //! The Bode diagram: magnitude and phase against a direct evaluation of G(jω) on random
 //! systems with dead times, the phase continuous, and the notes' asymptotes.
 
+use crate::rng::Lcg;
 use degrau_lti::bode::{asymptotes, bode, frequency_grid, log_grid};
 use degrau_lti::{C64, TransferFunction};
-
-/// A small linear congruential generator: the same systems on every run.
-struct Lcg(u64);
-
-impl Lcg {
-    /// A number in [0, 1).
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-}
 
 /// Roots of order `n`: real ones and complex pairs, in either half plane (mostly left).
 fn random_roots(rng: &mut Lcg, n: usize) -> Vec<C64> {

@@ -3,6 +3,7 @@
 //! closed-loop roots in the right half-plane against the roots of high-order Padé loops; the
 //! peak sensitivity against a dense grid.
 
+use crate::rng::Lcg;
 use degrau_lti::locus::multiply;
 use std::f64::consts::{E, PI};
 
@@ -649,26 +650,9 @@ fn a_controller_stabilises_an_unstable_plant() {
     );
 }
 
-/// A small deterministic generator of numbers in [0, 1).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        (lo.ln() + self.next() * (hi.ln() - lo.ln())).exp()
-    }
-}
-
 /// A random loop: P, PI or PID (scaled from ZN ultimate-cycle settings) on a random FOPTD
 /// or SOPTD model.
-fn random_loop(rng: &mut Lcg) -> (TransferFunction, Controller) {
+pub(crate) fn random_loop(rng: &mut Lcg) -> (TransferFunction, Controller) {
     let k = rng.log_uniform(0.3, 3.0) * if rng.next() < 0.2 { -1.0 } else { 1.0 };
     let tau = rng.log_uniform(0.5, 20.0);
     let theta = tau * rng.log_uniform(0.05, 2.0);

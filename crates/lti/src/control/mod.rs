@@ -9,6 +9,7 @@ pub mod delay_loop;
 pub mod frequency;
 pub mod margins;
 pub mod metrics;
+pub mod nyquist;
 pub mod table;
 pub mod tuning;
 
@@ -17,5 +18,6 @@ pub use delay_loop::{DelayLoopError, Horizon, LoopInput, LoopResponse, loop_resp
 pub use frequency::{Sensitivity, StabilityError, Ultimate};
 pub use margins::{GainCrossing, Margins, PhaseCrossing, margins};
 pub use metrics::{LoopMetrics, Peak, loop_metrics};
+pub use nyquist::{Nyquist, NyquistPoint, nyquist};
 pub use table::{RowError, RuleRow, TunedLoop, rule_table, tuned_loop};
 pub use tuning::{ModelError, NotApplicable, ProcessModel, Rule, Tuning};
