@@ -43,8 +43,8 @@ fn numbers(text: &str) -> Vec<f64> {
 
 /// The label that starts with `start`.
 fn label_starting(h: &Harness<'_, DegrauApp>, start: &str) -> String {
-    h.get_all_by_role(egui::accesskit::Role::Label)
-        .filter_map(|n| n.accesskit_node().label())
+    h.query_all_by_label_contains(start)
+        .filter_map(|n| n.accesskit_node().value())
         .find(|l| l.starts_with(start))
         .unwrap_or_else(|| panic!("no label starting with {start:?}"))
 }
@@ -65,7 +65,9 @@ fn design_tf(h: &Harness<'_, DegrauApp>) -> TransferFunction {
 fn hovering_the_bode_magnitude_reads_the_exact_values() {
     let mut h = frequency_app(Saved::default());
     h.get_by_label("Hover a plot to read ω, the magnitude and the phase.");
-    let plot = h.get_by_role_and_label(egui::accesskit::Role::Canvas, "Bode magnitude").rect();
+    let plot = h
+        .get_by_role_and_label(egui::accesskit::Role::Canvas, "Bode magnitude")
+        .rect();
     h.hover_at(plot.center() + egui::vec2(plot.width() * 0.1, 0.0));
     h.run_steps(2);
     let text = label_starting(&h, "ω = ");
@@ -77,9 +79,15 @@ fn hovering_the_bode_magnitude_reads_the_exact_values() {
     // The printed ω is rounded to 4 digits: the curve moves by at most 60 dB and 270° a
     // decade, 5e-4 of ω is 2.2e-4 decades.
     assert!((db - edb).abs() <= rounding(db, 4) + 0.02, "{text}: {edb}");
-    assert!((deg - edeg).abs() <= rounding(deg, 4) + 0.1, "{text}: {edeg}");
+    assert!(
+        (deg - edeg).abs() <= rounding(deg, 4) + 0.1,
+        "{text}: {edeg}"
+    );
     let eratio = 10f64.powf(edb / 20.0);
-    assert!((ratio - eratio).abs() <= rounding(ratio, 4) + 0.003 * eratio, "{text}: {eratio}");
+    assert!(
+        (ratio - eratio).abs() <= rounding(ratio, 4) + 0.003 * eratio,
+        "{text}: {eratio}"
+    );
     assert!(text.contains("|G|") && text.contains("∠G"), "{text}");
 }
 
@@ -91,12 +99,20 @@ fn the_tune_loop_shows_its_margins() {
     let (plant, c) = h.state().saved.tune.plant_and_controller().expect("a loop");
     let m = margins(&plant, &c);
     let gm = numbers(&label_starting(&h, "Gain margin GM = "));
-    assert!((gm[0] - m.gm).abs() <= rounding(m.gm, 4), "{gm:?} vs {}", m.gm);
+    assert!(
+        (gm[0] - m.gm).abs() <= rounding(m.gm, 4),
+        "{gm:?} vs {}",
+        m.gm
+    );
     assert!((gm[1] - m.gm_db).abs() <= rounding(m.gm_db, 4), "{gm:?}");
     let w_pc = m.w_pc.expect("a phase crossover");
     assert!((gm[2] - w_pc).abs() <= rounding(w_pc, 4), "{gm:?}");
     let pm = numbers(&label_starting(&h, "Phase margin PM = "));
-    assert!((pm[0] - m.pm).abs() <= rounding(m.pm, 4), "{pm:?} vs {}", m.pm);
+    assert!(
+        (pm[0] - m.pm).abs() <= rounding(m.pm, 4),
+        "{pm:?} vs {}",
+        m.pm
+    );
     let w_gc = m.w_gc.expect("a gain crossover");
     assert!((pm[1] - w_gc).abs() <= rounding(w_gc, 4), "{pm:?}");
     // K·e^{−2s}/(10s + 1) with SIMC's PI: L = 0.25·e^{−2s}/s, PM = 90° − 0.5 rad.
@@ -175,7 +191,9 @@ fn a_bad_sampling_period_is_refused_and_the_old_one_stays() {
     saved.frequency.h = 0.5;
     let mut h = frequency_app(saved);
     kit::type_number(&mut h, "Sampling period h (s)", 0, "0");
-    h.get_by_label_contains("Refused: the sampling period h must be a positive number of seconds, not 0");
+    h.get_by_label_contains(
+        "Refused: the sampling period h must be a positive number of seconds, not 0",
+    );
     assert_eq!(h.state().saved.frequency.h, 0.5);
     kit::type_number(&mut h, "Sampling period h (s)", 0, "-1");
     assert_eq!(h.state().saved.frequency.h, 0.5);
@@ -207,7 +225,10 @@ fn the_frequency_settings_survive_a_restart() {
     h.run_steps(2);
     kit::type_number(&mut h, "Sampling period h (s)", 0, "0,25");
     let kept = h.state().saved.frequency;
-    assert_eq!((kept.source, kept.tab, kept.h), (SourceKind::Tune, Tab::ZPlane, 0.25));
+    assert_eq!(
+        (kept.source, kept.tab, kept.h),
+        (SourceKind::Tune, Tab::ZPlane, 0.25)
+    );
     let dir = std::env::temp_dir().join(format!("degrau-frequency-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let path = dir.join("state.json");

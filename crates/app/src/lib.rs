@@ -402,7 +402,10 @@ impl DegrauApp {
                     plant,
                     controller: Some(c),
                 }),
-            fitted: self.ident.fitted_transfer_function().map(|(tf, _)| alone(tf)),
+            fitted: self
+                .ident
+                .fitted_transfer_function()
+                .map(|(tf, _)| alone(tf)),
         }
     }
 

@@ -49,7 +49,7 @@ impl DegrauApp {
         let kept = &self.saved.design;
         egui::MenuBar::new().ui(ui, |ui| {
             let mut mode = self.saved.mode;
-            // Four modes and the rest of the bar in a 1000-point window in Portuguese: the
+            // Five modes and the rest of the bar in a 1000-point window in Portuguese: the
             // tabs sit a little closer than egui's spacing.
             let spacing = ui.spacing().item_spacing.x;
             ui.spacing_mut().item_spacing.x = spacing / 2.0;
@@ -170,17 +170,21 @@ impl DegrauApp {
                     }
                 }
             });
-            if ui
-                .add_enabled(history.can_undo(), egui::Button::new(T::Undo.get(lang)))
-                .clicked()
-            {
-                out.push(Command::Design(design::Command::Undo));
-            }
-            if ui
-                .add_enabled(history.can_redo(), egui::Button::new(T::Redo.get(lang)))
-                .clicked()
-            {
-                out.push(Command::Design(design::Command::Redo));
+            // Five modes leave no room for the bar's own undo and redo in the Frequency
+            // mode (which edits no system): the Edit menu and the keys keep them.
+            if self.saved.mode != Mode::Frequency {
+                if ui
+                    .add_enabled(history.can_undo(), egui::Button::new(T::Undo.get(lang)))
+                    .clicked()
+                {
+                    out.push(Command::Design(design::Command::Undo));
+                }
+                if ui
+                    .add_enabled(history.can_redo(), egui::Button::new(T::Redo.get(lang)))
+                    .clicked()
+                {
+                    out.push(Command::Design(design::Command::Redo));
+                }
             }
             ui.separator();
             out.extend(self.size_and_language(ui, look));

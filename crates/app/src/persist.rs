@@ -31,9 +31,9 @@ use serde_json::{Map, Value};
 
 use super::Saved;
 use super::design;
-use super::frequency;
 use super::design::plane::{SPlaneState, View};
 use super::design::state::{self, RootRole, System};
+use super::frequency;
 use super::identify;
 use super::look::clamp_scale;
 use super::tune;

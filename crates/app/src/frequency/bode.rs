@@ -7,7 +7,7 @@ use eframe::egui::{self, Id, RichText, Ui};
 use egui_plot::{GridInput, GridMark, HLine, Legend, Line, LineStyle, MarkerShape, Plot, Points};
 
 use degrau_lti::bode::bode;
-use degrau_words::{Lang, Localize};
+use degrau_words::Lang;
 
 use super::derived::LoopData;
 use super::session::Session;
@@ -65,7 +65,11 @@ pub fn show(ui: &mut Ui, session: &Session, data: &LoopData, look: &Look) {
         .y_axis_label(format!("∠{name} (°)"))
         .x_axis_label("ω (rad/s)")
         .show(ui, |plot| {
-            plot.hline(HLine::new("−180°", -180.0).color(look.palette.axis).width(1.0));
+            plot.hline(
+                HLine::new("−180°", -180.0)
+                    .color(look.palette.axis)
+                    .width(1.0),
+            );
             plot.line(
                 Line::new(T::Curve.get(lang), zip(&x, &data.bode.phase_deg))
                     .color(look.palette.main)
@@ -151,7 +155,7 @@ fn zip(x: &[f64], y: &[f64]) -> Vec<[f64; 2]> {
 
 /// A plot of the Bode tab: log-ω ticks, the app's y axis, x linked with the other plot.
 fn base(id: &'static str, lang: Lang, height: f32, width: f32) -> Plot<'static> {
-    let group = Id::new("bode axes");
+    let group = Id::unique("bode axes");
     crate::grid::app_axes(Plot::new(id), lang)
         .x_grid_spacer(decades)
         .x_axis_formatter(move |m, _| decade_label(m, lang))
@@ -222,7 +226,10 @@ mod tests {
 
     #[test]
     fn the_readout_writes_db_ratio_and_degrees() {
-        let text = readout(1.2345, -6.0206, -95.25, "G", Lang::En);
-        assert_eq!(text, "ω = 1.235 rad/s   |G| = -6.021 dB (0.5)   ∠G = -95.25°");
+        let text = readout(1.2346, -6.0206, -95.25, "G", Lang::En);
+        assert_eq!(
+            text,
+            "ω = 1.235 rad/s   |G| = -6.021 dB (0.5)   ∠G = -95.25°"
+        );
     }
 }

@@ -1,13 +1,14 @@
 //! What the Frequency mode shows, computed from its source: the loop's Bode diagram with its
-//! asymptotes, its margins and its closed-loop count ([`LoopData`]); the plant sampled with a
+//! asymptotes, its margins, its Nyquist curve and its closed-loop count ([`LoopData`]); the plant sampled with a
 //! zero-order hold at h, its poles and zeros, its stairs over the continuous step response,
 //! the sampling rules and d2c back ([`SampledData`]). Done on the UI thread when the source
 //! or h changed, never every frame.
 
 use degrau_lti::bode::{Asymptotes, Bode, asymptotes, bode, frequency_grid};
 use degrau_lti::control::frequency::closed_loop_unstable_roots;
-use degrau_lti::control::{Action, Controller, Margins, StabilityError, margins};
+use degrau_lti::control::{Action, Controller, Margins, Nyquist, StabilityError, margins, nyquist};
 use degrau_lti::discrete::{DiscreteError, DiscreteTf, c2d};
+use degrau_lti::locus::multiply;
 use degrau_lti::{C64, LtiError, StepInfoOptions, StepResponse, TransferFunction, analyse};
 
 use super::rules::{Facts, Judged, judge};
@@ -35,6 +36,8 @@ pub struct LoopData {
     /// The closed loop's roots in the right half-plane, counted from its characteristic
     /// equation.
     pub closed_loop: Result<usize, StabilityError>,
+    /// The Nyquist curve and its count Z = N + P.
+    pub nyquist: Result<Nyquist, StabilityError>,
 }
 
 /// The unit controller (L = G).
@@ -50,10 +53,14 @@ fn unit() -> Controller {
 }
 
 /// The loop of `controller` (none: L = G) around `plant`.
-pub fn loop_data(plant: &TransferFunction, controller: Option<&Controller>) -> Result<LoopData, LtiError> {
+pub fn loop_data(
+    plant: &TransferFunction,
+    controller: Option<&Controller>,
+) -> Result<LoopData, LtiError> {
     let c = controller.copied().unwrap_or_else(unit);
     let (nc, dc) = c.feedback_coeffs();
-    let l = TransferFunction::from_coeffs(&nc, &dc)?.series(plant)?;
+    let (n, d) = (multiply(&nc, &plant.num()), multiply(&dc, &plant.den()));
+    let l = TransferFunction::from_coeffs(&n, &d)?.with_delay(plant.delay())?;
     let w = frequency_grid(&l, BODE_POINTS);
     let asymptotes = asymptotes(&l);
     let asymptote_db = w.iter().map(|&w| asymptotes.value_db(w)).collect();
@@ -63,6 +70,7 @@ pub fn loop_data(plant: &TransferFunction, controller: Option<&Controller>) -> R
         asymptote_db,
         margins: margins(plant, &c),
         closed_loop: closed_loop_unstable_roots(plant, &c),
+        nyquist: nyquist(plant, &c),
         l,
     })
 }
@@ -136,14 +144,9 @@ fn zoh(tf: DiscreteTf, horizon: f64) -> Zoh {
         .filter(|(_, y)| y.is_finite())
         .flat_map(|(k, &y)| [[k as f64 * h, y], [(k + 1) as f64 * h, y]])
         .collect();
-    let zeros = if tf.b().len() > 1 {
-        degrau_lti::poly::roots(tf.b()).ok()
-    } else {
-        Some(Vec::new())
-    };
     Zoh {
         poles: tf.poles().unwrap_or_default(),
-        zeros,
+        zeros: tf.zeros().ok(),
         stairs,
         back: tf.d2c(),
         tf,

@@ -93,11 +93,19 @@ pub fn lines(m: &Margins, lang: Lang) -> Vec<String> {
     );
     let ms = match m.ms {
         Some(ms) => format!("{} = {}", T::MaxSensitivity.get(lang), value(ms, 4, lang)),
-        None => format!("{}: {}", T::MaxSensitivity.get(lang), T::NoneUnstable.get(lang)),
+        None => format!(
+            "{}: {}",
+            T::MaxSensitivity.get(lang),
+            T::NoneUnstable.get(lang)
+        ),
     };
     let bw = match m.bandwidth {
         Some(b) if b.is_finite() => format!("{} = {}", T::Bandwidth.get(lang), rad_s(b, lang)),
-        Some(_) => format!("{} = {}", T::Bandwidth.get(lang), T::BandwidthBeyond.get(lang)),
+        Some(_) => format!(
+            "{} = {}",
+            T::Bandwidth.get(lang),
+            T::BandwidthBeyond.get(lang)
+        ),
         None => format!("{}: {}", T::Bandwidth.get(lang), T::BandwidthNone.get(lang)),
     };
     vec![gm, pm, dm, ms, bw]

@@ -86,7 +86,10 @@ fn tabs(ui: &mut Ui, kept: &Saved, look: &Look, out: &mut Vec<Command>) {
             (Tab::Nyquist, T::TabNyquist),
             (Tab::ZPlane, T::TabZPlane),
         ] {
-            if ui.selectable_label(kept.tab == tab, name.get(look.lang)).clicked() && kept.tab != tab
+            if ui
+                .selectable_label(kept.tab == tab, name.get(look.lang))
+                .clicked()
+                && kept.tab != tab
             {
                 out.push(Command::SetTab(tab));
             }

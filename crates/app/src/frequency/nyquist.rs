@@ -1,28 +1,167 @@
-//! The Nyquist tab: the closed loop's count of right half-plane roots, from its
-//! characteristic equation.
+//! The Nyquist tab: L(jω) for ω > 0 (solid, arrows of increasing ω) and its mirror for
+//! ω < 0 (dashed), the −1 point and the unit circle, in a window that keeps −1 readable or
+//! the whole curve; beside it the criterion's verdict (N, P, Z = N + P) and the closed
+//! loop's count from its characteristic equation, which must agree (both are shown as
+//! computed if they ever do not).
 
-use eframe::egui::{self, Ui};
+use eframe::egui::{self, RichText, Ui};
+use egui_plot::{
+    Arrows, Legend, Line, LineStyle, MarkerShape, Plot, PlotBounds, PlotPoints, Points,
+};
 
-use degrau_words::Localize;
+use degrau_lti::control::{Nyquist, StabilityError};
+use degrau_words::{Lang, Localize};
 
 use super::commands::Command;
 use super::derived::LoopData;
+use super::nyquist_window::{pieces, window};
 use super::session::{Saved, Session};
 use crate::look::Look;
 use crate::words::frequency::{self as words, Frequency as T};
+
+/// The arrows of increasing ω drawn on the ω > 0 branch.
+const ARROWS: usize = 6;
 
 pub fn show(
     ui: &mut Ui,
     _session: &Session,
     data: &LoopData,
-    _kept: &Saved,
+    kept: &Saved,
     look: &Look,
-    _out: &mut Vec<Command>,
+    out: &mut Vec<Command>,
 ) {
     let lang = look.lang;
-    let direct = match &data.closed_loop {
-        Ok(z) => words::direct_count(*z, lang),
+    verdict(ui, data, look);
+    let mut whole = kept.whole_curve;
+    if ui
+        .checkbox(&mut whole, T::WholeCurve.get(lang))
+        .on_hover_text(T::WholeCurveHelp.get(lang))
+        .changed()
+    {
+        out.push(Command::SetWholeCurve(whole));
+    }
+    let Ok(n) = &data.nyquist else {
+        return;
+    };
+    let curve: Vec<[f64; 2]> = n.curve.iter().map(|p| [p.l.re, p.l.im]).collect();
+    let side = ui
+        .available_height()
+        .min(ui.available_width())
+        .max(crate::design::PLOT_MIN);
+    let bounds = window(&curve);
+    let shown = Plot::new("nyquist")
+        .data_aspect(1.0)
+        .width(ui.available_width().max(crate::design::PLOT_MIN))
+        .height(side)
+        .show_x(false)
+        .show_y(false)
+        .x_axis_label("Re L(jω)")
+        .y_axis_label("Im L(jω)")
+        .legend(Legend::default().background_alpha(0.75))
+        .show(ui, |plot| {
+            if !kept.whole_curve {
+                plot.set_plot_bounds(PlotBounds::from_min_max(bounds.0, bounds.1));
+            }
+            draw(plot, &curve, look);
+        });
+    crate::look::name_canvas(&shown.response, T::NyquistPlot.get(lang));
+}
+
+/// The curve, its mirror, the arrows, −1 and the unit circle.
+fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], look: &Look) {
+    let lang = look.lang;
+    let circle = PlotPoints::from_parametric_callback(
+        |t| (t.cos(), t.sin()),
+        0.0..=std::f64::consts::TAU,
+        200,
+    );
+    plot.line(
+        Line::new(T::UnitCircle.get(lang), circle)
+            .color(look.palette.grid)
+            .style(LineStyle::dashed_dense()),
+    );
+    for piece in pieces(curve) {
+        let mirror: Vec<[f64; 2]> = piece.iter().map(|p| [p[0], -p[1]]).collect();
+        plot.line(
+            Line::new(T::NegativeW.get(lang), mirror)
+                .color(look.palette.main)
+                .style(LineStyle::dashed_loose())
+                .width(1.4),
+        );
+        plot.line(
+            Line::new(words::POSITIVE_W, piece)
+                .color(look.palette.main)
+                .width(2.2),
+        );
+    }
+    let (tails, tips) = arrows(curve);
+    if !tails.is_empty() {
+        plot.arrows(
+            Arrows::new(words::POSITIVE_W, tails, tips)
+                .tip_length(12.0)
+                .color(look.palette.main),
+        );
+    }
+    plot.points(
+        Points::new(words::MINUS_ONE, vec![[-1.0, 0.0]])
+            .shape(MarkerShape::Plus)
+            .radius(8.0)
+            .color(look.palette.error),
+    );
+}
+
+/// A few short arrows along the drawn curve, pointing the way ω grows.
+fn arrows(curve: &[[f64; 2]]) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    let drawn: Vec<[f64; 2]> = pieces(curve).into_iter().flatten().collect();
+    if drawn.len() < 2 * ARROWS {
+        return (Vec::new(), Vec::new());
+    }
+    let step = drawn.len() / (ARROWS + 1);
+    (1..=ARROWS)
+        .map(|k| (drawn[k * step - 1], drawn[k * step]))
+        .filter(|(a, b)| a != b)
+        .unzip()
+}
+
+/// The criterion's verdict and the direct count, beside each other.
+fn verdict(ui: &mut Ui, data: &LoopData, look: &Look) {
+    let lang = look.lang;
+    let criterion = match &data.nyquist {
+        Ok(n) => criterion_text(n, lang),
         Err(e) => e.text(lang),
     };
+    let stable = matches!(&data.nyquist, Ok(n) if n.closed_loop_unstable == 0);
+    let colour = if stable {
+        look.palette.main
+    } else {
+        look.palette.error
+    };
+    ui.add(egui::Label::new(RichText::new(criterion).color(colour)).wrap());
+    let direct = direct_text(&data.closed_loop, lang);
     ui.add(egui::Label::new(format!("{} {direct}", T::Direct.get(lang))).wrap());
+    if let (Ok(n), Ok(z)) = (&data.nyquist, &data.closed_loop)
+        && n.closed_loop_unstable != *z as i64
+    {
+        ui.colored_label(look.palette.warning, T::Disagree.get(lang));
+    }
+}
+
+fn criterion_text(n: &Nyquist, lang: Lang) -> String {
+    let mut text = words::nyquist_verdict(
+        n.encirclements,
+        n.open_loop_unstable,
+        n.closed_loop_unstable,
+        lang,
+    );
+    if n.imaginary_poles > 0 {
+        text.push_str(&words::indented(n.imaginary_poles, lang));
+    }
+    text
+}
+
+fn direct_text(count: &Result<usize, StabilityError>, lang: Lang) -> String {
+    match count {
+        Ok(z) => words::direct_count(*z, lang),
+        Err(e) => e.text(lang),
+    }
 }

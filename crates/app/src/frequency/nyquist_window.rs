@@ -48,7 +48,13 @@ mod tests {
 
     #[test]
     fn a_huge_branch_is_cut_out() {
-        let curve = [[1.0, 0.0], [1e7, 0.0], [f64::NAN, 0.0], [0.5, 0.5], [0.1, 0.1]];
+        let curve = [
+            [1.0, 0.0],
+            [1e7, 0.0],
+            [f64::NAN, 0.0],
+            [0.5, 0.5],
+            [0.1, 0.1],
+        ];
         let p = pieces(&curve);
         assert_eq!(p, vec![vec![[1.0, 0.0]], vec![[0.5, 0.5], [0.1, 0.1]]]);
     }

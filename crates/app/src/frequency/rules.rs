@@ -23,12 +23,7 @@ impl Facts {
     pub fn of(plant: &TransferFunction, settling: Option<f64>) -> Self {
         let poles = plant.poles();
         let stable = !poles.is_empty() && poles.iter().all(|p| p.re < 0.0);
-        let tau_max = stable.then(|| {
-            poles
-                .iter()
-                .map(|p| -1.0 / p.re)
-                .fold(0.0, f64::max)
-        });
+        let tau_max = stable.then(|| poles.iter().map(|p| -1.0 / p.re).fold(0.0, f64::max));
         Self {
             tau_max,
             theta: plant.delay(),

@@ -8,8 +8,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use degrau_lti::{LtiError, TransferFunction};
 use degrau_lti::control::Controller;
+use degrau_lti::{LtiError, TransferFunction};
 
 use super::commands::Command;
 use super::derived::{LoopData, SampledData};

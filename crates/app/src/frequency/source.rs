@@ -35,7 +35,10 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look, out: &mut
         }
     }
     let Some(source) = &session.source else {
-        ui.add(egui::Label::new(RichText::new(T::NoSource.get(lang)).color(look.palette.warning)).wrap());
+        ui.add(
+            egui::Label::new(RichText::new(T::NoSource.get(lang)).color(look.palette.warning))
+                .wrap(),
+        );
         return;
     };
     ui.add_space(4.0);

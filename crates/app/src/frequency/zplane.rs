@@ -63,7 +63,14 @@ fn written(ui: &mut Ui, zoh: &Zoh, lang: Lang) {
         z_poly(tf.a(), lang)
     );
     ui.add(egui::Label::new(RichText::new(text).monospace()).wrap());
-    ui.add(egui::Label::new(format!("{} {}", T::PolesOfH.get(lang), roots_text(&zoh.poles, lang))).wrap());
+    ui.add(
+        egui::Label::new(format!(
+            "{} {}",
+            T::PolesOfH.get(lang),
+            roots_text(&zoh.poles, lang)
+        ))
+        .wrap(),
+    );
     let zeros = match &zoh.zeros {
         Some(z) if z.is_empty() => T::NoZeros.get(lang).to_string(),
         Some(z) => roots_text(z, lang),
@@ -164,7 +171,11 @@ fn plots(ui: &mut Ui, data: &SampledData, zoh: &Zoh, height: f32, look: &Look) {
             .height(height)
             .show_x(false)
             .show_y(false)
-            .legend(Legend::default().position(egui_plot::Corner::RightBottom).background_alpha(0.75))
+            .legend(
+                Legend::default()
+                    .position(egui_plot::Corner::RightBottom)
+                    .background_alpha(0.75),
+            )
             .show(ui, |plot| {
                 plot.line(
                     Line::new(T::Continuous.get(lang), data.continuous.clone())
@@ -212,14 +223,14 @@ pub fn rule_line(j: &Judged, h: f64, lang: Lang) -> String {
             } else {
                 format!("h < {} s", n(hi))
             };
-            let verdict = if j.met == Some(true) { T::Met } else { T::NotMet };
+            let verdict = if j.met == Some(true) {
+                T::Met
+            } else {
+                T::NotMet
+            };
             format!("{rule}: {range}; h = {} s → {}", n(h), verdict.get(lang))
         }
-        Err(why) => format!(
-            "{rule}: {} ({})",
-            T::DoesNotApply.get(lang),
-            why.text(lang)
-        ),
+        Err(why) => format!("{rule}: {} ({})", T::DoesNotApply.get(lang), why.text(lang)),
     }
 }
 

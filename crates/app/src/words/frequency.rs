@@ -130,7 +130,10 @@ impl Localize for Missing {
                 "no finite slowest time constant (an unstable or integrating pole)",
                 "não há constante de tempo mais lenta finita (um polo instável ou integrador)",
             ),
-            Missing::DeadTime => lang.pick("there is no dead time (θ = 0)", "não há tempo morto (θ = 0)"),
+            Missing::DeadTime => lang.pick(
+                "there is no dead time (θ = 0)",
+                "não há tempo morto (θ = 0)",
+            ),
             Missing::Settling => lang.pick(
                 "the step response does not settle",
                 "a resposta ao degrau não se acomoda",
@@ -214,4 +217,12 @@ pub fn messages() -> Vec<Message> {
         &Refusal::Period(-1.0),
     ));
     all
+}
+
+/// " (the contour goes round 1 open-loop pole on the imaginary axis)".
+pub fn indented(poles: usize, lang: Lang) -> String {
+    lang.pick(
+        format!(" (the contour goes round {poles} open-loop pole(s) on the imaginary axis)"),
+        format!(" (o contorno contorna {poles} polo(s) de malha aberta no eixo imaginário)"),
+    )
 }
