@@ -253,7 +253,7 @@ fn the_frequency_settings_survive_a_restart() {
 #[test]
 fn the_frequency_mode_fits_every_classroom_size() {
     let mut problems = Vec::new();
-    for (tab, canvases) in [(Tab::Bode, 2), (Tab::ZPlane, 2), (Tab::Nyquist, 0)] {
+    for (tab, canvases) in [(Tab::Bode, 2), (Tab::ZPlane, 2), (Tab::Nyquist, 1)] {
         let mut saved = Saved {
             mode: Mode::Frequency,
             ..Default::default()
@@ -273,4 +273,48 @@ fn the_frequency_mode_fits_every_classroom_size() {
         problems.len(),
         problems.join("\n")
     );
+}
+
+/// Z of the Nyquist verdict "… → Z = N + P = 2 closed-loop poles …".
+fn nyquist_z(text: &str) -> i64 {
+    let after = text.split("Z = N + P = ").nth(1).expect("a verdict");
+    after
+        .split_whitespace()
+        .next()
+        .and_then(|z| z.parse().ok())
+        .expect("Z")
+}
+
+#[test]
+fn the_nyquist_verdict_agrees_with_the_direct_count() {
+    use degrau::lti::control::frequency::closed_loop_unstable_roots;
+    for (kc, stable) in [(2.5, true), (40.0, false)] {
+        let mut saved = Saved::default();
+        saved.frequency.source = SourceKind::Tune;
+        saved.frequency.tab = Tab::Nyquist;
+        saved.tune.controller.kc = kc;
+        let mut h = frequency_app(saved);
+        let verdict = label_starting(&h, "N = ");
+        let z = nyquist_z(&verdict);
+        let (plant, c) = h.state().saved.tune.plant_and_controller().expect("a loop");
+        let direct = closed_loop_unstable_roots(&plant, &c).expect("a count");
+        assert_eq!(z, direct as i64, "{verdict}");
+        assert_eq!(z == 0, stable, "{verdict}");
+        let end = if stable { ": stable" } else { ": unstable" };
+        assert!(verdict.ends_with(end), "{verdict}");
+        let counted = label_starting(
+            &h,
+            "Counted directly from the closed-loop characteristic equation:",
+        );
+        assert!(counted.ends_with(end), "{counted}");
+        assert!(counted.contains(&format!(": {direct} roots")), "{counted}");
+        h.get_by_role_and_label(egui::accesskit::Role::Canvas, "Nyquist diagram");
+        // The whole curve, then back to the window around −1.
+        h.get_by_label("Whole curve").click();
+        h.run_steps(2);
+        assert!(h.state().saved.frequency.whole_curve);
+        h.get_by_label("Whole curve").click();
+        h.run_steps(2);
+        assert!(!h.state().saved.frequency.whole_curve);
+    }
 }

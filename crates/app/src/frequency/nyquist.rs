@@ -9,12 +9,12 @@ use egui_plot::{
     Arrows, Legend, Line, LineStyle, MarkerShape, Plot, PlotBounds, PlotPoints, Points,
 };
 
-use degrau_lti::control::{Nyquist, StabilityError};
+use degrau_lti::control::StabilityError;
 use degrau_words::{Lang, Localize};
 
 use super::commands::Command;
 use super::derived::LoopData;
-use super::nyquist_window::{pieces, window};
+use super::nyquist_window::{pieces, whole, window};
 use super::session::{Saved, Session};
 use crate::look::Look;
 use crate::words::frequency::{self as words, Frequency as T};
@@ -32,13 +32,13 @@ pub fn show(
 ) {
     let lang = look.lang;
     verdict(ui, data, look);
-    let mut whole = kept.whole_curve;
+    let mut on = kept.whole_curve;
     if ui
-        .checkbox(&mut whole, T::WholeCurve.get(lang))
+        .checkbox(&mut on, T::WholeCurve.get(lang))
         .on_hover_text(T::WholeCurveHelp.get(lang))
         .changed()
     {
-        out.push(Command::SetWholeCurve(whole));
+        out.push(Command::SetWholeCurve(on));
     }
     let Ok(n) = &data.nyquist else {
         return;
@@ -48,7 +48,11 @@ pub fn show(
         .available_height()
         .min(ui.available_width())
         .max(crate::design::PLOT_MIN);
-    let bounds = window(&curve);
+    let bounds = if kept.whole_curve {
+        whole(&curve)
+    } else {
+        window(&curve)
+    };
     let shown = Plot::new("nyquist")
         .data_aspect(1.0)
         .width(ui.available_width().max(crate::design::PLOT_MIN))
@@ -59,9 +63,7 @@ pub fn show(
         .y_axis_label("Im L(jω)")
         .legend(Legend::default().background_alpha(0.75))
         .show(ui, |plot| {
-            if !kept.whole_curve {
-                plot.set_plot_bounds(PlotBounds::from_min_max(bounds.0, bounds.1));
-            }
+            plot.set_plot_bounds(PlotBounds::from_min_max(bounds.0, bounds.1));
             draw(plot, &curve, look);
         });
     crate::look::name_canvas(&shown.response, T::NyquistPlot.get(lang));
@@ -127,7 +129,12 @@ fn arrows(curve: &[[f64; 2]]) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
 fn verdict(ui: &mut Ui, data: &LoopData, look: &Look) {
     let lang = look.lang;
     let criterion = match &data.nyquist {
-        Ok(n) => criterion_text(n, lang),
+        Ok(n) => words::nyquist_verdict(
+            n.encirclements,
+            n.open_loop_unstable,
+            n.closed_loop_unstable,
+            lang,
+        ),
         Err(e) => e.text(lang),
     };
     let stable = matches!(&data.nyquist, Ok(n) if n.closed_loop_unstable == 0);
@@ -137,6 +144,12 @@ fn verdict(ui: &mut Ui, data: &LoopData, look: &Look) {
         look.palette.error
     };
     ui.add(egui::Label::new(RichText::new(criterion).color(colour)).wrap());
+    if let Ok(n) = &data.nyquist
+        && n.imaginary_poles > 0
+    {
+        let note = words::indented(n.imaginary_poles, lang);
+        ui.add(egui::Label::new(RichText::new(note).weak()).wrap());
+    }
     let direct = direct_text(&data.closed_loop, lang);
     ui.add(egui::Label::new(format!("{} {direct}", T::Direct.get(lang))).wrap());
     if let (Ok(n), Ok(z)) = (&data.nyquist, &data.closed_loop)
@@ -144,19 +157,6 @@ fn verdict(ui: &mut Ui, data: &LoopData, look: &Look) {
     {
         ui.colored_label(look.palette.warning, T::Disagree.get(lang));
     }
-}
-
-fn criterion_text(n: &Nyquist, lang: Lang) -> String {
-    let mut text = words::nyquist_verdict(
-        n.encirclements,
-        n.open_loop_unstable,
-        n.closed_loop_unstable,
-        lang,
-    );
-    if n.imaginary_poles > 0 {
-        text.push_str(&words::indented(n.imaginary_poles, lang));
-    }
-    text
 }
 
 fn direct_text(count: &Result<usize, StabilityError>, lang: Lang) -> String {

@@ -30,8 +30,18 @@ pub fn pieces(curve: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
 /// The default window (min, max): the smallest one, grown to hold the points of `curve`
 /// (and their mirror) with |L| ≤ [`NEAR`], with a margin.
 pub fn window(curve: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
+    holding(curve, NEAR)
+}
+
+/// The window of the whole curve drawn (|L| ≤ [`CLIP`]), −1 and the unit circle included.
+pub fn whole(curve: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
+    holding(curve, CLIP)
+}
+
+/// The smallest window grown to hold the points (and their mirror) with |L| ≤ `radius`.
+fn holding(curve: &[[f64; 2]], radius: f64) -> ([f64; 2], [f64; 2]) {
     let (mut min, mut max) = SMALLEST;
-    for p in curve.iter().filter(|p| p[0].hypot(p[1]) <= NEAR) {
+    for p in curve.iter().filter(|p| p[0].hypot(p[1]) <= radius) {
         min[0] = min[0].min(p[0]);
         max[0] = max[0].max(p[0]);
         let y = p[1].abs();
@@ -65,5 +75,7 @@ mod tests {
         assert!(min[0] < -2.0 && max[0] > 1.0 && min[1] < -1.5 && max[1] > 1.5);
         let (min, max) = window(&[[-3.5, -1.0], [100.0, 0.0]]);
         assert!(min[0] < -3.5 && max[0] < 2.0, "{min:?} {max:?}");
+        let (_, max) = whole(&[[-3.5, -1.0], [100.0, 0.0], [1e7, 0.0]]);
+        assert!(max[0] > 100.0 && max[0] < 200.0, "{max:?}");
     }
 }

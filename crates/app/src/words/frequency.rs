@@ -219,10 +219,10 @@ pub fn messages() -> Vec<Message> {
     all
 }
 
-/// " (the contour goes round 1 open-loop pole on the imaginary axis)".
+/// "The contour goes round 1 open-loop pole(s) on the imaginary axis …".
 pub fn indented(poles: usize, lang: Lang) -> String {
     lang.pick(
-        format!(" (the contour goes round {poles} open-loop pole(s) on the imaginary axis)"),
-        format!(" (o contorno contorna {poles} polo(s) de malha aberta no eixo imaginário)"),
+        format!("The contour goes round the {poles} open-loop pole(s) on the imaginary axis by small half-circles to their right."),
+        format!("O contorno passa em volta do(s) {poles} polo(s) de malha aberta no eixo imaginário por pequenos semicírculos à direita."),
     )
 }

@@ -14,7 +14,7 @@ use degrau_words::{Lang, Localize};
 degrau_words::phrases! {
     /// The least-squares views' phrases.
     pub enum Phrase {
-        ModeName => ("Least squares on samples", "Mínimos quadrados nas amostras"),
+        ModeName => ("Least squares on samples", "Mínimos quadrados"),
         TabArx => ("ARX model", "Modelo ARX"),
         TabExample => ("Notes' example", "Exemplo das notas"),
         TabRls => ("Recursive (RLS)", "Recursivo (MQR)"),
