@@ -240,7 +240,7 @@ fn the_frequency_settings_survive_a_restart() {
     assert!(h2.state().notices.is_empty());
     let _ = std::fs::remove_dir_all(&dir);
     // A saved h that is no period falls back alone.
-    let mut value = serde_json::to_value(&Saved::default()).expect("JSON");
+    let mut value = serde_json::to_value(Saved::default()).expect("JSON");
     value["frequency"]["h"] = serde_json::json!(-2.0);
     value["frequency"]["tab"] = serde_json::json!("Nyquist");
     let (restored, problems) = degrau::app::persist::restore_value(&value);
