@@ -89,6 +89,17 @@ fn hovering_the_bode_magnitude_reads_the_exact_values() {
         "{text}: {eratio}"
     );
     assert!(text.contains("|G|") && text.contains("∠G"), "{text}");
+    // In Portuguese the numbers take the decimal comma.
+    h.state_mut().saved.lang = degrau::text::Lang::Pt;
+    h.run_steps(2);
+    let text = label_starting(&h, "ω = ");
+    assert!(text.contains(',') && !text.contains('.'), "{text}");
+    let v = numbers(&text.replace(',', "."));
+    let exact = bode(&design_tf(&h), &[v[0]]);
+    assert!(
+        (v[1] - exact.mag_db[0]).abs() <= rounding(v[1], 4) + 0.02,
+        "{text}"
+    );
 }
 
 #[test]
@@ -139,10 +150,10 @@ fn a_loop_without_a_crossover_says_infinity_in_words() {
     h.get_by_label("A malha suporta qualquer ganho maior (não há cruzamento de fase).");
 }
 
-/// The roots written as "0.9048, 0.8 + 0.1j, 0.8 − 0.1j".
+/// The roots written as "0.9048; 0.8 + 0.1j; 0.8 − 0.1j".
 fn roots_written(text: &str) -> Vec<C64> {
     let list = text.split_once(':').map_or(text, |(_, l)| l);
-    list.split(", ")
+    list.split("; ")
         .map(|r| {
             let r = r.trim().replace('\u{2212}', "-");
             match r.split_once(" + ").or_else(|| r.split_once(" - ")) {
@@ -167,6 +178,8 @@ fn the_z_plane_lists_the_poles_e_to_the_p_h() {
     assert_eq!(h.state().saved.frequency.h, 0.2);
     kit::type_number(&mut h, "Sampling period h (s)", 0, "0.1");
     assert_eq!(h.state().saved.frequency.h, 0.1);
+    // A new h samples again; the loop's Bode and margins are not computed again.
+    assert_eq!(h.state().frequency.computations, 1);
     let shown = roots_written(&label_starting(&h, "Poles of H(z):"));
     let tf = design_tf(&h);
     assert_eq!(shown.len(), tf.poles().len());
@@ -317,4 +330,38 @@ fn the_nyquist_verdict_agrees_with_the_direct_count() {
         h.run_steps(2);
         assert!(!h.state().saved.frequency.whole_curve);
     }
+}
+
+const TCLAB: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
+);
+
+#[test]
+fn a_fitted_model_is_a_source_once_there_is_one() {
+    let mut h = harness(DegrauApp::default(), [1360.0, 860.0]);
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    let settings = &mut h.state_mut().ident.settings;
+    settings.y_col = "T1".into();
+    settings.u_col = "Q1".into();
+    settings.code = "P1D".into();
+    kit::load(&mut h, TCLAB);
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    kit::wait_for(&mut h, |h| h.query_by_label("Fitted P1D").is_some());
+    let (fitted, _) = h.state().ident.fitted_transfer_function().expect("a fit");
+    h.get_by_label("Frequency").click();
+    h.run_steps(3);
+    h.get_by_label("Identify: the fitted model G(s)").click();
+    h.run_steps(3);
+    assert_eq!(h.state().saved.frequency.source, SourceKind::Fitted);
+    let shown = h.state().frequency.source.clone().expect("a source");
+    assert_eq!(shown.plant, fitted);
+    assert!(shown.controller.is_none());
+    label_starting(&h, "Gain margin GM = ");
+    h.get_by_label_contains(&format!(
+        "e^(−{}",
+        degrau::text::Lang::En.num(fitted.delay(), 6)
+    ));
 }

@@ -2,8 +2,9 @@
 //! links egui, eframe and rfd); its own words are in [`words`]. The top level is thin: one
 //! [`Saved`] (what is kept between runs, with each mode's own: [`design::Saved`],
 //! [`identify::Saved`]), the sessions of the modes (Design: [`design`]; Identify:
-//! [`identify`]; least squares: [`lsq`]; Tune: [`tune`], its settings [`tune::Saved`]), the
-//! export window, the notices and the saver.
+//! [`identify`]; least squares: [`lsq`]; Tune: [`tune`], its settings [`tune::Saved`];
+//! Frequency: [`frequency`], its settings [`frequency::Saved`], its sources handed over from
+//! the other modes before it draws), the export window, the notices and the saver.
 //!
 //! Each frame the views draw from the sessions and return [`Command`]s (egui's own
 //! `wrap_app.rs` pattern), and one function applies them: the menu's, the keys', the
@@ -86,7 +87,7 @@ pub fn run_with(test: Option<identify::Saved>, lang: Option<Lang>) -> eframe::Re
     )
 }
 
-/// The two things the app does.
+/// The app's modes (its tabs).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Mode {
     /// Place poles and zeros, watch the step response.

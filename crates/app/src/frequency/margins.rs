@@ -133,7 +133,7 @@ fn crossings(ui: &mut Ui, m: &Margins, lang: Lang) {
             wrapped(
                 ui,
                 format!(
-                    "  ω = {}: PM = {}°, {} = {} s",
+                    "  ω = {}: PM = {}°; {} = {} s",
                     rad_s(c.w, lang),
                     value(c.pm, 4, lang),
                     T::DelayMargin.get(lang),

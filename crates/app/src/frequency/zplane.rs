@@ -102,7 +102,8 @@ pub fn z_poly(coeffs: &[f64], lang: Lang) -> String {
     text
 }
 
-/// Roots as "0.9048, 0.8 + 0.1j, 0.8 − 0.1j".
+/// Roots as "0.9048; 0.8 + 0.1j; 0.8 − 0.1j" (a semicolon between them: a comma is the
+/// decimal separator in Portuguese).
 pub fn roots_text(roots: &[C64], lang: Lang) -> String {
     roots
         .iter()
@@ -115,7 +116,7 @@ pub fn roots_text(roots: &[C64], lang: Lang) -> String {
             }
         })
         .collect::<Vec<_>>()
-        .join(", ")
+        .join("; ")
 }
 
 /// The z-plane and the step responses side by side.
