@@ -365,3 +365,30 @@ fn a_fitted_model_is_a_source_once_there_is_one() {
         degrau::text::Lang::En.num(fitted.delay(), 6)
     ));
 }
+
+#[test]
+fn the_bode_axis_is_written_in_decades_of_omega() {
+    let h = frequency_app(Saved::default());
+    let phase = h
+        .get_by_role_and_label(egui::accesskit::Role::Canvas, "Bode phase")
+        .rect();
+    // The tick labels are painted just under the plot's frame.
+    let below = egui::Rect::from_min_max(
+        egui::pos2(phase.left(), phase.bottom()),
+        egui::pos2(phase.right(), phase.bottom() + 14.0),
+    );
+    let ticks: Vec<f64> = kit::numbers_in(&h, below, '.')
+        .into_iter()
+        .map(|(v, _)| v)
+        .collect();
+    // The default system's corners are √5 and 5: two decades either side, 0.01 to 1000.
+    assert!(ticks.len() >= 4, "{ticks:?}");
+    for t in &ticks {
+        let decade = t.log10();
+        assert!(
+            (decade - decade.round()).abs() < 1e-9,
+            "{t} is not a decade: {ticks:?}"
+        );
+    }
+    assert_eq!(ticks, vec![0.01, 0.1, 1.0, 10.0, 100.0, 1000.0]);
+}
