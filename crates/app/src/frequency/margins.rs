@@ -111,11 +111,14 @@ pub fn lines(m: &Margins, lang: Lang) -> Vec<String> {
     vec![gm, pm, dm, ms, bw]
 }
 
-/// Every crossing, when there are several of a kind.
+/// The most crossings of a kind listed (a long dead time makes dozens).
+const LISTED: usize = 6;
+
+/// Every crossing, when there are several of a kind (the first [`LISTED`]).
 fn crossings(ui: &mut Ui, m: &Margins, lang: Lang) {
     if m.phase_crossings.len() > 1 {
         ui.label(T::PhaseCrossings.get(lang));
-        for c in &m.phase_crossings {
+        for c in m.phase_crossings.iter().take(LISTED) {
             wrapped(
                 ui,
                 format!(
@@ -127,9 +130,10 @@ fn crossings(ui: &mut Ui, m: &Margins, lang: Lang) {
             );
         }
     }
+    more(ui, m.phase_crossings.len(), lang);
     if m.gain_crossings.len() > 1 {
         ui.label(T::GainCrossings.get(lang));
-        for c in &m.gain_crossings {
+        for c in m.gain_crossings.iter().take(LISTED) {
             wrapped(
                 ui,
                 format!(
@@ -141,6 +145,14 @@ fn crossings(ui: &mut Ui, m: &Margins, lang: Lang) {
                 ),
             );
         }
+    }
+    more(ui, m.gain_crossings.len(), lang);
+}
+
+/// "… and 12 more" after the first [`LISTED`] crossings.
+fn more(ui: &mut Ui, count: usize, lang: Lang) {
+    if count > LISTED {
+        ui.weak(words::more_crossings(count - LISTED, lang));
     }
 }
 

@@ -53,7 +53,8 @@ pub fn show(
     } else {
         window(&curve)
     };
-    let shown = Plot::new("nyquist")
+    let shown = crate::grid::app_axes(Plot::new("nyquist"), lang)
+        .x_grid_spacer(crate::grid::one_two_five())
         .data_aspect(1.0)
         .width(ui.available_width().max(crate::design::PLOT_MIN))
         .height(side)

@@ -125,7 +125,8 @@ fn plots(ui: &mut Ui, data: &SampledData, zoh: &Zoh, height: f32, look: &Look) {
     let gap = ui.spacing().item_spacing.x;
     let width = ((ui.available_width() - gap) / 2.0).max(crate::design::PLOT_MIN);
     ui.horizontal_top(|ui| {
-        let z = Plot::new("z-plane")
+        let z = crate::grid::app_axes(Plot::new("z-plane"), lang)
+            .x_grid_spacer(crate::grid::one_two_five())
             .data_aspect(1.0)
             .width(width)
             .height(height)

@@ -219,6 +219,11 @@ pub fn messages() -> Vec<Message> {
     all
 }
 
+/// "… and 3 more" after a list of crossings.
+pub fn more_crossings(more: usize, lang: Lang) -> String {
+    lang.pick(format!("  … and {more} more"), format!("  … e mais {more}"))
+}
+
 /// "The contour goes round 1 open-loop pole(s) on the imaginary axis …".
 pub fn indented(poles: usize, lang: Lang) -> String {
     lang.pick(
