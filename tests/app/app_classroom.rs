@@ -355,6 +355,16 @@ pub(crate) fn problems_everywhere(
     mode: &str,
     canvases: usize,
 ) -> Vec<String> {
+    problems_everywhere_with(h, mode, canvases, |_, _| Vec::new())
+}
+
+/// [`problems_everywhere`] with the mode's own checks (`more`: its problems in a language).
+pub(crate) fn problems_everywhere_with(
+    h: &mut Harness<'_, DegrauApp>,
+    mode: &str,
+    canvases: usize,
+    more: impl Fn(&Harness<'_, DegrauApp>, Lang) -> Vec<String>,
+) -> Vec<String> {
     let mut out = Vec::new();
     for size in SIZES {
         for zoom in ZOOMS {
@@ -371,6 +381,7 @@ pub(crate) fn problems_everywhere(
                     lang.name()
                 );
                 let mut problems = layout_problems(h);
+                problems.extend(more(h, lang));
                 let plots = h.query_all_by_role(egui::accesskit::Role::Canvas).count();
                 if plots < canvases {
                     problems.push(format!(

@@ -11,6 +11,7 @@ use degrau::app::{DegrauApp, Mode, Saved};
 use degrau::lti::bode::bode;
 use degrau::lti::control::margins;
 use degrau::lti::{C64, TransferFunction};
+use degrau::text::Lang;
 use eframe::egui;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
@@ -90,7 +91,7 @@ fn hovering_the_bode_magnitude_reads_the_exact_values() {
     );
     assert!(text.contains("|G|") && text.contains("∠G"), "{text}");
     // In Portuguese the numbers take the decimal comma.
-    h.state_mut().saved.lang = degrau::text::Lang::Pt;
+    h.state_mut().saved.lang = Lang::Pt;
     h.run_steps(2);
     let text = label_starting(&h, "ω = ");
     assert!(text.contains(',') && !text.contains('.'), "{text}");
@@ -144,7 +145,7 @@ fn a_loop_without_a_crossover_says_infinity_in_words() {
     let mut saved = Saved::default();
     saved.design.system.poles = vec![Root::real(-1.0)];
     saved.design.system.gain = 5.0;
-    saved.lang = degrau::text::Lang::Pt;
+    saved.lang = Lang::Pt;
     let h = frequency_app(saved);
     h.get_by_label("Margem de ganho GM = ∞: não há cruzamento de fase");
     h.get_by_label("A malha suporta qualquer ganho maior (não há cruzamento de fase).");
@@ -262,22 +263,58 @@ fn the_frequency_settings_survive_a_restart() {
     assert_eq!(restored.frequency.tab, Tab::Nyquist);
 }
 
-/// The classroom's layout (1000×650 and 1600×900, 1× to 1.6×, both languages) of each tab.
+/// The words each tab must show on screen, in `lang` (their start).
+fn key_labels(tab: Tab, lang: Lang) -> Vec<&'static str> {
+    let mut labels = vec![lang.pick("Stability margins", "Margens de estabilidade")];
+    labels.extend(match tab {
+        Tab::Bode => vec![lang.pick("Hover a plot", "Passe o ponteiro")],
+        Tab::ZPlane => vec![
+            lang.pick("Sampling period h (s)", "Período de amostragem h (s)"),
+            lang.pick("Poles of H(z):", "Polos de H(z):"),
+        ],
+        Tab::Nyquist => vec!["N = ", lang.pick("Whole curve", "Curva inteira")],
+    });
+    labels
+}
+
+/// The key labels of `tab` that are not whole inside the window.
+fn missing_labels(h: &Harness<'_, DegrauApp>, tab: Tab, lang: Lang) -> Vec<String> {
+    let window = h.ctx.content_rect().expand(0.5);
+    key_labels(tab, lang)
+        .into_iter()
+        .filter(|start| {
+            !h.query_all_by_label_contains(start)
+                .any(|n| window.contains_rect(n.rect()))
+        })
+        .map(|start| format!("{start:?} is not on screen"))
+        .collect()
+}
+
+/// The classroom's layout (1000×650 and 1600×900, 1× to 1.6×, both languages) of each tab,
+/// for the Tune loop and the Design system: nothing outside the window or over another
+/// text, every plot at least 220 points, the tab's key labels on screen.
 #[test]
 fn the_frequency_mode_fits_every_classroom_size() {
     let mut problems = Vec::new();
-    for (tab, canvases) in [(Tab::Bode, 2), (Tab::ZPlane, 2), (Tab::Nyquist, 1)] {
+    let cases = [
+        (Tab::Bode, 2, SourceKind::Tune),
+        (Tab::Bode, 2, SourceKind::Design),
+        (Tab::ZPlane, 2, SourceKind::Tune),
+        (Tab::Nyquist, 1, SourceKind::Tune),
+    ];
+    for (tab, canvases, source) in cases {
         let mut saved = Saved {
             mode: Mode::Frequency,
             ..Default::default()
         };
         saved.frequency.tab = tab;
-        saved.frequency.source = SourceKind::Tune;
+        saved.frequency.source = source;
         let mut h = harness(DegrauApp::new(saved), [1600.0, 900.0]);
-        problems.extend(crate::app_classroom::problems_everywhere(
+        problems.extend(crate::app_classroom::problems_everywhere_with(
             &mut h,
-            &format!("Frequency, {tab:?}"),
+            &format!("Frequency, {tab:?}, {source:?}"),
             canvases,
+            |h, lang| missing_labels(h, tab, lang),
         ));
     }
     assert!(
@@ -360,10 +397,7 @@ fn a_fitted_model_is_a_source_once_there_is_one() {
     assert_eq!(shown.plant, fitted);
     assert!(shown.controller.is_none());
     label_starting(&h, "Gain margin GM = ");
-    h.get_by_label_contains(&format!(
-        "e^(−{}",
-        degrau::text::Lang::En.num(fitted.delay(), 6)
-    ));
+    h.get_by_label_contains(&format!("e^(−{}", Lang::En.num(fitted.delay(), 6)));
 }
 
 #[test]
