@@ -175,3 +175,51 @@ impl Session {
         self.refresh(kept);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sources() -> Sources {
+        let plant = TransferFunction::from_coeffs(&[1.0], &[10.0, 1.0])
+            .and_then(|g| g.with_delay(2.0))
+            .expect("a plant");
+        Sources {
+            design: Some(Source {
+                plant,
+                controller: None,
+            }),
+            ..Sources::default()
+        }
+    }
+
+    #[test]
+    fn a_bad_period_is_refused_and_the_old_one_kept() {
+        let mut kept = Saved::default();
+        let mut s = Session::default();
+        s.sync(&kept, sources());
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            s.apply(&mut kept, Command::SetPeriod(bad));
+            assert_eq!(kept.h, DEFAULT_PERIOD);
+            assert!(matches!(s.refusal, Some(Refusal::Period(_))));
+        }
+        s.apply(&mut kept, Command::SetPeriod(0.5));
+        assert_eq!((kept.h, s.refusal), (0.5, None));
+        assert_eq!(s.sampled.as_ref().map(|d| d.h), Some(0.5));
+    }
+
+    #[test]
+    fn the_loop_is_computed_only_when_the_source_changes() {
+        let mut kept = Saved::default();
+        let mut s = Session::default();
+        s.sync(&kept, sources());
+        s.sync(&kept, sources());
+        s.apply(&mut kept, Command::SetPeriod(0.2));
+        s.apply(&mut kept, Command::SetTab(Tab::Nyquist));
+        assert_eq!(s.computations, 1);
+        // The Tune source is not there: nothing to show, and it says so.
+        s.apply(&mut kept, Command::SetSource(SourceKind::Tune));
+        assert!(s.source.is_none() && s.loop_data.is_none() && s.sampled.is_none());
+        assert_eq!(s.computations, 2);
+    }
+}
