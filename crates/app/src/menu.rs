@@ -170,21 +170,17 @@ impl DegrauApp {
                     }
                 }
             });
-            // Five modes leave no room for the bar's own undo and redo in the Frequency
-            // mode (which edits no system): the Edit menu and the keys keep them.
-            if self.saved.mode != Mode::Frequency {
-                if ui
-                    .add_enabled(history.can_undo(), egui::Button::new(T::Undo.get(lang)))
-                    .clicked()
-                {
-                    out.push(Command::Design(design::Command::Undo));
-                }
-                if ui
-                    .add_enabled(history.can_redo(), egui::Button::new(T::Redo.get(lang)))
-                    .clicked()
-                {
-                    out.push(Command::Design(design::Command::Redo));
-                }
+            if ui
+                .add_enabled(history.can_undo(), egui::Button::new(T::Undo.get(lang)))
+                .clicked()
+            {
+                out.push(Command::Design(design::Command::Undo));
+            }
+            if ui
+                .add_enabled(history.can_redo(), egui::Button::new(T::Redo.get(lang)))
+                .clicked()
+            {
+                out.push(Command::Design(design::Command::Redo));
             }
             ui.separator();
             out.extend(self.size_and_language(ui, look));
