@@ -1,0 +1,1 @@
+pub fn exercise() -> Result<crate::model::Exercise, super::SheetError> { Ok(crate::model::Exercise { id: "8".into(), statement: crate::text::Text::same(""), parts: vec![] }) }
