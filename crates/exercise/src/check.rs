@@ -14,9 +14,7 @@ use serde::Serialize;
 
 use crate::expr::{Env, Expr, Var};
 use crate::input::{self, InputError, RangeAnswer, RegionBound, StudentAnswer};
-use crate::model::{
-    Expected, GainRange, Question, Region, TfAnswer, Tolerance, Unit, Value,
-};
+use crate::model::{Expected, GainRange, Question, Region, TfAnswer, Tolerance, Unit, Value};
 use crate::text::{self, Text, num};
 use crate::words::Phrase;
 
@@ -424,7 +422,9 @@ pub fn typed_answer(q: &Question, lang: Lang) -> String {
             if main.value.is_infinite() {
                 "inf".into()
             } else {
-                format!("{} {}", full(main.value), unit.symbol()).trim().into()
+                format!("{} {}", full(main.value), unit.symbol())
+                    .trim()
+                    .into()
             }
         }
         Expected::TransferFunction(tf) => {

@@ -207,7 +207,9 @@ fn tokenize(text: &str) -> Result<Vec<Token>, ExprError> {
         let c = chars[i];
         if c.is_whitespace() {
             i += 1;
-        } else if c.is_ascii_digit() || (c == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit)) {
+        } else if c.is_ascii_digit()
+            || (c == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit))
+        {
             let (x, next) = number(&chars, i)?;
             out.push(Token::Num(x));
             i = next;
@@ -273,9 +275,10 @@ fn number(chars: &[char], mut i: usize) -> Result<(f64, usize), ExprError> {
             }
         }
     }
-    text.parse::<f64>()
-        .map(|x| (x, i))
-        .map_err(|_| ExprError::Syntax)
+    match text.parse::<f64>() {
+        Ok(x) if x.is_finite() => Ok((x, i)),
+        _ => Err(ExprError::Syntax),
+    }
 }
 
 /// A run of letters: a function or constant name, else single-letter variables side by side
@@ -398,7 +401,12 @@ impl Parser {
         let bracketed = matches!(self.peek(), Some(Token::Open));
         let mut node = self.primary()?;
         // `e^-5t` chains t; `e^{-t}[cos 2t]` does not chain the bracket after the group.
-        while !bracketed && matches!(self.peek(), Some(Token::Num(_) | Token::Var(_) | Token::Imag)) {
+        while !bracketed
+            && matches!(
+                self.peek(),
+                Some(Token::Num(_) | Token::Var(_) | Token::Imag)
+            )
+        {
             let next = self.primary()?;
             node = Node::Bin(Op::Mul, Box::new(node), Box::new(next));
         }
@@ -449,7 +457,9 @@ mod tests {
             t,
             ..Env::default()
         };
-        Expr::parse(text).map(|e| e.eval(&env).re).unwrap_or(f64::NAN)
+        Expr::parse(text)
+            .map(|e| e.eval(&env).re)
+            .unwrap_or(f64::NAN)
     }
 
     fn at_s(text: &str, s: C64, k: f64) -> C64 {
@@ -519,7 +529,10 @@ mod tests {
         assert_eq!(Expr::parse("s+1)"), Err(ExprError::Bracket));
         assert_eq!(Expr::parse("1+"), Err(ExprError::Syntax));
         assert!(matches!(Expr::parse("x+1"), Err(ExprError::Name(_))));
-        assert!(matches!(Expr::parse("1 $ 2"), Err(ExprError::Character('$'))));
+        assert!(matches!(
+            Expr::parse("1 $ 2"),
+            Err(ExprError::Character('$'))
+        ));
         let e = Expr::parse("K/(s+1)").map(|e| e.uses_only(&[Var::S]));
         assert_eq!(e, Ok(Err(ExprError::Variable('K'))));
     }

@@ -58,7 +58,11 @@ pub fn number(text: &str, unit: Unit) -> Result<(f64, bool), InputError> {
     let percent = body.contains('%');
     let lower = body.to_lowercase();
     let bare = lower.trim_end_matches(|c: char| c == '%' || c.is_whitespace());
-    let sign = if bare.starts_with(['-', '−']) { -1.0 } else { 1.0 };
+    let sign = if bare.starts_with(['-', '−']) {
+        -1.0
+    } else {
+        1.0
+    };
     let word = bare.trim_start_matches(['+', '-', '−']).trim();
     if matches!(word, "inf" | "∞" | "infinity" | "infinito" | "infinite") {
         return Ok((sign * f64::INFINITY, percent));
@@ -132,7 +136,10 @@ fn leading_number(text: &str) -> Option<(f64, &str)> {
         }
     }
     let rest = chars.get(i).map_or("", |&(at, _)| &text[at..]);
-    out.parse().ok().map(|x| (x, rest))
+    out.parse()
+        .ok()
+        .filter(|x: &f64| x.is_finite())
+        .map(|x| (x, rest))
 }
 
 /// The factor a typed unit means for a question in `unit` (`ms` for seconds is 1e-3), or
@@ -174,9 +181,12 @@ fn strip_unit(text: &str, unit: Unit) -> &str {
     trimmed
 }
 
+/// Numerator and denominator coefficients, descending powers.
+pub type Coefficients = (Vec<f64>, Vec<f64>);
+
 /// A transfer function typed as coefficient lists: `[10], [1 0.3 0]`, `tf([10],[1 2])`,
 /// `num = [10]; den = [1 2]`. `None` when the text holds no brackets (an expression).
-pub fn coefficient_lists(text: &str) -> Option<Result<(Vec<f64>, Vec<f64>), InputError>> {
+pub fn coefficient_lists(text: &str) -> Option<Result<Coefficients, InputError>> {
     if !text.contains('[') {
         return None;
     }
@@ -386,7 +396,12 @@ pub fn region(text: &str) -> Result<Vec<RegionBound>, InputError> {
 /// `-3+7j -3-7j`, `-1 + j2 -1 - j2`; `none`/`nenhum`/`-` for no roots.
 pub fn roots(text: &str) -> Result<Vec<C64>, InputError> {
     let bad = || InputError::Roots(text.trim().to_string());
-    let body = text.rsplit('=').next().unwrap_or(text).trim().replace('−', "-");
+    let body = text
+        .rsplit('=')
+        .next()
+        .unwrap_or(text)
+        .trim()
+        .replace('−', "-");
     let lower = body.to_lowercase();
     if matches!(
         lower.as_str(),
@@ -505,10 +520,29 @@ pub fn choice(text: &str, options: &[Choice]) -> Result<Choice, InputError> {
     let t = t.as_str();
     let found = options.iter().copied().find(|c| {
         let words: &[&str] = match c {
-            Choice::Overdamped => &["overdamped", "over damped", "sobreamortecid", "ζ > 1", "ζ>1"],
+            Choice::Overdamped => &[
+                "overdamped",
+                "over damped",
+                "sobreamortecid",
+                "ζ > 1",
+                "ζ>1",
+            ],
             Choice::CriticallyDamped => &["critical", "crítica", "critica", "ζ = 1", "ζ=1"],
-            Choice::Underdamped => &["underdamped", "under damped", "subamortecid", "0<ζ<1", "0 < ζ < 1"],
-            Choice::Undamped => &["undamped", "sem amortecimento", "não amortecid", "nao amortecid", "ζ = 0", "ζ=0"],
+            Choice::Underdamped => &[
+                "underdamped",
+                "under damped",
+                "subamortecid",
+                "0<ζ<1",
+                "0 < ζ < 1",
+            ],
+            Choice::Undamped => &[
+                "undamped",
+                "sem amortecimento",
+                "não amortecid",
+                "nao amortecid",
+                "ζ = 0",
+                "ζ=0",
+            ],
             Choice::Yes => &["yes", "sim", "y", "s"],
             Choice::No => &["no", "não", "nao", "n"],
         };
@@ -589,16 +623,27 @@ mod tests {
             region("zeta >= 0.4, Re(s) <= -40"),
             Ok(vec![RegionBound::ZetaMin(0.4), RegionBound::SigmaMin(40.0)])
         );
-        assert!(matches!(region("θ ≤ 60°").as_deref(), Ok([RegionBound::ZetaMin(z)]) if (z - 0.5).abs() < 1e-12));
+        assert!(
+            matches!(region("θ ≤ 60°").as_deref(), Ok([RegionBound::ZetaMin(z)]) if (z - 0.5).abs() < 1e-12)
+        );
         assert!(region("ζ = 0.4").is_err());
         let c = |re: f64, im: f64| C64::new(re, im);
         assert_eq!(roots("-2; -4"), Ok(vec![c(-2.0, 0.0), c(-4.0, 0.0)]));
         assert_eq!(roots("s = -2, -4"), Ok(vec![c(-2.0, 0.0), c(-4.0, 0.0)]));
         assert_eq!(roots("-1 ± j2"), Ok(vec![c(-1.0, 2.0), c(-1.0, -2.0)]));
-        assert_eq!(roots("-80 ± j208,7"), Ok(vec![c(-80.0, 208.7), c(-80.0, -208.7)]));
+        assert_eq!(
+            roots("-80 ± j208,7"),
+            Ok(vec![c(-80.0, 208.7), c(-80.0, -208.7)])
+        );
         assert_eq!(roots("-3+7j, -3-7j"), Ok(vec![c(-3.0, 7.0), c(-3.0, -7.0)]));
-        assert_eq!(roots("-3 + 7j; -3 - 7j"), Ok(vec![c(-3.0, 7.0), c(-3.0, -7.0)]));
-        assert_eq!(roots("-1 + j2 -1 - j2"), Ok(vec![c(-1.0, 2.0), c(-1.0, -2.0)]));
+        assert_eq!(
+            roots("-3 + 7j; -3 - 7j"),
+            Ok(vec![c(-3.0, 7.0), c(-3.0, -7.0)])
+        );
+        assert_eq!(
+            roots("-1 + j2 -1 - j2"),
+            Ok(vec![c(-1.0, 2.0), c(-1.0, -2.0)])
+        );
         assert_eq!(roots("-2,5"), Ok(vec![c(-2.5, 0.0)]));
         assert_eq!(roots("nenhum"), Ok(vec![]));
         assert!(roots("-1 ± x").is_err());
@@ -608,7 +653,10 @@ mod tests {
     fn words_of_choices() {
         let types = Choice::RESPONSE_TYPES;
         assert_eq!(choice("Sobreamortecida", &types), Ok(Choice::Overdamped));
-        assert_eq!(choice("criticamente amortecida", &types), Ok(Choice::CriticallyDamped));
+        assert_eq!(
+            choice("criticamente amortecida", &types),
+            Ok(Choice::CriticallyDamped)
+        );
         assert_eq!(choice("under-damped", &types), Ok(Choice::Underdamped));
         assert_eq!(choice("sim", &Choice::YES_NO), Ok(Choice::Yes));
         assert_eq!(choice("Não", &Choice::YES_NO), Ok(Choice::No));

@@ -20,15 +20,14 @@ pub mod text;
 pub mod words;
 
 pub use check::{Verdict, check, typed_answer};
+pub use degrau_words::Lang;
 pub use input::StudentAnswer;
 pub use model::{
-    AnswerKind, Choice, Controller, Exercise, Expected, GainRange, Mode, Part, Question,
-    Reading, Region, System, TfAnswer, Tolerance, Unit, Value,
+    AnswerKind, Choice, Controller, Exercise, Expected, GainRange, Mode, Part, Question, Reading,
+    Region, System, TfAnswer, Tolerance, Unit, Value,
 };
 pub use sheet::{SheetError, sheet};
-pub use degrau_words::Lang;
 pub use text::Text;
-
 
 /// One step of a worked solution: a line of words and numbers in one language.
 #[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]

@@ -55,7 +55,10 @@ pub enum Mode {
 #[serde(rename_all = "snake_case")]
 pub enum System {
     /// A transfer function (with its dead time) and the step's amplitude.
-    Tf { tf: TransferFunction, amplitude: f64 },
+    Tf {
+        tf: TransferFunction,
+        amplitude: f64,
+    },
     /// The unity-feedback loop around K·C(s)·G(s): `plant` G, `controller` C, the gain K the
     /// solution arrives at (the app starts from it after Check).
     Loop {

@@ -3,8 +3,7 @@
 //! is documented (and a documented difference must still differ).
 
 use degrau_exercise::{
-    Choice, Exercise, Expected, Lang, StudentAnswer, TfAnswer, check, sheet, solution,
-    typed_answer,
+    Choice, Exercise, Expected, Lang, StudentAnswer, TfAnswer, check, sheet, solution, typed_answer,
 };
 
 fn all() -> Vec<Exercise> {
@@ -23,7 +22,12 @@ fn thirteen_exercises_every_part_with_questions_and_a_solution() {
     let sheet = all();
     assert_eq!(sheet.len(), 13);
     let ids: Vec<&str> = sheet.iter().map(|e| e.id.as_str()).collect();
-    assert_eq!(ids, ["1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12", "13"]);
+    assert_eq!(
+        ids,
+        [
+            "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12", "13"
+        ]
+    );
     let parts: Vec<String> = sheet
         .iter()
         .flat_map(|e| e.parts.iter().map(|p| p.id.clone()))
@@ -31,9 +35,9 @@ fn thirteen_exercises_every_part_with_questions_and_a_solution() {
     assert_eq!(
         parts,
         [
-            "1a", "1b", "2", "3a", "3b", "3c", "3d", "3e", "4", "5a", "5b", "5c", "6a", "6b",
-            "6c", "7", "8a", "8b", "9", "10a", "10b", "10c", "10d", "10e", "10f", "10g", "11",
-            "12", "13a", "13b"
+            "1a", "1b", "2", "3a", "3b", "3c", "3d", "3e", "4", "5a", "5b", "5c", "6a", "6b", "6c",
+            "7", "8a", "8b", "9", "10a", "10b", "10c", "10d", "10e", "10f", "10g", "11", "12",
+            "13a", "13b"
         ]
     );
     let mut ids = std::collections::HashSet::new();
@@ -90,7 +94,9 @@ fn wrong(q: &degrau_exercise::Question) -> String {
             }
             format!("{w}")
         }
-        Expected::TransferFunction(TfAnswer::Fixed(_)) => format!("2*({})", typed_answer(q, Lang::En)),
+        Expected::TransferFunction(TfAnswer::Fixed(_)) => {
+            format!("2*({})", typed_answer(q, Lang::En))
+        }
         Expected::TransferFunction(TfAnswer::ClosedLoopInK(_)) => "K/(s^2 + 0.3s + K)".into(),
         Expected::GainRange { main, .. } => {
             if main.high.is_finite() {
@@ -102,7 +108,10 @@ fn wrong(q: &degrau_exercise::Question) -> String {
         Expected::Region(r) => format!("ζ ≥ {}; σ ≥ {}", r.zeta_min * 0.5, r.sigma_min),
         Expected::ClosedForm { .. } => {
             let y = typed_answer(q, Lang::En);
-            let y = y.trim_start_matches("y(t)").trim_start().trim_start_matches('=');
+            let y = y
+                .trim_start_matches("y(t)")
+                .trim_start()
+                .trim_start_matches('=');
             format!("1.5*({y})")
         }
         Expected::Roots(roots) => {
@@ -133,8 +142,17 @@ fn a_wrong_answer_is_wrong() {
                 let w = wrong(q);
                 let v = check(q, &text(&w));
                 assert!(!v.right, "{}: {w:?} was taken as right", q.id);
-                assert!(!v.unreadable, "{}: {w:?} unreadable: {}", q.id, v.message.en);
-                assert!(v.message.en.contains(&v.expected.en), "{}: {}", q.id, v.message.en);
+                assert!(
+                    !v.unreadable,
+                    "{}: {w:?} unreadable: {}",
+                    q.id, v.message.en
+                );
+                assert!(
+                    v.message.en.contains(&v.expected.en),
+                    "{}: {}",
+                    q.id,
+                    v.message.en
+                );
             }
         }
     }
@@ -149,26 +167,51 @@ fn the_sheets_answers_are_reproduced_or_their_difference_documented() {
         for p in &e.parts {
             for q in &p.questions {
                 let Some(sheet) = &q.sheet else {
-                    assert!(q.difference.is_none(), "{}: a difference without a sheet answer", q.id);
+                    assert!(
+                        q.difference.is_none(),
+                        "{}: a difference without a sheet answer",
+                        q.id
+                    );
                     continue;
                 };
                 printed += 1;
                 let v = check(q, &text(sheet));
-                assert!(!v.unreadable, "{}: the sheet's {sheet:?} is unreadable: {}", q.id, v.message.en);
+                assert!(
+                    !v.unreadable,
+                    "{}: the sheet's {sheet:?} is unreadable: {}",
+                    q.id, v.message.en
+                );
                 match (&q.difference, v.right) {
-                    (None, false) => undocumented.push(format!("{}: sheet {sheet:?}, Degrau {}", q.id, v.expected.en)),
+                    (None, false) => undocumented.push(format!(
+                        "{}: sheet {sheet:?}, Degrau {}",
+                        q.id, v.expected.en
+                    )),
                     (Some(_), true) => stale.push(format!("{}: sheet {sheet:?} is right", q.id)),
                     (Some(d), false) => {
-                        assert!(v.message.en.contains(&d.en), "{}: the note is not said", q.id);
-                        assert!(v.message.pt.contains(&d.pt), "{}: the note is not said", q.id);
+                        assert!(
+                            v.message.en.contains(&d.en),
+                            "{}: the note is not said",
+                            q.id
+                        );
+                        assert!(
+                            v.message.pt.contains(&d.pt),
+                            "{}: the note is not said",
+                            q.id
+                        );
                     }
                     (None, true) => {}
                 }
             }
         }
     }
-    assert!(undocumented.is_empty(), "undocumented differences: {undocumented:#?}");
-    assert!(stale.is_empty(), "documented differences that are none: {stale:#?}");
+    assert!(
+        undocumented.is_empty(),
+        "undocumented differences: {undocumented:#?}"
+    );
+    assert!(
+        stale.is_empty(),
+        "documented differences that are none: {stale:#?}"
+    );
     assert!(printed >= 60, "only {printed} printed answers recorded");
 }
 
@@ -186,7 +229,11 @@ fn report() {
                     v.expected.en,
                     v.formula.as_ref().map_or("", |f| f.en.as_str()),
                     q.sheet.as_deref().unwrap_or("—"),
-                    if q.difference.is_some() { "DIFFERS" } else { "" }
+                    if q.difference.is_some() {
+                        "DIFFERS"
+                    } else {
+                        ""
+                    }
                 );
             }
         }

@@ -35,7 +35,9 @@ fn second_order_overshoot_formula() {
     let mp = 100.0 * (-std::f64::consts::PI * zeta / (1.0 - zeta * zeta).sqrt()).exp();
     assert!((number("6a.Mp") - mp).abs() < 1e-6 * mp);
     assert!((number("6a.zeta") - zeta).abs() < 1e-12);
-    assert!((number("6a.tp") - std::f64::consts::PI / (wn * (1.0 - zeta * zeta).sqrt())).abs() < 1e-9);
+    assert!(
+        (number("6a.tp") - std::f64::consts::PI / (wn * (1.0 - zeta * zeta).sqrt())).abs() < 1e-9
+    );
     let pair = SecondOrder { zeta, wn };
     assert!((pair.overshoot() - mp).abs() < 1e-9);
 }

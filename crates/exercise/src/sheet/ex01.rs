@@ -40,17 +40,31 @@ fn part(id: &str, a: f64, printed: [&str; 5]) -> Result<Part, SheetError> {
             },
         )
         .sheet(printed[0]),
-        Question::new(id, "K", label::dc_gain(), number(Unit::None, v(k, Phrase::FinalValue), vec![]))
-            .sheet(printed[1]),
+        Question::new(
+            id,
+            "K",
+            label::dc_gain(),
+            number(Unit::None, v(k, Phrase::FinalValue), vec![]),
+        )
+        .sheet(printed[1]),
         Question::new(
             id,
             "tau",
             label::tau(),
-            number(Unit::Seconds, v(tau, Phrase::Exact), vec![v(-1.0 / pole, Phrase::Poles)]),
+            number(
+                Unit::Seconds,
+                v(tau, Phrase::Exact),
+                vec![v(-1.0 / pole, Phrase::Poles)],
+            ),
         )
         .sheet(printed[2]),
-        Question::new(id, "tr", label::rise(), number(Unit::Seconds, v(tr, Phrase::Exact), vec![]))
-            .sheet(printed[3]),
+        Question::new(
+            id,
+            "tr",
+            label::rise(),
+            number(Unit::Seconds, v(tr, Phrase::Exact), vec![]),
+        )
+        .sheet(printed[3]),
         Question::new(
             id,
             "ts",

@@ -28,28 +28,59 @@ pub fn exercise() -> Result<Exercise, SheetError> {
         },
     ];
     let questions = vec![
-        Question::new("2", "a", Text::new("Pole parameter a", "Parâmetro a (pólo)"), number(Unit::PerSecond, v(a, Phrase::Readings), vec![]))
-            .tol(READ)
-            .sheet("4"),
-        Question::new("2", "K", Text::new("Gain K of K/(s + a)", "Ganho K de K/(s + a)"), number(Unit::None, v(k, Phrase::Readings), vec![]))
-            .tol(READ)
-            .sheet("2"),
-        Question::new("2", "G", label::transfer_function(), Expected::TransferFunction(TfAnswer::Fixed(g.clone())))
-            .tol(READ)
-            .sheet("2/(s+4)"),
+        Question::new(
+            "2",
+            "a",
+            Text::new("Pole parameter a", "Parâmetro a (pólo)"),
+            number(Unit::PerSecond, v(a, Phrase::Readings), vec![]),
+        )
+        .tol(READ)
+        .sheet("4"),
+        Question::new(
+            "2",
+            "K",
+            Text::new("Gain K of K/(s + a)", "Ganho K de K/(s + a)"),
+            number(Unit::None, v(k, Phrase::Readings), vec![]),
+        )
+        .tol(READ)
+        .sheet("2"),
+        Question::new(
+            "2",
+            "G",
+            label::transfer_function(),
+            Expected::TransferFunction(TfAnswer::Fixed(g.clone())),
+        )
+        .tol(READ)
+        .sheet("2/(s+4)"),
     ];
     let solution = vec![
         Text::by(|l| {
             l.pick(
-                format!("From the figure: y reaches 63,2 % of its final value at t = τ = {} s", num(l, tau)),
-                format!("Do gráfico: y atinge 63,2 % do valor final em t = τ = {} s", num(l, tau)),
+                format!(
+                    "From the figure: y reaches 63,2 % of its final value at t = τ = {} s",
+                    num(l, tau)
+                ),
+                format!(
+                    "Do gráfico: y atinge 63,2 % do valor final em t = τ = {} s",
+                    num(l, tau)
+                ),
             )
         }),
         Text::by(|l| format!("τ = 1/a ⇒ a = 1/τ = {}", num(l, a))),
         Text::by(|l| {
             l.pick(
-                format!("Final value theorem: y(∞) = lim_(s→0) K/(s + a) = K/a = {} ⇒ K = {}·a = {}", num(l, y_final), num(l, y_final), num(l, k)),
-                format!("Teorema do valor final: y(∞) = lim_(s→0) K/(s + a) = K/a = {} ⇒ K = {}·a = {}", num(l, y_final), num(l, y_final), num(l, k)),
+                format!(
+                    "Final value theorem: y(∞) = lim_(s→0) K/(s + a) = K/a = {} ⇒ K = {}·a = {}",
+                    num(l, y_final),
+                    num(l, y_final),
+                    num(l, k)
+                ),
+                format!(
+                    "Teorema do valor final: y(∞) = lim_(s→0) K/(s + a) = K/a = {} ⇒ K = {}·a = {}",
+                    num(l, y_final),
+                    num(l, y_final),
+                    num(l, k)
+                ),
             )
         }),
         Text::by(|l| format!("G(s) = Y(s)/R(s) = {}", crate::text::tf(l, &g))),

@@ -15,24 +15,54 @@ pub fn exercise() -> Result<Exercise, SheetError> {
             "Para cada uma das funções de transferência abaixo apresentadas, localize os seus pólos e zeros, identificando o tipo de resposta para uma entrada em degrau unitário. Determine e esboce as respectivas respostas ao degrau unitário.",
         ),
         parts: vec![
-            part("3a", tf(&[4.0], &[1.0, 6.0, 8.0])?, "4/((s+2)(s+4))", Printed {
-                zeros: "nenhum", poles: "-2; -4", kind: "sobreamortecida", overshoot: "não",
-                y: "1/2 - e^{-2t} + 1/2 e^{-4t}", y_differs: None,
-            })?,
-            part("3b", tf(&[10.0, 70.0], &[1.0, 30.0, 200.0])?, "10(s+7)/((s+10)(s+20))", Printed {
-                zeros: "-7", poles: "-10; -20", kind: "sobreamortecida", overshoot: "sim",
-                y: "7/20 - 13/20 e^{-20t} + 3/10 e^{-10t}", y_differs: None,
-            })?,
-            part("3c", tf(&[30.0, 60.0], &[1.0, 17.0, 16.0])?, "30(s+2)/(s²+17s+16)", Printed {
-                zeros: "-2", poles: "-1; -16", kind: "sobreamortecida", overshoot: "não",
-                y: "15/4 - 7/4 e^{-16t} - 2e^{-t}", y_differs: None,
-            })?,
+            part(
+                "3a",
+                tf(&[4.0], &[1.0, 6.0, 8.0])?,
+                "4/((s+2)(s+4))",
+                Printed {
+                    zeros: "nenhum",
+                    poles: "-2; -4",
+                    kind: "sobreamortecida",
+                    overshoot: "não",
+                    y: "1/2 - e^{-2t} + 1/2 e^{-4t}",
+                    y_differs: None,
+                },
+            )?,
+            part(
+                "3b",
+                tf(&[10.0, 70.0], &[1.0, 30.0, 200.0])?,
+                "10(s+7)/((s+10)(s+20))",
+                Printed {
+                    zeros: "-7",
+                    poles: "-10; -20",
+                    kind: "sobreamortecida",
+                    overshoot: "sim",
+                    y: "7/20 - 13/20 e^{-20t} + 3/10 e^{-10t}",
+                    y_differs: None,
+                },
+            )?,
+            part(
+                "3c",
+                tf(&[30.0, 60.0], &[1.0, 17.0, 16.0])?,
+                "30(s+2)/(s²+17s+16)",
+                Printed {
+                    zeros: "-2",
+                    poles: "-1; -16",
+                    kind: "sobreamortecida",
+                    overshoot: "não",
+                    y: "15/4 - 7/4 e^{-16t} - 2e^{-t}",
+                    y_differs: None,
+                },
+            )?,
             part(
                 "3d",
                 degrau_lti::TransferFunction::from_zpk(&[c(-5.0)], &[c(-10.0), c(-10.0)], 1.0)?,
                 "(s+5)/(s+10)²",
                 Printed {
-                    zeros: "-5", poles: "-10; -10", kind: "criticamente amortecida", overshoot: "sim",
+                    zeros: "-5",
+                    poles: "-10; -10",
+                    kind: "criticamente amortecida",
+                    overshoot: "sim",
                     y: "1/20 - (1/2 t - 1/20) e^{-10t}",
                     y_differs: Some(Text::new(
                         "The sheet's typeset y(t) = 1/20 − (t/2 − 1/20)e^{−10t} has the wrong sign: its own MATLAB output (ilaplace) is 1/20 + (t/2 − 1/20)e^{−10t}. The printed form starts at y(0) = 1/10 instead of 0 and never overshoots; the right one rises to 0,0568 at t = 0,2 s (13,5 % overshoot) and settles at 1/20.",
@@ -40,10 +70,19 @@ pub fn exercise() -> Result<Exercise, SheetError> {
                     )),
                 },
             )?,
-            part("3e", tf(&[2.0, 5.0], &[1.0, 2.0, 5.0])?, "(2s+5)/(s²+2s+5)", Printed {
-                zeros: "-2,5", poles: "-1 ± j2", kind: "subamortecida", overshoot: "sim",
-                y: "1 - e^{-t}[cos(2t) - 1/2 sin(2t)]", y_differs: None,
-            })?,
+            part(
+                "3e",
+                tf(&[2.0, 5.0], &[1.0, 2.0, 5.0])?,
+                "(2s+5)/(s²+2s+5)",
+                Printed {
+                    zeros: "-2,5",
+                    poles: "-1 ± j2",
+                    kind: "subamortecida",
+                    overshoot: "sim",
+                    y: "1 - e^{-t}[cos(2t) - 1/2 sin(2t)]",
+                    y_differs: None,
+                },
+            )?,
         ],
     })
 }
@@ -60,9 +99,16 @@ struct Printed {
 
 /// The type of response the poles give.
 fn response_type(poles: &[C64]) -> Choice {
-    let scale = poles.iter().map(|p| p.norm()).fold(0.0, f64::max).max(1e-300);
+    let scale = poles
+        .iter()
+        .map(|p| p.norm())
+        .fold(0.0, f64::max)
+        .max(1e-300);
     if poles.iter().any(|p| p.im != 0.0) {
-        if poles.iter().any(|p| p.im != 0.0 && p.re.abs() <= 1e-12 * scale) {
+        if poles
+            .iter()
+            .any(|p| p.im != 0.0 && p.re.abs() <= 1e-12 * scale)
+        {
             Choice::Undamped
         } else {
             Choice::Underdamped
@@ -100,8 +146,20 @@ fn part(
         y.difference = Some(d);
     }
     let questions = vec![
-        Question::new(id, "zeros", label::zeros(), Expected::Roots(g.zeros().to_vec())).sheet(printed.zeros),
-        Question::new(id, "poles", label::poles(), Expected::Roots(g.poles().to_vec())).sheet(printed.poles),
+        Question::new(
+            id,
+            "zeros",
+            label::zeros(),
+            Expected::Roots(g.zeros().to_vec()),
+        )
+        .sheet(printed.zeros),
+        Question::new(
+            id,
+            "poles",
+            label::poles(),
+            Expected::Roots(g.poles().to_vec()),
+        )
+        .sheet(printed.poles),
         Question::new(
             id,
             "type",
@@ -140,20 +198,45 @@ fn part(
     let mut solution = vec![
         Text::by(|l| {
             l.pick(
-                format!("Zeros of G(s): {}. Poles of G(s): {}.", list(l, &zeros), list(l, &poles)),
-                format!("Zeros de G(s): {}. Pólos de G(s): {}.", list(l, &zeros), list(l, &poles)),
+                format!(
+                    "Zeros of G(s): {}. Poles of G(s): {}.",
+                    list(l, &zeros),
+                    list(l, &poles)
+                ),
+                format!(
+                    "Zeros de G(s): {}. Pólos de G(s): {}.",
+                    list(l, &zeros),
+                    list(l, &poles)
+                ),
             )
         }),
         Text::by(|l| {
             let why = match kind {
-                Choice::Overdamped => l.pick("two distinct real poles (ζ > 1)", "dois pólos reais e distintos (ζ > 1)"),
-                Choice::CriticallyDamped => l.pick("a double real pole (ζ = 1)", "um pólo real duplo (ζ = 1)"),
-                Choice::Underdamped => l.pick("a complex-conjugate pair (0 < ζ < 1)", "um par de pólos complexos conjugados (0 < ζ < 1)"),
-                Choice::Undamped | Choice::Yes | Choice::No => l.pick("poles on the imaginary axis (ζ = 0)", "pólos no eixo imaginário (ζ = 0)"),
+                Choice::Overdamped => l.pick(
+                    "two distinct real poles (ζ > 1)",
+                    "dois pólos reais e distintos (ζ > 1)",
+                ),
+                Choice::CriticallyDamped => {
+                    l.pick("a double real pole (ζ = 1)", "um pólo real duplo (ζ = 1)")
+                }
+                Choice::Underdamped => l.pick(
+                    "a complex-conjugate pair (0 < ζ < 1)",
+                    "um par de pólos complexos conjugados (0 < ζ < 1)",
+                ),
+                Choice::Undamped | Choice::Yes | Choice::No => l.pick(
+                    "poles on the imaginary axis (ζ = 0)",
+                    "pólos no eixo imaginário (ζ = 0)",
+                ),
             };
             l.pick(
-                format!("Type of response: {why}, so the response is {}.", kind.word(l)),
-                format!("Tipo de resposta: {why}, logo a resposta é {}.", kind.word(l)),
+                format!(
+                    "Type of response: {why}, so the response is {}.",
+                    kind.word(l)
+                ),
+                format!(
+                    "Tipo de resposta: {why}, logo a resposta é {}.",
+                    kind.word(l)
+                ),
             )
         }),
         say::partial_fractions(&g, 1.0)?,

@@ -29,8 +29,18 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     };
     let readings = vec![
         reading("tp", label::peak_time(), tp, Unit::Seconds),
-        reading("y_peak", Text::new("Peak value y(t_p)", "Valor máximo y(t_p)"), y_peak, Unit::None),
-        reading("y_final", Text::new("Final value y(∞)", "Valor final y(∞)"), y_final, Unit::None),
+        reading(
+            "y_peak",
+            Text::new("Peak value y(t_p)", "Valor máximo y(t_p)"),
+            y_peak,
+            Unit::None,
+        ),
+        reading(
+            "y_final",
+            Text::new("Final value y(∞)", "Valor final y(∞)"),
+            y_final,
+            Unit::None,
+        ),
     ];
     let wn_note = Text::by(|l| {
         l.pick(
@@ -44,48 +54,93 @@ pub fn exercise() -> Result<Exercise, SheetError> {
             ),
         )
     });
-    let mut wn_q = Question::new("4", "wn", label::wn(), number(Unit::RadPerSecond, v(wn, Phrase::Readings), vec![]))
-        .tol(READ)
-        .sheet("6,2 rad/s");
+    let mut wn_q = Question::new(
+        "4",
+        "wn",
+        label::wn(),
+        number(Unit::RadPerSecond, v(wn, Phrase::Readings), vec![]),
+    )
+    .tol(READ)
+    .sheet("6,2 rad/s");
     wn_q.difference = Some(wn_note.clone());
-    let mut k_q = Question::new("4", "K", Text::new("Gain K", "Ganho K"), number(Unit::None, v(k, Phrase::Readings), vec![]))
-        .tol(READ)
-        .sheet("28,83");
+    let mut k_q = Question::new(
+        "4",
+        "K",
+        Text::new("Gain K", "Ganho K"),
+        number(Unit::None, v(k, Phrase::Readings), vec![]),
+    )
+    .tol(READ)
+    .sheet("28,83");
     k_q.difference = Some(wn_note);
     let questions = vec![
-        Question::new("4", "Mp", label::overshoot(), number(Unit::Percent, v(mp, Phrase::Readings), vec![]))
-            .tol(READ)
-            .sheet("26 %"),
-        Question::new("4", "zeta", label::zeta(), number(Unit::None, v(zeta, Phrase::Formula), vec![]))
-            .tol(READ)
-            .sheet("0,394"),
+        Question::new(
+            "4",
+            "Mp",
+            label::overshoot(),
+            number(Unit::Percent, v(mp, Phrase::Readings), vec![]),
+        )
+        .tol(READ)
+        .sheet("26 %"),
+        Question::new(
+            "4",
+            "zeta",
+            label::zeta(),
+            number(Unit::None, v(zeta, Phrase::Formula), vec![]),
+        )
+        .tol(READ)
+        .sheet("0,394"),
         wn_q,
         k_q,
     ];
     let solution = vec![
         Text::by(|l| {
             l.pick(
-                format!("From the figure: t_p = {} s, y(t_p) = {}, y(∞) = {}", num(l, tp), num(l, y_peak), num(l, y_final)),
-                format!("Do gráfico: t_p = {} s, y(t_p) = {}, y(∞) = {}", num(l, tp), num(l, y_peak), num(l, y_final)),
+                format!(
+                    "From the figure: t_p = {} s, y(t_p) = {}, y(∞) = {}",
+                    num(l, tp),
+                    num(l, y_peak),
+                    num(l, y_final)
+                ),
+                format!(
+                    "Do gráfico: t_p = {} s, y(t_p) = {}, y(∞) = {}",
+                    num(l, tp),
+                    num(l, y_peak),
+                    num(l, y_final)
+                ),
             )
         }),
         Text::by(|l| {
             format!(
                 "Mp = (y(t_p) − y(∞))/y(∞) = ({} − {})/{} = {} %",
-                num(l, y_peak), num(l, y_final), num(l, y_final), num(l, mp)
+                num(l, y_peak),
+                num(l, y_final),
+                num(l, y_final),
+                num(l, mp)
             )
         }),
         say::zeta_from_overshoot(mp, zeta),
         Text::by(|l| {
             format!(
                 "t_p = π/(ωn√(1 − ζ²)) ⇒ ωn = π/({}·√(1 − {}²)) = {} rad/s",
-                num(l, tp), num(l, zeta), num(l, wn)
+                num(l, tp),
+                num(l, zeta),
+                num(l, wn)
             )
         }),
         Text::by(|l| {
             l.pick(
-                format!("Final value theorem: y(∞) = K/ωn² = {} ⇒ K = {}·ωn² = {}", num(l, y_final), num(l, y_final), num(l, k)),
-                format!("Teorema do valor final: y(∞) = K/ωn² = {} ⇒ K = {}·ωn² = {}", num(l, y_final), num(l, y_final), num(l, k)),
+                format!(
+                    "Final value theorem: y(∞) = K/ωn² = {} ⇒ K = {}·ωn² = {}",
+                    num(l, y_final),
+                    num(l, y_final),
+                    num(l, k)
+                ),
+                format!(
+                    "Teorema do valor final: y(∞) = K/ωn² = {} ⇒ K = {}·ωn² = {}",
+                    num(l, y_final),
+                    num(l, y_final),
+                    num(l, k)
+                ),
             )
         }),
         Text::by(|l| {

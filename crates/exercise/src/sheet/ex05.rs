@@ -15,18 +15,42 @@ pub fn exercise() -> Result<Exercise, SheetError> {
         parts: vec![
             part(
                 "5a",
-                SpecPair::OvershootSettling { overshoot: 30.0, settling: 0.05 },
-                ["0,358", "223,46 rad/s", "-80 ± j208,7", "49934/(s^2 + 160s + 49934)"],
+                SpecPair::OvershootSettling {
+                    overshoot: 30.0,
+                    settling: 0.05,
+                },
+                [
+                    "0,358",
+                    "223,46 rad/s",
+                    "-80 ± j208,7",
+                    "49934/(s^2 + 160s + 49934)",
+                ],
             )?,
             part(
                 "5b",
-                SpecPair::OvershootPeak { overshoot: 17.0, peak: 0.5 },
-                ["0,491", "7,21 rad/s", "-3,54 ± j6,28", "52/(s^2 + 7,1s + 52)"],
+                SpecPair::OvershootPeak {
+                    overshoot: 17.0,
+                    peak: 0.5,
+                },
+                [
+                    "0,491",
+                    "7,21 rad/s",
+                    "-3,54 ± j6,28",
+                    "52/(s^2 + 7,1s + 52)",
+                ],
             )?,
             part(
                 "5c",
-                SpecPair::SettlingPeak { settling: 7.0, peak: 3.0 },
-                ["0,479", "1,193 rad/s", "-0,57 ± j1,05", "1,423/(s^2 + 1,143s + 1,423)"],
+                SpecPair::SettlingPeak {
+                    settling: 7.0,
+                    peak: 3.0,
+                },
+                [
+                    "0,479",
+                    "1,193 rad/s",
+                    "-0,57 ± j1,05",
+                    "1,423/(s^2 + 1,143s + 1,423)",
+                ],
             )?,
         ],
     })
@@ -47,9 +71,15 @@ fn part(id: &str, pair: SpecPair, printed: [&str; 4]) -> Result<Part, SheetError
     };
     // The specs, and the ωn for which the exact response meets a settling spec exactly.
     let (specs, wn_exact) = match pair {
-        SpecPair::OvershootSettling { overshoot, settling } => {
+        SpecPair::OvershootSettling {
+            overshoot,
+            settling,
+        } => {
             // t_s·ωn depends on ζ only: ωn = (t_s at ωn = 1)/t_s.
-            let unit_wn = canonical(SecondOrder { zeta: design.zeta, wn: 1.0 })?;
+            let unit_wn = canonical(SecondOrder {
+                zeta: design.zeta,
+                wn: 1.0,
+            })?;
             let t1 = need(info(&unit_wn)?.settling_time, "settling time")?;
             (
                 vec![
@@ -76,21 +106,49 @@ fn part(id: &str, pair: SpecPair, printed: [&str; 4]) -> Result<Part, SheetError
     };
     let also_wn: Vec<Value> = wn_exact.map(|w| v(w, Phrase::Exact)).into_iter().collect();
     let questions = vec![
-        Question::new(id, "zeta", label::zeta(), number(Unit::None, v(design.zeta, Phrase::Formula), vec![]))
-            .sheet(printed[0]),
-        Question::new(id, "wn", label::wn(), number(Unit::RadPerSecond, v(design.wn, Phrase::Formula), also_wn))
-            .sheet(printed[1]),
-        Question::new(id, "poles", label::poles(), Expected::Roots(design.poles().to_vec()))
-            .sheet(printed[2]),
-        Question::new(id, "G", label::transfer_function(), Expected::TransferFunction(TfAnswer::Fixed(g.clone())))
-            .sheet(printed[3]),
+        Question::new(
+            id,
+            "zeta",
+            label::zeta(),
+            number(Unit::None, v(design.zeta, Phrase::Formula), vec![]),
+        )
+        .sheet(printed[0]),
+        Question::new(
+            id,
+            "wn",
+            label::wn(),
+            number(Unit::RadPerSecond, v(design.wn, Phrase::Formula), also_wn),
+        )
+        .sheet(printed[1]),
+        Question::new(
+            id,
+            "poles",
+            label::poles(),
+            Expected::Roots(design.poles().to_vec()),
+        )
+        .sheet(printed[2]),
+        Question::new(
+            id,
+            "G",
+            label::transfer_function(),
+            Expected::TransferFunction(TfAnswer::Fixed(g.clone())),
+        )
+        .sheet(printed[3]),
     ];
     let mut solution = Vec::new();
     match pair {
-        SpecPair::OvershootSettling { overshoot, settling } => {
+        SpecPair::OvershootSettling {
+            overshoot,
+            settling,
+        } => {
             solution.push(say::zeta_from_overshoot(overshoot, design.zeta));
             solution.push(Text::by(|l| {
-                format!("t_s = 4/(ζωn) ⇒ ωn = 4/({}·{}) = {} rad/s", num(l, design.zeta), num(l, settling), num(l, design.wn))
+                format!(
+                    "t_s = 4/(ζωn) ⇒ ωn = 4/({}·{}) = {} rad/s",
+                    num(l, design.zeta),
+                    num(l, settling),
+                    num(l, design.wn)
+                )
             }));
         }
         SpecPair::OvershootPeak { overshoot, peak } => {
@@ -112,13 +170,17 @@ fn part(id: &str, pair: SpecPair, printed: [&str; 4]) -> Result<Part, SheetError
             solution.push(Text::by(|l| {
                 format!(
                     "σ = ζωn = 4/t_s = 4/{} = {}; ωd = ωn√(1 − ζ²) = π/t_p = π/{} = {}",
-                    num(l, settling), num(l, design.sigma()), num(l, peak), num(l, design.wd())
+                    num(l, settling),
+                    num(l, design.sigma()),
+                    num(l, peak),
+                    num(l, design.wd())
                 )
             }));
             solution.push(Text::by(|l| {
                 format!(
                     "ωn = √(σ² + ωd²) = {} rad/s; ζ = σ/ωn = {}",
-                    num(l, design.wn), num(l, design.zeta)
+                    num(l, design.wn),
+                    num(l, design.zeta)
                 )
             }));
         }
@@ -126,10 +188,16 @@ fn part(id: &str, pair: SpecPair, printed: [&str; 4]) -> Result<Part, SheetError
     solution.push(Text::by(|l| {
         format!(
             "p₁,₂ = −ζωn ± jωn√(1 − ζ²) = {} ± j{}",
-            num(l, -design.sigma()), num(l, design.wd())
+            num(l, -design.sigma()),
+            num(l, design.wd())
         )
     }));
-    solution.push(Text::by(|l| format!("G(s) = ωn²/(s² + 2ζωn s + ωn²) = {}", crate::text::tf(l, &g))));
+    solution.push(Text::by(|l| {
+        format!(
+            "G(s) = ωn²/(s² + 2ζωn s + ωn²) = {}",
+            crate::text::tf(l, &g)
+        )
+    }));
     solution.push(Text::by(|l| {
         l.pick(
             format!(
@@ -155,14 +223,18 @@ fn part(id: &str, pair: SpecPair, printed: [&str; 4]) -> Result<Part, SheetError
         statement: Text::by(|l| {
             specs
                 .iter()
-                .map(|r| format!("{} = {} {}", r.label.get(l), num(l, r.value), r.unit.symbol()))
+                .map(|r| {
+                    format!(
+                        "{} = {} {}",
+                        r.label.get(l),
+                        num(l, r.value),
+                        r.unit.symbol()
+                    )
+                })
                 .collect::<Vec<_>>()
                 .join("; ")
         }),
-        system: System::Specs {
-            specs,
-            solution: g,
-        },
+        system: System::Specs { specs, solution: g },
         mode: Mode::DesignPlane,
         questions,
         solution,

@@ -86,12 +86,6 @@ impl Question {
         self.sheet = Some(printed.to_string());
         self
     }
-
-    /// Why the sheet's answer differs from Degrau's.
-    pub(crate) fn differs(mut self, en: impl Into<String>, pt: impl Into<String>) -> Self {
-        self.difference = Some(Text::new(en, pt));
-        self
-    }
 }
 
 /// A number question's expected answer.
@@ -193,13 +187,16 @@ pub(crate) mod label {
         Text::new("Natural frequency ωn", "Frequência natural ωn")
     }
     pub fn poles() -> Text {
-        Text::new("Poles", "Pólos")
+        Text::new("Poles of G(s)", "Pólos de G(s)")
     }
     pub fn zeros() -> Text {
-        Text::new("Zeros", "Zeros")
+        Text::new("Zeros of G(s)", "Zeros de G(s)")
     }
     pub fn response() -> Text {
-        Text::new("Unit-step response y(t)", "Resposta ao degrau unitário y(t)")
+        Text::new(
+            "Unit-step response y(t)",
+            "Resposta ao degrau unitário y(t)",
+        )
     }
     pub fn response_type() -> Text {
         Text::new("Type of response", "Tipo de resposta")
@@ -255,10 +252,7 @@ pub(crate) mod say {
                     );
                     (
                         1.0,
-                        format!(
-                            "({num})/({shift}² + {})",
-                            coefficient(l, t.omega * t.omega)
-                        ),
+                        format!("({num})/({shift}² + {})", coefficient(l, t.omega * t.omega)),
                     )
                 };
                 if body.is_empty() {
