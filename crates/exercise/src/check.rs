@@ -94,13 +94,38 @@ pub fn check(question: &Question, answer: &StudentAnswer) -> Verdict {
 fn sheet_note(question: &Question, answer: &StudentAnswer) -> Option<Text> {
     let difference = question.difference.as_ref()?;
     let printed = question.sheet.as_ref()?;
-    let same = match answer {
-        StudentAnswer::Text(t) => normal(t) == normal(printed),
-        _ => false,
-    };
+    let same = same_as_sheet(question, answer, printed);
     let always = Text::by(|l| format!("{} {}", Phrase::SheetNote.get(l), difference.get(l)));
     // Said when the student typed the sheet's answer; otherwise only when it may help.
     same.then_some(always)
+}
+
+/// Whether the student's answer is the sheet's printed one: the same number or range
+/// (within the question's tolerance), or the same text.
+fn same_as_sheet(question: &Question, answer: &StudentAnswer, printed: &str) -> bool {
+    let tol = question.tolerance;
+    match (&question.expected, answer) {
+        (Expected::Number { unit, .. }, _) => {
+            let typed = match answer {
+                StudentAnswer::Number(x) => Some(*x),
+                StudentAnswer::Text(t) => input::number(t, *unit).ok().map(|(x, _)| x),
+                StudentAnswer::Coefficients { .. } => None,
+            };
+            let sheet = input::number(printed, *unit).ok().map(|(x, _)| x);
+            matches!((typed, sheet), (Some(a), Some(b)) if tol.accepts(a, b))
+        }
+        (Expected::GainRange { .. }, StudentAnswer::Text(t)) => {
+            match (input::gain_range(t), input::gain_range(printed)) {
+                (Ok(RangeAnswer::Range(a)), Ok(RangeAnswer::Range(b))) => {
+                    range_matches(RangeAnswer::Range(a), b, tol)
+                }
+                (Ok(RangeAnswer::Bare(a)), Ok(RangeAnswer::Bare(b))) => tol.accepts(a, b),
+                _ => false,
+            }
+        }
+        (_, StudentAnswer::Text(t)) => normal(t) == normal(printed),
+        _ => false,
+    }
 }
 
 fn normal(text: &str) -> String {
@@ -348,7 +373,11 @@ fn describe_expected(q: &Question, lang: Lang) -> String {
         Expected::TransferFunction(TfAnswer::ClosedLoopInK(g)) => {
             let num = text::poly(lang, &g.num());
             let den = text::poly(lang, &g.den());
-            format!("K({num})/({den} + K({num}))")
+            if g.num().len() == 1 {
+                format!("{num}K/({den} + {num}K)")
+            } else {
+                format!("K({num})/({den} + K({num}))")
+            }
         }
         Expected::GainRange { main, .. } => range_text(lang, *main),
         Expected::Region(r) => format!(

@@ -239,3 +239,18 @@ fn report() {
         }
     }
 }
+
+/// Every worked solution in both languages (for review: `-- --nocapture solutions`).
+#[test]
+fn solutions() {
+    for e in all() {
+        for p in &e.parts {
+            for lang in [Lang::En, Lang::Pt] {
+                println!("— {} ({lang:?}) {}", p.id, p.statement.get(lang));
+                for s in solution(p, lang) {
+                    println!("    {}", s.line);
+                }
+            }
+        }
+    }
+}

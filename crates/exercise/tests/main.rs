@@ -3,4 +3,5 @@
 
 mod answers;
 mod closed_forms;
+mod differences;
 mod input;

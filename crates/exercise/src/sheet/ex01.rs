@@ -95,7 +95,7 @@ fn part(id: &str, a: f64, printed: [&str; 5]) -> Result<Part, SheetError> {
         Text::by(|l| {
             l.pick(
                 format!(
-                    "Time constant: y(τ) = 63,2 % of the final value ⇒ τ = {} s = 1/a, a = {} (the pole is s = {})",
+                    "Time constant: y(τ) = 63.2 % of the final value ⇒ τ = {} s = 1/a, a = {} (the pole is s = {})",
                     num(l, tau),
                     num(l, a),
                     num(l, pole)
@@ -111,7 +111,7 @@ fn part(id: &str, a: f64, printed: [&str; 5]) -> Result<Part, SheetError> {
         Text::by(|l| {
             l.pick(
                 format!(
-                    "Rise time (10–90 %): y(t₁) = 0,1 ⇒ t₁ = {} s; y(t₂) = 0,9 ⇒ t₂ = {} s; t_r = t₂ − t₁ = τ·ln 9 = {} s",
+                    "Rise time (10–90 %): y(t₁) = 0.1 ⇒ t₁ = {} s; y(t₂) = 0.9 ⇒ t₂ = {} s; t_r = t₂ − t₁ = τ·ln 9 = {} s",
                     num(l, t1),
                     num(l, t2),
                     num(l, tr)
@@ -127,7 +127,7 @@ fn part(id: &str, a: f64, printed: [&str; 5]) -> Result<Part, SheetError> {
         Text::by(|l| {
             l.pick(
                 format!(
-                    "Settling time (2 %): e^(−t_s/τ) = 0,02 ⇒ t_s = τ·ln 50 = {} s; the rule t_s ≈ 4τ gives {} s",
+                    "Settling time (2 %): e^(−t_s/τ) = 0.02 ⇒ t_s = τ·ln 50 = {} s; the rule t_s ≈ 4τ gives {} s",
                     num(l, ts),
                     num(l, 4.0 * tau)
                 ),

@@ -57,7 +57,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
         Text::by(|l| {
             l.pick(
                 format!(
-                    "From the figure: y reaches 63,2 % of its final value at t = τ = {} s",
+                    "From the figure: y reaches 63.2 % of its final value at t = τ = {} s",
                     num(l, tau)
                 ),
                 format!(

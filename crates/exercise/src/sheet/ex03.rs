@@ -65,7 +65,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
                     overshoot: "sim",
                     y: "1/20 - (1/2 t - 1/20) e^{-10t}",
                     y_differs: Some(Text::new(
-                        "The sheet's typeset y(t) = 1/20 − (t/2 − 1/20)e^{−10t} has the wrong sign: its own MATLAB output (ilaplace) is 1/20 + (t/2 − 1/20)e^{−10t}. The printed form starts at y(0) = 1/10 instead of 0 and never overshoots; the right one rises to 0,0568 at t = 0,2 s (13,5 % overshoot) and settles at 1/20.",
+                        "The sheet's typeset y(t) = 1/20 − (t/2 − 1/20)e^{−10t} has the wrong sign: its own MATLAB output (ilaplace) is 1/20 + (t/2 − 1/20)e^{−10t}. The printed form starts at y(0) = 1/10 instead of 0 and never overshoots; the right one rises to 0.0568 at t = 0.2 s (13.5 % overshoot) and settles at 1/20.",
                         "A expressão impressa y(t) = 1/20 − (t/2 − 1/20)e^{−10t} tem o sinal trocado: a própria saída do MATLAB (ilaplace) é 1/20 + (t/2 − 1/20)e^{−10t}. A forma impressa começa em y(0) = 1/10 em vez de 0 e nunca ultrapassa o valor final; a correta sobe a 0,0568 em t = 0,2 s (sobreelongação de 13,5 %) e estabelece-se em 1/20.",
                     )),
                 },
@@ -251,9 +251,10 @@ fn part(
                 format!("A resposta exata ultrapassa o valor final {} com Mp = {} %{at}.", num(l, g.dc_gain()), num(l, mp)),
             )
         } else {
+            let zero = if g.zeros().is_empty() { "" } else { l.pick(", despite the zero", ", apesar do zero") };
             l.pick(
-                format!("The exact response rises monotonically to its final value {}: no overshoot, whatever the zero.", num(l, g.dc_gain())),
-                format!("A resposta exata sobe monotonamente até ao valor final {}: sem sobreelongação, apesar do zero.", num(l, g.dc_gain())),
+                format!("The exact response rises monotonically to its final value {}: no overshoot{zero}.", num(l, g.dc_gain())),
+                format!("A resposta exata sobe monotonamente até ao valor final {}: sem sobreelongação{zero}.", num(l, g.dc_gain())),
             )
         }
     }));

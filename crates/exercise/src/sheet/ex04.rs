@@ -45,7 +45,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     let wn_note = Text::by(|l| {
         l.pick(
             format!(
-                "π/(0,0551·√(1 − 0,394²)) = {} rad/s, not 6,2: the sheet slipped a factor of 10 (with ωn = 6,2 rad/s the peak would come at t_p = {} s, ten times the figure's). K follows it: 0,75·ωn² = {}, not 28,83.",
+                "π/(0.0551·√(1 − 0.394²)) = {} rad/s, not 6.2: the sheet slipped a factor of 10 (with ωn = 6.2 rad/s the peak would come at t_p = {} s, ten times the figure's). K follows it: 0.75·ωn² = {}, not 28.83.",
                 num(l, wn), num(l, sheet_tp), num(l, k)
             ),
             format!(

@@ -201,11 +201,11 @@ fn part(id: &str, pair: SpecPair, printed: [&str; 4]) -> Result<Part, SheetError
     solution.push(Text::by(|l| {
         l.pick(
             format!(
-                "Exact step response of this G(s): Mp = {} %, t_p = {} s, t_s (2 %) = {} s (the formula 4/(ζωn) gives {} s: it bounds the envelope, not the response).",
+                "Exact step response of this G(s): Mp = {} %, t_p = {} s, t_s (2 %) = {} s (the formula 4/(ζωn), from the envelope, gives {} s).",
                 num(l, mp_exact), num(l, tp_exact), num(l, ts_exact), num(l, design.settling_time())
             ),
             format!(
-                "Resposta ao degrau exata desta G(s): Mp = {} %, t_p = {} s, t_s (2 %) = {} s (a fórmula 4/(ζωn) dá {} s: limita a envolvente, não a resposta).",
+                "Resposta ao degrau exata desta G(s): Mp = {} %, t_p = {} s, t_s (2 %) = {} s (a fórmula 4/(ζωn), da envolvente, dá {} s).",
                 num(l, mp_exact), num(l, tp_exact), num(l, ts_exact), num(l, design.settling_time())
             ),
         )

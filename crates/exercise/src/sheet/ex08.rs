@@ -1,8 +1,8 @@
-//! Exercise 8: the region of the s-plane where Mp ≤ 25 % and t_s ≤ 0,1 s, and the gain K
+//! Exercise 8: the region of the s-plane where Mp ≤ 25 % and t_s ≤ 0.1 s, and the gain K
 //! and compensator pole a of the loop K/(s + a) · 100/(s + 25) that place the closed-loop
 //! poles at its corner; the exact response of the sheet's rounded design.
 
-use degrau_lti::feedback::{SecondOrder, Spec, find_gain};
+use degrau_lti::feedback::{SecondOrder, Spec};
 
 use super::*;
 use crate::model::{Controller, Mode, Part, Reading, Region, System};
@@ -21,14 +21,22 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     let ours = info(&closed(k, a)?)?;
     let ours_mp = need(ours.overshoot, "overshoot")?;
     let ours_ts = need(ours.settling_time, "settling time")?;
-    // The sheet's design, from ζ rounded to 0,4.
+    // The sheet's design, from ζ rounded to 0.4.
     let (sheet_k, sheet_a) = (86.25, 55.0);
     let theirs = info(&closed(sheet_k, sheet_a)?)?;
     let sheet_mp = need(theirs.overshoot, "overshoot")?;
     let sheet_ts = need(theirs.settling_time, "settling time")?;
     // With a = 55, the gains whose exact response meets both specs.
-    let gains = find_gain(&open(a)?, &[Spec::Overshoot(mp), Spec::Settling(ts)])?
-        .ok_or(SheetError::Missing("gain range"))?;
+    let runs = feasible_runs(
+        &open(a)?,
+        &[Spec::Overshoot(mp), Spec::Settling(ts)],
+        0.1,
+        200.0,
+        400,
+    );
+    if runs.is_empty() {
+        return Err(SheetError::Missing("gain range"));
+    }
     let specs = vec![
         Reading {
             key: "overshoot".into(),
@@ -85,7 +93,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     let note = Text::by(|l| {
         l.pick(
             format!(
-                "The sheet rounds ζ = {} to 0,4, so ωn = 100 rad/s and K = 86,25: the poles then sit at ζ = 0,4, outside the region, and the exact closed-loop response overshoots by Mp = {} %, above the 25 % asked (t_s = {} s). With ζ = {} unrounded, ωn = {} rad/s and K = {} give Mp = {} % exactly.",
+                "The sheet rounds ζ = {} to 0.4, so ωn = 100 rad/s and K = 86.25: the poles then sit at ζ = 0.4, outside the region, and the exact closed-loop response overshoots by Mp = {} %, above the 25 % asked (t_s = {} s). With ζ = {} unrounded, ωn = {} rad/s and K = {} give Mp = {} % exactly.",
                 num(l, zeta), num(l, sheet_mp), num(l, sheet_ts), num(l, zeta), num(l, wn), num(l, k), num(l, ours_mp)
             ),
             format!(
@@ -152,21 +160,26 @@ pub fn exercise() -> Result<Exercise, SheetError> {
             )
         }),
         Text::by(|l| {
+            let runs: Vec<String> = runs
+                .iter()
+                .map(|(lo, hi)| format!("{} ≤ K ≤ {}", num(l, *lo), num(l, *hi)))
+                .collect();
+            let runs = runs.join(l.pick(" or ", " ou "));
             l.pick(
                 format!(
-                    "Root locus of K·100/((s + 25)(s + {})): on the exact response, both specs hold for {} ≤ K ≤ {}.",
-                    num(l, a), num(l, gains.range.0), num(l, gains.range.1)
+                    "Root locus of K·100/((s + 25)(s + {})): the branches meet at s = −40 and rise along Re(s) = −40 (σ = 40 for every K past the breakaway). On the exact response, both specs hold for {runs}: not one interval, because the exact 2 % settling time falls as K grows and jumps up each time one more peak of the response rises out of the band, while 4/σ stays at 0.1 s.",
+                    num(l, a)
                 ),
                 format!(
-                    "Lugar das raízes de K·100/((s + 25)(s + {})): na resposta exata, as duas especificações cumprem-se para {} ≤ K ≤ {}.",
-                    num(l, a), num(l, gains.range.0), num(l, gains.range.1)
+                    "Lugar das raízes de K·100/((s + 25)(s + {})): os ramos encontram-se em s = −40 e sobem pela reta Re(s) = −40 (σ = 40 para todo o K depois do ponto de saída). Na resposta exata, as duas especificações cumprem-se para {runs}: não um só intervalo, porque o tempo de estabelecimento exato (2 %) diminui quando K cresce e sobe aos saltos cada vez que mais um pico da resposta sai da faixa, enquanto 4/σ fica em 0,1 s.",
+                    num(l, a)
                 ),
             )
         }),
         Text::by(|l| {
             l.pick(
                 format!(
-                    "The sheet's K = 86,25 (ζ rounded to 0,4) gives Mp = {} % > 25 %.",
+                    "The sheet's K = 86.25 (ζ rounded to 0.4) gives Mp = {} % > 25 %.",
                     num(l, sheet_mp)
                 ),
                 format!(
@@ -179,7 +192,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     Ok(Exercise {
         id: "8".into(),
         statement: Text::new(
-            "Consider the unity-feedback system of the figure. Find the gain K and the location of the compensator's pole so that the closed loop's unit-step response has a maximum overshoot Mp ≤ 25 % and a settling time t_s ≤ 0,1 s.",
+            "Consider the unity-feedback system of the figure. Find the gain K and the location of the compensator's pole so that the closed loop's unit-step response has a maximum overshoot Mp ≤ 25 % and a settling time t_s ≤ 0.1 s.",
             "Considere o sistema de realimentação unitária apresentado na figura seguinte. Pretende-se obter o ganho K e a localização do pólo do compensador de forma que a resposta em malha fechada do sistema a uma entrada em degrau unitário possua uma sobreelongação máxima de M_p ≤ 25 % e um tempo de estabelecimento de t_s ≤ 0,1 s.",
         ),
         parts: vec![

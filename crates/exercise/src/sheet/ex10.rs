@@ -1,7 +1,7 @@
 //! Exercise 10: an armature-controlled DC motor: its speed and position transfer functions,
 //! the steady speed for 10 V, the position servo's closed loop in K, the largest K for
 //! Mp ≤ 20 %, the gains for t_r < 4 s (with ζ following K, not fixed), and the exact Mp
-//! and t_r at K = 0,01, 0,02 and 0,04.
+//! and t_r at K = 0.01, 0.02 and 0.04.
 
 use degrau_lti::feedback::{SecondOrder, Spec, find_gain};
 use degrau_lti::locus::{self, Side};
@@ -48,13 +48,13 @@ pub fn exercise() -> Result<Exercise, SheetError> {
         .ok_or(SheetError::Missing("gain"))?
         .range
         .0;
-    // The sheet's way: ζ kept at 0,456 (Mp = 20 %).
+    // The sheet's way: ζ kept at 0.456 (Mp = 20 %).
     let wn_fixed = (std::f64::consts::PI - zeta.acos()) / (tr_spec * (1.0 - zeta * zeta).sqrt());
     let k_fixed = wn_fixed * wn_fixed / gain;
     let tr_at_fixed = rise_full(&position.closed_loop(k_fixed)?)?;
 
     let statement = Text::new(
-        "Consider the armature-controlled DC motor of the figure, with a negligible inductance L_a. Take J = 0,01 kg m², B = 0,001 N m s, K_e = 0,02 V s, K_t = 1 N m/A, R_a = 10 Ω.",
+        "Consider the armature-controlled DC motor of the figure, with a negligible inductance L_a. Take J = 0.01 kg m², B = 0.001 N m s, K_e = 0.02 V s, K_t = 1 N m/A, R_a = 10 Ω.",
         "Considere o motor DC controlado pela armadura representado na figura seguinte. Considere que a inductância L_a é desprezável. Assuma os seguintes valores para os parâmetros: J = 0,01 kg m², B = 0,001 N m s, K_e = 0,02 V s, K_t = 1 N m/A, R_a = 10 Ω.",
     );
     let a = Part {
@@ -208,7 +208,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     };
     let k_note = Text::by(|l| {
         l.pick(
-            format!("The sheet rounds K = ωn²/10 = {} to one significant digit: K = 0,01 meets the spec but is not the largest K.", num(l, k_formula)),
+            format!("The sheet rounds K = ωn²/10 = {} to one significant digit: K = 0.01 meets the spec but is not the largest K.", num(l, k_formula)),
             format!("A folha arredonda K = ωn²/10 = {} a um algarismo significativo: K = 0,01 cumpre a especificação mas não é o maior K.", num(l, k_formula)),
         )
     });
@@ -256,7 +256,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
             say::zeta_from_overshoot(mp, zeta),
             Text::by(|l| {
                 l.pick(
-                    format!("Comparing (ii) with ωn²/(s² + 2ζωn s + ωn²): 0,3 = 2ζωn ⇒ ωn = {} rad/s; 10K = ωn² ⇒ K = {}", num(l, wn), num(l, k_formula)),
+                    format!("Comparing (ii) with ωn²/(s² + 2ζωn s + ωn²): 0.3 = 2ζωn ⇒ ωn = {} rad/s; 10K = ωn² ⇒ K = {}", num(l, wn), num(l, k_formula)),
                     format!("Comparando (ii) com ωn²/(s² + 2ζωn s + ωn²): 0,3 = 2ζωn ⇒ ωn = {} rad/s; 10K = ωn² ⇒ K = {}", num(l, wn), num(l, k_formula)),
                 )
             }),
@@ -266,7 +266,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
                     format!("s = {} (K = {})", num(l, b.s), num(l, b.k))
                 });
                 l.pick(
-                    format!("Root locus of 10K/(s(s + 0,3)): breakaway at {at}, then the branches rise along Re(s) = −0,15 and ζ falls as K grows: Mp ≤ 20 % ⇔ K ≤ {}.", num(l, k_max)),
+                    format!("Root locus of 10K/(s(s + 0.3)): breakaway at {at}, then the branches rise along Re(s) = −0.15 and ζ falls as K grows: Mp ≤ 20 % ⇔ K ≤ {}.", num(l, k_max)),
                     format!("Lugar das raízes de 10K/(s(s + 0,3)): ponto de saída em {at}, depois os ramos sobem pela reta Re(s) = −0,15 e ζ diminui com K: Mp ≤ 20 % ⇔ K ≤ {}.", num(l, k_max)),
                 )
             }),
@@ -275,7 +275,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     let rise_note = Text::by(|l| {
         l.pick(
             format!(
-                "The sheet keeps ζ = 0,456 (the Mp = 20 % of e)) while raising K, but in this loop ζ = 0,15/ωn falls as K grows. With ζ following K, t_r (0–100 %) < 4 s for K > {} (MATLAB's 10–90 %: K > {}); at the sheet's K = {} the exact t_r is {} s. And no K meets both e) and f): Mp ≤ 20 % needs K ≤ {}.",
+                "The sheet keeps ζ = 0.456 (the Mp = 20 % of e)) while raising K, but in this loop ζ = 0.15/ωn falls as K grows. With ζ following K, t_r (0–100 %) < 4 s for K > {} (MATLAB's 10–90 %: K > {}); at the sheet's K = {} the exact t_r is {} s. And no K meets both e) and f): Mp ≤ 20 % needs K ≤ {}.",
                 num(l, k_rise), num(l, k_rise_10_90), num(l, k_fixed), num(l, tr_at_fixed), num(l, k_max)
             ),
             format!(
@@ -318,7 +318,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
         questions: vec![range_q],
         solution: vec![
             Text::new(
-                "t_r = (π − cos⁻¹ζ)/(ωn√(1 − ζ²)) < 4 s, with ωn = √(10K) and ζ = 0,3/(2ωn) = 0,15/ωn from (ii)",
+                "t_r = (π − cos⁻¹ζ)/(ωn√(1 − ζ²)) < 4 s, with ωn = √(10K) and ζ = 0.3/(2ωn) = 0.15/ωn from (ii)",
                 "t_r = (π − cos⁻¹ζ)/(ωn√(1 − ζ²)) < 4 s, com ωn = √(10K) e ζ = 0,3/(2ωn) = 0,15/ωn de (ii)",
             ),
             Text::by(|l| {
@@ -329,7 +329,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
             }),
             Text::by(|l| {
                 l.pick(
-                    format!("The sheet's way, ζ kept at 0,456: ωn > {} rad/s ⇒ K > {}; but at that K the loop's ζ is {}, not 0,456.", num(l, wn_fixed), num(l, k_fixed), num(l, 0.15 / wn_fixed)),
+                    format!("The sheet's way, ζ kept at 0.456: ωn > {} rad/s ⇒ K > {}; but at that K the loop's ζ is {}, not 0.456.", num(l, wn_fixed), num(l, k_fixed), num(l, 0.15 / wn_fixed)),
                     format!("O caminho da folha, ζ mantido em 0,456: ωn > {} rad/s ⇒ K > {}; mas nesse K o ζ da malha é {}, não 0,456.", num(l, wn_fixed), num(l, k_fixed), num(l, 0.15 / wn_fixed)),
                 )
             }),
@@ -338,7 +338,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     };
     let mut g_questions = Vec::new();
     let mut g_solution = vec![Text::new(
-        "Exact closed-loop step responses of 10K/(s² + 0,3s + 10K):",
+        "Exact closed-loop step responses of 10K/(s² + 0.3s + 10K):",
         "Respostas ao degrau exatas em malha fechada de 10K/(s² + 0,3s + 10K):",
     )];
     for (key, k) in [("K0_01", 0.01), ("K0_02", 0.02), ("K0_04", 0.04)] {
@@ -406,7 +406,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     let g = Part {
         id: "10g".into(),
         statement: Text::new(
-            "g) Plot the position servo's step response for K = 0,01, 0,02 and 0,04; find Mp and t_r in each case and check them against e) and f).",
+            "g) Plot the position servo's step response for K = 0.01, 0.02 and 0.04; find Mp and t_r in each case and check them against e) and f).",
             "g) Utilize o MATLAB para obter a resposta ao degrau do sistema servo de posição para os valores do ganho de K = 0,01, 0,02 e 0,04. Calcule a sobreelongação máxima M_p e o tempo de subida t_r para cada um dos casos referidos. Verifique se os gráficos estão consistentes com os valores calculados nas alíneas e) e f).",
         ),
         system: loop_system(0.02),
@@ -425,7 +425,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
 /// K grows once the loop is underdamped), by bisection in log K.
 fn rise_threshold(g: &degrau_lti::TransferFunction, tr: f64) -> Result<f64, SheetError> {
     let rise = |k: f64| -> Result<f64, SheetError> { rise_full(&g.closed_loop(k)?) };
-    // Underdamped from K = 0,00225 (ζ = 1): start just above it.
+    // Underdamped from K = 0.00225 (ζ = 1): start just above it.
     let (mut lo, mut hi) = (0.003f64, 10.0f64);
     if rise(lo)? < tr || rise(hi)? > tr {
         return Err(SheetError::Missing("rise-time threshold"));

@@ -62,12 +62,13 @@ pub fn exercise() -> Result<Exercise, SheetError> {
             ),
             say::zeta_from_overshoot(mp, zeta),
             Text::new(
-                "Type 1: the error refers to a unit ramp; K_v = lim_(s→0) sG(s) = K/a; e_ss = 1/K_v = a/K = 0,01 ⇒ a = 0,01K (iii)",
+                "Type 1: the error refers to a unit ramp; K_v = lim_(s→0) sG(s) = K/a; e_ss = 1/K_v = a/K = 0.01 ⇒ a = 0.01K (iii)",
                 "Tipo 1: o erro refere-se a uma rampa unitária; K_v = lim_(s→0) sG(s) = K/a; e_ss = 1/K_v = a/K = 0,01 ⇒ a = 0,01K (iii)",
             ),
             Text::by(|l| {
                 format!(
-                    "0,01K = 2·{}·√K ⇒ √K = {} ⇒ K = {}, a = {}",
+                    "{}K = 2·{}·√K ⇒ √K = {} ⇒ K = {}, a = {}",
+                    num(l, ess),
                     num(l, zeta),
                     num(l, k.sqrt()),
                     num(l, k),

@@ -155,6 +155,59 @@ pub(crate) fn pair_of(b: f64, c: f64) -> SecondOrder {
     }
 }
 
+/// Every run of gains in [lo, hi] where all `specs` hold on the exact closed loop of K·G: a
+/// log-spaced scan of `n` gains, each end refined by bisection (lti's `find_gain` gives only
+/// the first run; a settling-time spec can hold on several, the 2 % settling time jumping
+/// when a peak of the response leaves the band).
+pub(crate) fn feasible_runs(
+    g: &TransferFunction,
+    specs: &[degrau_lti::feedback::Spec],
+    lo: f64,
+    hi: f64,
+    n: usize,
+) -> Vec<(f64, f64)> {
+    let meets = |k: f64| specs.iter().all(|s| s.holds(g, k));
+    let ratio = (hi / lo).powf(1.0 / (n.max(2) - 1) as f64);
+    let ks: Vec<f64> = (0..n).map(|i| lo * ratio.powi(i as i32)).collect();
+    let ok: Vec<bool> = ks.iter().map(|&k| meets(k)).collect();
+    let refine = |mut bad: f64, mut good: f64| {
+        for _ in 0..60 {
+            let mid = (bad * good).sqrt();
+            if meets(mid) {
+                good = mid;
+            } else {
+                bad = mid;
+            }
+        }
+        good
+    };
+    let mut runs = Vec::new();
+    let mut i = 0;
+    while i < n {
+        if !ok[i] {
+            i += 1;
+            continue;
+        }
+        let start = if i == 0 {
+            ks[0]
+        } else {
+            refine(ks[i - 1], ks[i])
+        };
+        let mut j = i;
+        while j + 1 < n && ok[j + 1] {
+            j += 1;
+        }
+        let end = if j + 1 < n {
+            refine(ks[j + 1], ks[j])
+        } else {
+            ks[j]
+        };
+        runs.push((start, end));
+        i = j + 1;
+    }
+    runs
+}
+
 /// Common labels.
 pub(crate) mod label {
     use crate::text::Text;
@@ -241,18 +294,30 @@ pub(crate) mod say {
                     } else {
                         format!("{}^{}", pole(t.sigma), t.power + 1)
                     };
-                    (c.signum(), format!("{}/{power}", coefficient(l, c.abs())))
+                    (c.signum(), format!("{}/{power}", factor(l, c.abs())))
                 } else {
                     // a cos ωt + b sin ωt ↔ (a(s − σ) + bω)/((s − σ)² + ω²)
                     let shift = pole(t.sigma);
-                    let num = format!(
-                        "{}·{shift} + {}",
-                        coefficient(l, t.cos),
-                        coefficient(l, t.sin * t.omega)
-                    );
+                    let first = match t.cos {
+                        1.0 => shift.clone(),
+                        -1.0 => format!("−{shift}"),
+                        a if a < 0.0 => format!("−{}{shift}", factor(l, -a)),
+                        a => format!("{}{shift}", factor(l, a)),
+                    };
+                    let b = t.sin * t.omega;
+                    let second = if b == 0.0 {
+                        String::new()
+                    } else if b < 0.0 {
+                        format!(" − {}", coefficient(l, -b))
+                    } else {
+                        format!(" + {}", coefficient(l, b))
+                    };
                     (
                         1.0,
-                        format!("({num})/({shift}² + {})", coefficient(l, t.omega * t.omega)),
+                        format!(
+                            "({first}{second})/({shift}² + {})",
+                            coefficient(l, t.omega * t.omega)
+                        ),
                     )
                 };
                 if body.is_empty() {
@@ -284,6 +349,12 @@ pub(crate) mod say {
             Some((p, q)) if q <= 100 => format!("{p}/{q}"),
             _ => num(lang, x),
         }
+    }
+
+    /// A coefficient in front of something: `(1/2)`, `3`, `0,25`.
+    fn factor(lang: Lang, x: f64) -> String {
+        let c = coefficient(lang, x);
+        if c.contains('/') { format!("({c})") } else { c }
     }
 
     /// `y(t) = …` as the notes write it.
