@@ -33,7 +33,14 @@ pub enum ExprError {
     Syntax,
     #[error("the variable {0} is not part of this answer")]
     Variable(char),
+    #[error("the expression is too long or too deeply bracketed")]
+    TooLong,
 }
+
+/// The most tokens an expression may have.
+const MAX_TOKENS: usize = 400;
+/// The deepest nesting of brackets accepted.
+const MAX_DEPTH: usize = 32;
 
 /// The variables an expression may use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -105,6 +112,20 @@ impl Expr {
         let tokens = tokenize(body)?;
         if tokens.is_empty() {
             return Err(ExprError::Empty);
+        }
+        // A typed answer is short; a bound keeps the recursive reading's depth small.
+        let mut depth = 0usize;
+        let mut deepest = 0usize;
+        for t in &tokens {
+            match t {
+                Token::Open => depth += 1,
+                Token::Close => depth = depth.saturating_sub(1),
+                _ => {}
+            }
+            deepest = deepest.max(depth);
+        }
+        if tokens.len() > MAX_TOKENS || deepest > MAX_DEPTH {
+            return Err(ExprError::TooLong);
         }
         let mut parser = Parser { tokens, at: 0 };
         let root = parser.sum()?;

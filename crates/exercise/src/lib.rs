@@ -44,3 +44,20 @@ pub fn solution(part: &Part, lang: Lang) -> Vec<Step> {
         })
         .collect()
 }
+
+/// The part with this id (`"8b"`) in a sheet.
+pub fn find_part<'a>(sheet: &'a [Exercise], id: &str) -> Option<&'a Part> {
+    sheet
+        .iter()
+        .flat_map(|e| e.parts.iter())
+        .find(|p| p.id == id)
+}
+
+/// The question with this id (`"8b.K"`) in a sheet.
+pub fn find_question<'a>(sheet: &'a [Exercise], id: &str) -> Option<&'a Question> {
+    sheet
+        .iter()
+        .flat_map(|e| e.parts.iter())
+        .flat_map(|p| p.questions.iter())
+        .find(|q| q.id == id)
+}

@@ -69,6 +69,10 @@ impl Localize for ExprError {
                 "the expression ends too early or has something left over".into(),
                 "a expressão acaba cedo demais ou tem algo a mais".into(),
             ),
+            ExprError::TooLong => lang.pick(
+                "the expression is too long or too deeply bracketed".into(),
+                "a expressão é longa demais ou tem parênteses a mais".into(),
+            ),
             ExprError::Variable(v) => lang.pick(
                 format!("the variable {v} does not belong in this answer"),
                 format!("a variável {v} não faz parte desta resposta"),
