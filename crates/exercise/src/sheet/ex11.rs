@@ -121,6 +121,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
                 format!("A malha fechada (pólos de s² + 5s + 2) é {verdict}, logo estes erros são os reais."),
             )
         }),
+        say::root_locus(&g),
     ];
     Ok(Exercise {
         id: "11".into(),

@@ -15,6 +15,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     let k = (1.0 / ess - 1.0) / g0;
     let check = ErrorConstants::of(&g, k).errors().step.value();
     let cl = g.closed_loop(k)?;
+    let cl_mp = need(info(&cl)?.overshoot, "overshoot")?;
     let questions = vec![
         Question::new(
             "12",
@@ -63,6 +64,21 @@ pub fn exercise() -> Result<Exercise, SheetError> {
             l.pick(
                 format!("Check: with K = {}, e_ss = {}; the closed loop's poles {} are stable, so the error is reached.", num(l, k), num(l, check), poles.join("; ")),
                 format!("Verificação: com K = {}, e_ss = {}; os pólos da malha fechada {} são estáveis, logo o erro é atingido.", num(l, k), num(l, check), poles.join("; ")),
+            )
+        }),
+        say::root_locus(&g),
+        Text::by(|l| {
+            let pair = degrau_lti::feedback::SecondOrder::dominant(cl.poles());
+            let (zeta, wn) = pair.map_or((f64::NAN, f64::NAN), |p| (p.zeta, p.wn));
+            l.pick(
+                format!(
+                    "At K = {}: ζ = {}, ωn = {} rad/s; the exact closed-loop step response settles at {} (error {}) with Mp = {} %.",
+                    num(l, k), num(l, zeta), num(l, wn), num(l, cl.dc_gain()), num(l, 1.0 - cl.dc_gain()), num(l, cl_mp)
+                ),
+                format!(
+                    "Em K = {}: ζ = {}, ωn = {} rad/s; a resposta ao degrau exata em malha fechada estabelece-se em {} (erro {}) com Mp = {} %.",
+                    num(l, k), num(l, zeta), num(l, wn), num(l, cl.dc_gain()), num(l, 1.0 - cl.dc_gain()), num(l, cl_mp)
+                ),
             )
         }),
     ];

@@ -65,6 +65,7 @@ pub fn exercise() -> Result<Exercise, SheetError> {
                 "Type 1: the error refers to a unit ramp; K_v = lim_(s→0) sG(s) = K/a; e_ss = 1/K_v = a/K = 0.01 ⇒ a = 0.01K (iii)",
                 "Tipo 1: o erro refere-se a uma rampa unitária; K_v = lim_(s→0) sG(s) = K/a; e_ss = 1/K_v = a/K = 0,01 ⇒ a = 0,01K (iii)",
             ),
+            say::root_locus(&plant),
             Text::by(|l| {
                 format!(
                     "{}K = 2·{}·√K ⇒ √K = {} ⇒ K = {}, a = {}",

@@ -441,6 +441,92 @@ pub(crate) mod say {
         ])
     }
 
+    /// The root locus reading of the loop around K·G: asymptotes, breakaway and break-in
+    /// points with their gains, crossings of the imaginary axis.
+    pub fn root_locus(g: &TransferFunction) -> Text {
+        use degrau_lti::locus::{self, Side};
+        let (numerator, denominator) = (g.num(), g.den());
+        let breakaways = locus::breakaways(&numerator, &denominator, Side::Positive);
+        let crossings = locus::crossings(&numerator, &denominator, Side::Positive);
+        let excess = g.poles().len() - g.zeros().len();
+        let centroid = if excess > 0 {
+            let sum = |r: &[degrau_lti::C64]| r.iter().map(|x| x.re).sum::<f64>();
+            Some((sum(g.poles()) - sum(g.zeros())) / excess as f64)
+        } else {
+            None
+        };
+        Text::by(|l| {
+            let mut parts = Vec::new();
+            if let Some(c) = centroid {
+                let angles: Vec<String> = (0..excess)
+                    .map(|k| format!("{}°", num(l, (2 * k + 1) as f64 * 180.0 / excess as f64)))
+                    .collect();
+                parts.push(l.pick(
+                    format!(
+                        "{excess} asymptote(s) from σ = {} at {}",
+                        num(l, c),
+                        angles.join(", ")
+                    ),
+                    format!(
+                        "{excess} assíntota(s) a partir de σ = {} a {}",
+                        num(l, c),
+                        angles.join(", ")
+                    ),
+                ));
+            }
+            for b in &breakaways {
+                parts.push(l.pick(
+                    format!(
+                        "branches meet the real axis at s = {} (K = {})",
+                        num(l, b.s),
+                        num(l, b.k)
+                    ),
+                    format!(
+                        "os ramos encontram o eixo real em s = {} (K = {})",
+                        num(l, b.s),
+                        num(l, b.k)
+                    ),
+                ));
+            }
+            if crossings.is_empty() {
+                parts.push(
+                    l.pick(
+                        "no crossing of the imaginary axis: the loop is stable for every K > 0"
+                            .to_string(),
+                        "não cruza o eixo imaginário: a malha é estável para todo o K > 0"
+                            .to_string(),
+                    ),
+                );
+            }
+            for c in &crossings {
+                parts.push(l.pick(
+                    format!(
+                        "crosses the imaginary axis at ω = {} rad/s for K = {}",
+                        num(l, c.omega),
+                        num(l, c.k)
+                    ),
+                    format!(
+                        "cruza o eixo imaginário em ω = {} rad/s para K = {}",
+                        num(l, c.omega),
+                        num(l, c.k)
+                    ),
+                ));
+            }
+            l.pick(
+                format!(
+                    "Root locus of K·G(s), G(s) = {}: {}.",
+                    crate::text::tf(l, g),
+                    parts.join("; ")
+                ),
+                format!(
+                    "Lugar das raízes de K·G(s), G(s) = {}: {}.",
+                    crate::text::tf(l, g),
+                    parts.join("; ")
+                ),
+            )
+        })
+    }
+
     /// ζ from an overshoot, as the sheet writes it.
     pub fn zeta_from_overshoot(mp: f64, zeta: f64) -> Text {
         Text::by(|l| {
