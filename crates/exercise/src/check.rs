@@ -53,8 +53,8 @@ pub fn check(question: &Question, answer: &StudentAnswer) -> Verdict {
                         "{} {}",
                         Phrase::Right.get(l),
                         l.pick(
-                            format!("That is the value of the {}.", how.get(l)),
-                            format!("É o valor da {}.", how.get(l)),
+                            format!("Accepted as the value of: {}.", how.get(l)),
+                            format!("Aceite como o valor de: {}.", how.get(l)),
                         )
                     ),
                     None => format!(
@@ -436,7 +436,7 @@ fn value_text(lang: Lang, x: f64, unit: Unit) -> String {
 fn range_text(lang: Lang, r: GainRange) -> String {
     match (r.low == 0.0, r.high.is_finite()) {
         (true, true) => format!("0 < K ≤ {}", num(lang, r.high)),
-        (false, false) => format!("K ≥ {}", num(lang, r.low)),
+        (false, false) => format!("K > {}", num(lang, r.low)),
         (false, true) => format!("{} ≤ K ≤ {}", num(lang, r.low), num(lang, r.high)),
         (true, false) => "K > 0".into(),
     }

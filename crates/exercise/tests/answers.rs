@@ -254,3 +254,29 @@ fn solutions() {
         }
     }
 }
+
+/// A few verdicts in full (for review: `-- --nocapture verdicts`).
+#[test]
+fn verdicts() {
+    let sheet = all();
+    for (id, typed) in [
+        ("6a.ts", "0,666 s"),
+        ("6a.tr", "0.158"),
+        ("4.wn", "6.2"),
+        ("8b.K", "86,25"),
+        ("10f.K_range", "K > 0.03"),
+        ("10f.K_range", "K > 0,0136"),
+        ("3d.y", "1/20 - (1/2 t - 1/20) e^{-10t}"),
+        ("10d.T", "10K/(s^2+0.3s+10K)"),
+        ("8a.region", "θ ≤ 66,4°; σ ≥ 40"),
+        ("5a.poles", "-80 ± j208,7"),
+        ("1a.ts", "abc"),
+    ] {
+        let q = degrau_exercise::find_question(&sheet, id).unwrap_or_else(|| panic!("{id}"));
+        let v = check(q, &text(typed));
+        println!(
+            "{id} {typed:?}: right={} | {} | {}",
+            v.right, v.message.en, v.message.pt
+        );
+    }
+}

@@ -65,8 +65,8 @@ pub fn exercise() -> Result<Exercise, SheetError> {
                     overshoot: "sim",
                     y: "1/20 - (1/2 t - 1/20) e^{-10t}",
                     y_differs: Some(Text::new(
-                        "The sheet's typeset y(t) = 1/20 − (t/2 − 1/20)e^{−10t} has the wrong sign: its own MATLAB output (ilaplace) is 1/20 + (t/2 − 1/20)e^{−10t}. The printed form starts at y(0) = 1/10 instead of 0 and never overshoots; the right one rises to 0.0568 at t = 0.2 s (13.5 % overshoot) and settles at 1/20.",
-                        "A expressão impressa y(t) = 1/20 − (t/2 − 1/20)e^{−10t} tem o sinal trocado: a própria saída do MATLAB (ilaplace) é 1/20 + (t/2 − 1/20)e^{−10t}. A forma impressa começa em y(0) = 1/10 em vez de 0 e nunca ultrapassa o valor final; a correta sobe a 0,0568 em t = 0,2 s (sobreelongação de 13,5 %) e estabelece-se em 1/20.",
+                        "The sheet's typeset y(t) = 1/20 − (t/2 − 1/20)e^{−10t} has the wrong sign: its own MATLAB output (ilaplace) is 1/20 + (t/2 − 1/20)e^{−10t}. The printed form starts at y(0) = 1/10 instead of 0 and dips to 0.0432 at t = 0.2 s; the right one starts at 0, rises to 0.0568 at t = 0.2 s (13.5 % overshoot) and settles at 1/20.",
+                        "A expressão impressa y(t) = 1/20 − (t/2 − 1/20)e^{−10t} tem o sinal trocado: a própria saída do MATLAB (ilaplace) é 1/20 + (t/2 − 1/20)e^{−10t}. A forma impressa começa em y(0) = 1/10 em vez de 0 e desce a 0,0432 em t = 0,2 s; a correta começa em 0, sobe a 0,0568 em t = 0,2 s (sobreelongação de 13,5 %) e estabelece-se em 1/20.",
                     )),
                 },
             )?,

@@ -275,11 +275,11 @@ pub fn exercise() -> Result<Exercise, SheetError> {
     let rise_note = Text::by(|l| {
         l.pick(
             format!(
-                "The sheet keeps ζ = 0.456 (the Mp = 20 % of e)) while raising K, but in this loop ζ = 0.15/ωn falls as K grows. With ζ following K, t_r (0–100 %) < 4 s for K > {} (MATLAB's 10–90 %: K > {}); at the sheet's K = {} the exact t_r is {} s. And no K meets both e) and f): Mp ≤ 20 % needs K ≤ {}.",
+                "The sheet keeps ζ = 0.456 (the Mp = 20 % of part e) while raising K, but in this loop ζ = 0.15/ωn falls as K grows. With ζ following K, t_r (0–100 %) < 4 s for K > {} (MATLAB's 10–90 %: K > {}); at the sheet's K = {} the exact t_r is {} s. And no K meets both parts e and f: Mp ≤ 20 % needs K ≤ {}.",
                 num(l, k_rise), num(l, k_rise_10_90), num(l, k_fixed), num(l, tr_at_fixed), num(l, k_max)
             ),
             format!(
-                "A folha mantém ζ = 0,456 (o Mp = 20 % de e)) ao aumentar K, mas nesta malha ζ = 0,15/ωn diminui quando K cresce. Com ζ a acompanhar K, t_r (0–100 %) < 4 s para K > {} (10–90 % do MATLAB: K > {}); no K = {} da folha o t_r exato é {} s. E nenhum K cumpre e) e f) ao mesmo tempo: Mp ≤ 20 % exige K ≤ {}.",
+                "A folha mantém ζ = 0,456 (o Mp = 20 % da alínea e) ao aumentar K, mas nesta malha ζ = 0,15/ωn diminui quando K cresce. Com ζ a acompanhar K, t_r (0–100 %) < 4 s para K > {} (10–90 % do MATLAB: K > {}); no K = {} da folha o t_r exato é {} s. E nenhum K cumpre as alíneas e e f ao mesmo tempo: Mp ≤ 20 % exige K ≤ {}.",
                 num(l, k_rise), num(l, k_rise_10_90), num(l, k_fixed), num(l, tr_at_fixed), num(l, k_max)
             ),
         )
