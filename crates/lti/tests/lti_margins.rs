@@ -131,3 +131,21 @@ fn bandwidth_of_a_first_order_closed_loop() {
     close(m.w_gc.unwrap(), 1.0, 1e-12);
     close(m.pm, 90.0, 1e-10);
 }
+
+#[test]
+fn a_negative_static_loop_gain_is_a_phase_crossover_at_zero() {
+    // L = −0.5/(s + 1): the closed loop s + 1 − 0.5·k has its root at s = 0 for k = 2, so
+    // GM = 2 at ω = 0 (the phase never crosses −180° at ω > 0).
+    let g = TransferFunction::from_coeffs(&[-0.5], &[1.0, 1.0]).unwrap();
+    let m = margins(&g, &Controller::proportional(1.0).unwrap());
+    assert_eq!(m.w_pc, Some(0.0));
+    close(m.gm, 2.0, 1e-15);
+    assert_eq!(m.phase_crossings.len(), 1);
+    let count = |k: f64| closed_loop_unstable_roots(&g, &Controller::proportional(k).unwrap());
+    assert_eq!(count(1.99), Ok(0));
+    assert_eq!(count(2.01), Ok(1));
+    // With an integrator L(0) is infinite: no crossing at 0.
+    let g = TransferFunction::from_coeffs(&[-1.0], &[1.0, 1.0, 0.0]).unwrap();
+    let m = margins(&g, &Controller::proportional(1.0).unwrap());
+    assert!(m.phase_crossings.iter().all(|p| p.w > 0.0), "{m:?}");
+}

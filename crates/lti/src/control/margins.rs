@@ -1,6 +1,7 @@
 //! The stability margins of the loop L(s) = C(s)·G0(s)·e^{−θs} around a plant with a true
 //! dead time, the delay exact (never a Padé approximant): every gain crossover (|L(jω)| = 1)
-//! and every phase crossover (∠L(jω) = −180° mod 360°) on ω > 0, the gain and phase margins
+//! and every phase crossover (∠L(jω) = −180° mod 360°) on ω ≥ 0 (ω = 0 when L(0) is finite
+//! and negative), the gain and phase margins
 //! chosen as MATLAB's `margin` chooses them (the smallest), the delay margin, the peak of
 //! the sensitivity Ms and the closed loop's bandwidth ([`margins`]).
 //!
@@ -22,7 +23,7 @@ use crate::control::frequency::{
 };
 use crate::poly::{self, C64};
 
-/// A phase crossover: ω > 0 where L(jω) is real and negative.
+/// A phase crossover: ω ≥ 0 where L(jω) is real and negative.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct PhaseCrossing {
     /// ω (rad/s).
@@ -93,7 +94,7 @@ pub fn margins(plant: &TransferFunction, c: &Controller) -> Margins {
     let grid = grid(&all, &n, &d, delay);
     let at = |w: f64| loop_at(plant, c, w);
 
-    let mut phase_crossings = Vec::new();
+    let mut phase_crossings: Vec<PhaseCrossing> = zero_crossing(at(0.0)).into_iter().collect();
     let mut gain_crossings = Vec::new();
     let sine = |w: f64| {
         let l = at(w);
@@ -154,6 +155,21 @@ pub fn margins(plant: &TransferFunction, c: &Controller) -> Margins {
         phase_crossings,
         gain_crossings,
     }
+}
+
+/// The phase crossover at ω = 0: a finite, negative L(0) is on the −180° line already, and
+/// raising the gain by 1/|L(0)| puts a closed-loop root at s = 0 (MATLAB's `allmargin` and
+/// python-control's `stability_margins` count it too).
+fn zero_crossing(l0: C64) -> Option<PhaseCrossing> {
+    let real_negative = l0.re < 0.0 && l0.im.abs() <= 1e-12 * l0.norm();
+    (real_negative && l0.norm().is_finite()).then(|| {
+        let gm = 1.0 / l0.norm();
+        PhaseCrossing {
+            w: 0.0,
+            gm,
+            gm_db: 20.0 * gm.log10(),
+        }
+    })
 }
 
 /// An angle in degrees brought to (−180°, 180°].
