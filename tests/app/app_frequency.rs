@@ -130,6 +130,8 @@ fn the_tune_loop_shows_its_margins() {
     // K·e^{−2s}/(10s + 1) with SIMC's PI: L = 0.25·e^{−2s}/s, PM = 90° − 0.5 rad.
     assert!((m.pm - (90.0 - 0.5f64.to_degrees())).abs() < 1e-6);
     h.get_by_label("The closed loop is stable.");
+    h.get_by_label("Controller C(s) =");
+    h.get_by_label_contains("2.5 s + 0.25");
     h.get_by_label_contains("The loop stands a gain");
     h.get_by_label_contains("It stands a dead time");
     assert!(label_starting(&h, "Delay margin = ").contains(" s"));
@@ -337,11 +339,18 @@ fn nyquist_z(text: &str) -> i64 {
 
 #[test]
 fn the_nyquist_verdict_agrees_with_the_direct_count() {
+    use degrau::lti::control::Action;
     use degrau::lti::control::frequency::closed_loop_unstable_roots;
-    for (kc, stable) in [(2.5, true), (40.0, false)] {
+    let cases = [
+        (Action::PI, 2.5, true),
+        (Action::PI, 40.0, false),
+        (Action::P, 40.0, false),
+    ];
+    for (action, kc, stable) in cases {
         let mut saved = Saved::default();
         saved.frequency.source = SourceKind::Tune;
         saved.frequency.tab = Tab::Nyquist;
+        saved.tune.controller.action = action;
         saved.tune.controller.kc = kc;
         let mut h = frequency_app(saved);
         let verdict = label_starting(&h, "N = ");
@@ -359,6 +368,10 @@ fn the_nyquist_verdict_agrees_with_the_direct_count() {
         assert!(counted.ends_with(end), "{counted}");
         assert!(counted.contains(&format!(": {direct} roots")), "{counted}");
         h.get_by_role_and_label(egui::accesskit::Role::Canvas, "Nyquist diagram");
+        h.get_by_label("Controller C(s) =");
+        if action == Action::P {
+            h.get_by_label("40\n──\n1");
+        }
         // The whole curve, then back to the window around −1.
         h.get_by_label("Whole curve").click();
         h.run_steps(2);

@@ -47,9 +47,11 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look, out: &mut
     if let Some(c) = &source.controller {
         ui.label(format!("{} C(s) =", T::Controller.get(lang)));
         let (num, den) = c.feedback_coeffs();
-        if let Ok(tf) = TransferFunction::from_coeffs(&num, &den) {
-            written(ui, &tf, lang);
-        }
+        // Written with a monic denominator, as a transfer function is.
+        let lead = den.first().copied().filter(|d| *d != 0.0).unwrap_or(1.0);
+        let monic = |p: &[f64]| p.iter().map(|x| x / lead).collect::<Vec<_>>();
+        let text = fraction(&monic(&num), &monic(&den), 0.0, lang);
+        ui.add(egui::Label::new(RichText::new(text).monospace()).wrap());
     }
 }
 
@@ -60,10 +62,16 @@ pub fn written(ui: &mut Ui, tf: &TransferFunction, lang: Lang) {
 
 /// `tf` as three lines: numerator, bar (with e^(−θs)), denominator.
 pub fn tf_text(tf: &TransferFunction, lang: Lang) -> String {
-    let num = lang.localize_number(&format_poly(&tf.num()));
-    let den = lang.localize_number(&format_poly(&tf.den()));
-    let delay = if tf.delay() > 0.0 {
-        format!(" · e^(−{} s)", lang.num(tf.delay(), 6))
+    fraction(&tf.num(), &tf.den(), tf.delay(), lang)
+}
+
+/// num/den as three lines, e^(−θs) after the bar (a P controller's den is 1: no
+/// transfer function of its own, still written as a fraction).
+fn fraction(num: &[f64], den: &[f64], delay: f64, lang: Lang) -> String {
+    let num = lang.localize_number(&format_poly(num));
+    let den = lang.localize_number(&format_poly(den));
+    let delay = if delay > 0.0 {
+        format!(" · e^(−{} s)", lang.num(delay, 6))
     } else {
         String::new()
     };
