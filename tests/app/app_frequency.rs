@@ -90,6 +90,19 @@ fn hovering_the_bode_magnitude_reads_the_exact_values() {
         "{text}: {eratio}"
     );
     assert!(text.contains("|G|") && text.contains("∠G"), "{text}");
+    // The phase plot reads the same way, at its own ω.
+    let phase = h
+        .get_by_role_and_label(egui::accesskit::Role::Canvas, "Bode phase")
+        .rect();
+    h.hover_at(phase.center() - egui::vec2(phase.width() * 0.2, 0.0));
+    h.run_steps(2);
+    let v = numbers(&label_starting(&h, "ω = "));
+    assert!(v[0] < w, "further left is a lower ω: {} vs {w}", v[0]);
+    let exact = bode(&design_tf(&h), &[v[0]]);
+    assert!(
+        (v[3] - exact.phase_deg[0]).abs() <= rounding(v[3], 4) + 0.1,
+        "{v:?}"
+    );
     // In Portuguese the numbers take the decimal comma.
     h.state_mut().saved.lang = Lang::Pt;
     h.run_steps(2);
