@@ -1,6 +1,7 @@
 //! The left panel's margins: GM (ratio and dB) at ω_pc, PM at ω_gc, the delay margin, Ms
 //! and the bandwidth, every crossing when there are several, the closed loop's verdict and
-//! a one-line reading of what the margins mean.
+//! a one-line reading of what the margins mean; then the Bode asymptotes in words (the
+//! low-frequency line, each corner and the slopes around it).
 
 use eframe::egui::{self, RichText, Ui};
 
@@ -34,6 +35,33 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look) {
     ui.add_space(4.0);
     for line in readings(&data.margins, stable, lang) {
         ui.add(egui::Label::new(RichText::new(line).italics()).wrap());
+    }
+    ui.separator();
+    asymptotes(ui, data, lang);
+}
+
+/// The asymptotes in words: the low-frequency line, then each corner and its slopes.
+fn asymptotes(ui: &mut Ui, data: &LoopData, lang: Lang) {
+    let a = &data.asymptotes;
+    ui.heading(T::AsymptotesHeading.get(lang));
+    wrapped(
+        ui,
+        words::low_asymptote(a.low_db_at_1, a.low_slope(), a.system_type, lang),
+    );
+    let corners: Vec<_> = a
+        .corners
+        .iter()
+        .zip(a.slopes().into_iter().skip(1))
+        .filter(|(c, _)| c.slope_change_db_per_decade != 0.0)
+        .collect();
+    if corners.is_empty() {
+        wrapped(ui, T::NoCorner.get(lang).to_string());
+    }
+    for (c, slope) in corners {
+        wrapped(
+            ui,
+            words::corner(c.w, c.slope_change_db_per_decade, slope, lang),
+        );
     }
 }
 
