@@ -5,6 +5,7 @@
 //! and each exercise writes its own statements and steps beside its data.
 
 use degrau_words::Lang;
+use degrau_words::number::superscript;
 use serde::Serialize;
 
 /// One piece of text, in English and in Portuguese (the sheet's Portuguese where it is the
@@ -123,12 +124,4 @@ pub fn tf(lang: Lang, g: &degrau_lti::TransferFunction) -> String {
         num
     };
     format!("{num}/({})", poly(lang, &g.den()))
-}
-
-fn superscript(p: usize) -> String {
-    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-    p.to_string()
-        .chars()
-        .map(|c| c.to_digit(10).map_or(c, |d| DIGITS[d as usize]))
-        .collect()
 }

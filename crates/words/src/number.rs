@@ -145,3 +145,21 @@ mod tests {
         assert_eq!(sig(0.0, 4), "0");
     }
 }
+
+/// A whole number in superscript digits (`12` → `¹²`), for powers written in words: s², z⁻³.
+pub fn superscript(p: usize) -> String {
+    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    p.to_string()
+        .chars()
+        .map(|c| c.to_digit(10).map_or(c, |d| DIGITS[d as usize]))
+        .collect()
+}
+
+#[cfg(test)]
+mod superscript_tests {
+    #[test]
+    fn digits_become_superscripts() {
+        assert_eq!(super::superscript(0), "⁰");
+        assert_eq!(super::superscript(120), "¹²⁰");
+    }
+}

@@ -64,14 +64,31 @@ pub fn show(
         .y_axis_label("Im L(jω)")
         .legend(Legend::default().background_alpha(0.75))
         .show(ui, |plot| {
-            plot.set_plot_bounds(PlotBounds::from_min_max(bounds.0, bounds.1));
-            draw(plot, &curve, look);
+            // The window is set when it changes (a new curve, the toggle), so the student
+            // can zoom and pan in between.
+            if fresh_window(plot.ctx(), bounds) {
+                plot.set_plot_bounds(PlotBounds::from_min_max(bounds.0, bounds.1));
+            }
+            let span = (bounds.1[0] - bounds.0[0]).max(bounds.1[1] - bounds.0[1]);
+            draw(plot, &curve, span, look);
         });
     crate::look::name_canvas(&shown.response, T::NyquistPlot.get(lang));
 }
 
-/// The curve, its mirror, the arrows, −1 and the unit circle.
-fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], look: &Look) {
+/// Whether the default window differs from the one set last (kept in egui's memory: a view
+/// matter, not the session's).
+fn fresh_window(ctx: &egui::Context, bounds: ([f64; 2], [f64; 2])) -> bool {
+    let key = [bounds.0[0], bounds.0[1], bounds.1[0], bounds.1[1]].map(f64::to_bits);
+    let id = egui::Id::unique("nyquist-window");
+    ctx.data_mut(|d| {
+        let old = d.get_temp::<[u64; 4]>(id);
+        d.insert_temp(id, key);
+        old != Some(key)
+    })
+}
+
+/// The curve, its mirror, the arrows, −1 and the unit circle; `span` is the window's size.
+fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], span: f64, look: &Look) {
     let lang = look.lang;
     let circle = PlotPoints::from_parametric_callback(
         |t| (t.cos(), t.sin()),
@@ -97,7 +114,7 @@ fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], look: &Look) {
                 .width(2.2),
         );
     }
-    let (tails, tips) = arrows(curve);
+    let (tails, tips) = arrows(curve, span);
     if !tails.is_empty() {
         plot.arrows(
             Arrows::new(words::POSITIVE_W, tails, tips)
@@ -113,17 +130,28 @@ fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], look: &Look) {
     );
 }
 
-/// A few short arrows along the drawn curve, pointing the way ω grows.
-fn arrows(curve: &[[f64; 2]]) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+/// A few short arrows along the drawn curve, pointing the way ω grows, spread evenly along
+/// its length; none when the curve is too small in the window (`span`) to carry them.
+fn arrows(curve: &[[f64; 2]], span: f64) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
     let drawn: Vec<[f64; 2]> = pieces(curve).into_iter().flatten().collect();
-    if drawn.len() < 2 * ARROWS {
+    let step = |i: usize| (drawn[i][0] - drawn[i - 1][0]).hypot(drawn[i][1] - drawn[i - 1][1]);
+    let length: f64 = (1..drawn.len()).map(step).sum();
+    if drawn.len() < 2 * ARROWS || length.is_nan() || length < 0.3 * span {
         return (Vec::new(), Vec::new());
     }
-    let step = drawn.len() / (ARROWS + 1);
-    (1..=ARROWS)
-        .map(|k| (drawn[k * step - 1], drawn[k * step]))
-        .filter(|(a, b)| a != b)
-        .unzip()
+    let (mut tails, mut tips) = (Vec::new(), Vec::new());
+    let (mut walked, mut next) = (0.0, 1);
+    for i in 1..drawn.len() {
+        walked += step(i);
+        if next <= ARROWS && walked >= length * next as f64 / (ARROWS + 1) as f64 {
+            if drawn[i - 1] != drawn[i] {
+                tails.push(drawn[i - 1]);
+                tips.push(drawn[i]);
+            }
+            next += 1;
+        }
+    }
+    (tails, tips)
 }
 
 /// The criterion's verdict and the direct count, beside each other.
@@ -164,5 +192,40 @@ fn direct_text(count: &Result<usize, StabilityError>, lang: Lang) -> String {
     match count {
         Ok(z) => words::direct_count(*z, lang),
         Err(e) => e.text(lang),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A half circle of radius `r` round the origin, in `n` points.
+    fn arc(r: f64, n: usize) -> Vec<[f64; 2]> {
+        (0..n)
+            .map(|i| {
+                let t = std::f64::consts::PI * i as f64 / (n - 1) as f64;
+                [r * t.cos(), -r * t.sin()]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn arrows_spread_along_the_length_and_skip_a_curve_too_small_to_carry_them() {
+        // Points bunched at one end: the arrows still spread evenly along the length.
+        let mut curve = arc(1.0, 40);
+        let end = curve[39];
+        curve.extend((1..200).map(|i| [end[0] + 1e-6 * i as f64, end[1]]));
+        let (tails, tips) = arrows(&curve, 3.0);
+        assert_eq!(tails.len(), ARROWS);
+        for (k, tip) in tips.iter().enumerate() {
+            let angle = (-tip[1]).atan2(tip[0]);
+            let want = std::f64::consts::PI * (k + 1) as f64 / (ARROWS + 1) as f64;
+            assert!(
+                (angle - want).abs() < 0.1,
+                "arrow {k} at {angle}, not {want}"
+            );
+        }
+        // A curve of length 0.03 in a window 3 wide: no arrows.
+        assert!(arrows(&arc(0.01, 100), 3.0).0.is_empty());
     }
 }

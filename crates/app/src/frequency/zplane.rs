@@ -7,6 +7,7 @@ use eframe::egui::{self, RichText, Ui};
 use egui_plot::{Legend, Line, LineStyle, MarkerShape, Plot, PlotPoints, Points};
 
 use degrau_lti::C64;
+use degrau_words::number::superscript;
 use degrau_words::{Lang, Localize};
 
 use super::commands::Command;
@@ -57,8 +58,8 @@ fn written(ui: &mut Ui, zoh: &Zoh, lang: Lang) {
     ui.label(RichText::new(T::SampledOf.get(lang)).strong());
     let tf = &zoh.tf;
     let text = format!(
-        "H(z) = B(z)/A(z)·z^−{}\nB(z) = {}\nA(z) = {}",
-        tf.nk(),
+        "H(z) = B(z)/A(z)·z⁻{}\nB(z) = {}\nA(z) = {}",
+        superscript(tf.nk()),
         z_poly(tf.b(), lang),
         z_poly(tf.a(), lang)
     );
@@ -85,8 +86,7 @@ pub fn z_poly(coeffs: &[f64], lang: Lang) -> String {
     for (i, &c) in coeffs.iter().enumerate() {
         let power = match i {
             0 => String::new(),
-            1 => " z⁻¹".to_string(),
-            i => format!(" z^−{i}"),
+            i => format!(" z⁻{}", superscript(i)),
         };
         let magnitude = lang.num(c.abs(), 6);
         match (i, c < 0.0) {
@@ -188,6 +188,13 @@ fn plots(ui: &mut Ui, data: &SampledData, zoh: &Zoh, height: f32, look: &Look) {
                     Line::new(T::Stairs.get(lang), zoh.stairs.clone())
                         .color(look.palette.model)
                         .width(1.6),
+                );
+                // The samples themselves, where the stairs equal the continuous response.
+                let samples: Vec<[f64; 2]> = zoh.stairs.iter().step_by(2).copied().collect();
+                plot.points(
+                    Points::new(T::Stairs.get(lang), samples)
+                        .color(look.palette.model)
+                        .radius(2.5),
                 );
             });
         crate::look::name_canvas(&step.response, T::StepPlot.get(lang));
