@@ -153,6 +153,9 @@ fn zip(x: &[f64], y: &[f64]) -> Vec<[f64; 2]> {
         .collect()
 }
 
+/// The y axes' width (points): room for "−1000" and the axis label.
+const Y_AXIS_WIDTH: f32 = 64.0;
+
 /// A plot of the Bode tab: log-ω ticks, the app's y axis, x linked with the other plot.
 fn base(id: &'static str, lang: Lang, height: f32, width: f32) -> Plot<'static> {
     let group = Id::unique("bode axes");
@@ -161,6 +164,8 @@ fn base(id: &'static str, lang: Lang, height: f32, width: f32) -> Plot<'static> 
         .x_axis_formatter(move |m, _| decade_label(m, lang))
         .link_axis(group, [true, false])
         .link_cursor(group, [true, false])
+        // One y-axis width for both, so their ω axes line up (−1200° is wider than 50 dB).
+        .y_axis_min_width(Y_AXIS_WIDTH)
         .show_x(false)
         .show_y(false)
         .height(height)

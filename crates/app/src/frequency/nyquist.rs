@@ -69,8 +69,8 @@ pub fn show(
             if fresh_window(plot.ctx(), bounds) {
                 plot.set_plot_bounds(PlotBounds::from_min_max(bounds.0, bounds.1));
             }
-            let span = (bounds.1[0] - bounds.0[0]).max(bounds.1[1] - bounds.0[1]);
-            draw(plot, &curve, span, look);
+            let b = plot.plot_bounds();
+            draw(plot, &curve, (b.min(), b.max()), look);
         });
     crate::look::name_canvas(&shown.response, T::NyquistPlot.get(lang));
 }
@@ -87,8 +87,8 @@ fn fresh_window(ctx: &egui::Context, bounds: ([f64; 2], [f64; 2])) -> bool {
     })
 }
 
-/// The curve, its mirror, the arrows, −1 and the unit circle; `span` is the window's size.
-fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], span: f64, look: &Look) {
+/// The curve, its mirror, the arrows (in the `shown` window), −1 and the unit circle.
+fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], shown: Window, look: &Look) {
     let lang = look.lang;
     let circle = PlotPoints::from_parametric_callback(
         |t| (t.cos(), t.sin()),
@@ -114,7 +114,7 @@ fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], span: f64, look: &
                 .width(2.2),
         );
     }
-    let (tails, tips) = arrows(curve, span);
+    let (tails, tips) = arrows(curve, shown);
     if !tails.is_empty() {
         plot.arrows(
             Arrows::new(words::POSITIVE_W, tails, tips)
@@ -130,21 +130,36 @@ fn draw(plot: &mut egui_plot::PlotUi<'_>, curve: &[[f64; 2]], span: f64, look: &
     );
 }
 
-/// A few short arrows along the drawn curve, pointing the way ω grows, spread evenly along
-/// its length; none when the curve is too small in the window (`span`) to carry them.
-fn arrows(curve: &[[f64; 2]], span: f64) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+/// A window of the plot: (min, max) corners.
+type Window = ([f64; 2], [f64; 2]);
+
+/// A few short arrows along the part of the curve inside the `shown` window, pointing the way
+/// ω grows, spread evenly along its length; none when that part is too short to carry them.
+fn arrows(curve: &[[f64; 2]], shown: Window) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    let (lo, hi) = shown;
+    let inside = |p: &[f64; 2]| p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1];
     let drawn: Vec<[f64; 2]> = pieces(curve).into_iter().flatten().collect();
-    let step = |i: usize| (drawn[i][0] - drawn[i - 1][0]).hypot(drawn[i][1] - drawn[i - 1][1]);
-    let length: f64 = (1..drawn.len()).map(step).sum();
-    if drawn.len() < 2 * ARROWS || length.is_nan() || length < 0.3 * span {
+    // The segments with both ends in the window, and their lengths.
+    let segments: Vec<(usize, f64)> = (1..drawn.len())
+        .filter(|&i| inside(&drawn[i - 1]) && inside(&drawn[i]))
+        .map(|i| {
+            (
+                i,
+                (drawn[i][0] - drawn[i - 1][0]).hypot(drawn[i][1] - drawn[i - 1][1]),
+            )
+        })
+        .collect();
+    let length: f64 = segments.iter().map(|s| s.1).sum();
+    let span = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+    if segments.len() < 2 * ARROWS || length.is_nan() || length < 0.3 * span {
         return (Vec::new(), Vec::new());
     }
     let (mut tails, mut tips) = (Vec::new(), Vec::new());
     let (mut walked, mut next) = (0.0, 1);
-    for i in 1..drawn.len() {
-        walked += step(i);
+    for &(i, step) in &segments {
+        walked += step;
         if next <= ARROWS && walked >= length * next as f64 / (ARROWS + 1) as f64 {
-            if drawn[i - 1] != drawn[i] {
+            if step > 0.0 {
                 tails.push(drawn[i - 1]);
                 tips.push(drawn[i]);
             }
@@ -215,7 +230,8 @@ mod tests {
         let mut curve = arc(1.0, 40);
         let end = curve[39];
         curve.extend((1..200).map(|i| [end[0] + 1e-6 * i as f64, end[1]]));
-        let (tails, tips) = arrows(&curve, 3.0);
+        let window = ([-2.0, -1.5], [1.5, 1.5]);
+        let (tails, tips) = arrows(&curve, window);
         assert_eq!(tails.len(), ARROWS);
         for (k, tip) in tips.iter().enumerate() {
             let angle = (-tip[1]).atan2(tip[0]);
@@ -226,6 +242,12 @@ mod tests {
             );
         }
         // A curve of length 0.03 in a window 3 wide: no arrows.
-        assert!(arrows(&arc(0.01, 100), 3.0).0.is_empty());
+        assert!(arrows(&arc(0.01, 100), window).0.is_empty());
+        // Only the part inside the window carries them: a long branch outside adds none.
+        let mut long = arc(1.0, 40);
+        long.extend((1..400).map(|i| [-1.0, -1.0 - i as f64]));
+        let (_, tips) = arrows(&long, window);
+        assert_eq!(tips.len(), ARROWS);
+        assert!(tips.iter().all(|t| t[1] >= -1.5), "{tips:?}");
     }
 }

@@ -80,6 +80,9 @@ fn written(ui: &mut Ui, zoh: &Zoh, lang: Lang) {
     ui.add(egui::Label::new(format!("{} {zeros}", T::ZerosOfH.get(lang))).wrap());
 }
 
+/// The most samples marked with a dot on the stairs.
+const MARKED_SAMPLES: usize = 120;
+
 /// c0 + c1 z⁻¹ + c2 z⁻² … with `lang`'s numbers.
 pub fn z_poly(coeffs: &[f64], lang: Lang) -> String {
     let mut text = String::new();
@@ -187,15 +190,21 @@ fn plots(ui: &mut Ui, data: &SampledData, zoh: &Zoh, height: f32, look: &Look) {
                 plot.line(
                     Line::new(T::Stairs.get(lang), zoh.stairs.clone())
                         .color(look.palette.model)
-                        .width(1.6),
+                        .width(1.6)
+                        // A staircase is not a dense curve: drawn as a band, its jumps
+                        // would be filled.
+                        .allow_band(false),
                 );
-                // The samples themselves, where the stairs equal the continuous response.
+                // The samples themselves, where the stairs equal the continuous response
+                // (marked while they are few enough to tell apart).
                 let samples: Vec<[f64; 2]> = zoh.stairs.iter().step_by(2).copied().collect();
-                plot.points(
-                    Points::new(T::Stairs.get(lang), samples)
-                        .color(look.palette.model)
-                        .radius(2.5),
-                );
+                if samples.len() <= MARKED_SAMPLES {
+                    plot.points(
+                        Points::new(T::Stairs.get(lang), samples)
+                            .color(look.palette.model)
+                            .radius(2.5),
+                    );
+                }
             });
         crate::look::name_canvas(&step.response, T::StepPlot.get(lang));
     });
