@@ -61,7 +61,13 @@ pub fn show(ui: &mut Ui, session: &Session, data: &LoopData, look: &Look) {
             crossovers(plot, data, look, |w| at(w).0);
         });
     crate::look::name_canvas(&mag.response, T::Magnitude.get(lang));
+    // The phase falls to the right: its legend goes where it starts, bottom left.
     let phase = base("bode phase", lang, each, width)
+        .legend(
+            Legend::default()
+                .background_alpha(0.75)
+                .position(egui_plot::Corner::LeftBottom),
+        )
         .y_axis_label(format!("∠{name} (°)"))
         .x_axis_label("ω (rad/s)")
         .show(ui, |plot| {
