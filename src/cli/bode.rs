@@ -11,7 +11,7 @@ use std::process::ExitCode;
 use clap::Args;
 use serde::Serialize;
 
-use crate::lti::bode::{Corner, asymptotes, bode, default_range, log_grid};
+use crate::lti::bode::{Asymptotes, Corner, asymptotes, bode, default_range, log_grid};
 use crate::lti::number::format_number;
 use crate::text::bode::Line;
 use crate::text::{Lang, Localize};
@@ -136,22 +136,13 @@ pub fn text(report: &BodeReport, lang: Lang) -> String {
         out.push_str(&line.text(lang));
         out.push('\n');
     };
-    say(Line::Low {
-        db: report.low_db_at_1,
-        slope: report.low_slope_db_per_decade,
+    let asymptotes = Asymptotes {
+        low_db_at_1: report.low_db_at_1,
         system_type: report.system_type,
-    });
-    if report.corners.is_empty() {
-        say(Line::NoCorner);
-    }
-    let mut slope = report.low_slope_db_per_decade;
-    for c in &report.corners {
-        slope += c.slope_change_db_per_decade;
-        say(Line::Corner {
-            w: c.w,
-            change: c.slope_change_db_per_decade,
-            slope,
-        });
+        corners: report.corners.clone(),
+    };
+    for line in asymptotes.lines() {
+        say(Line::Asymptote(line));
     }
     if report.delay > 0.0 {
         say(Line::Delay(report.delay));

@@ -2,6 +2,7 @@
 //! the course notes in words), in English and Brazilian Portuguese.
 
 use crate::cli::bode::BodeCliError;
+use crate::lti::bode::AsymptoteLine;
 
 #[cfg(test)]
 use super::Message;
@@ -49,16 +50,8 @@ impl Localize for BodeCliError {
 /// A line of the text report of `degrau bode`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Line {
-    /// The low-frequency asymptote: `db` at ω = 1, its slope, the system type.
-    Low {
-        db: f64,
-        slope: f64,
-        system_type: i32,
-    },
-    /// No corner: the asymptote is the low-frequency line everywhere.
-    NoCorner,
-    /// A corner at `w`, where the slope changes by `change` to `slope` (dB/decade).
-    Corner { w: f64, change: f64, slope: f64 },
+    /// A line of the asymptotes (the lti crate says it).
+    Asymptote(AsymptoteLine),
     /// The dead time θ (s): phase only.
     Delay(f64),
     /// The table's column names.
@@ -69,44 +62,7 @@ impl Localize for Line {
     fn text(&self, lang: Lang) -> String {
         let n = |x: f64| lang.num(x, 6);
         match *self {
-            Line::Low {
-                db,
-                slope,
-                system_type,
-            } => lang.pick(
-                format!(
-                    "Low-frequency asymptote (type {system_type}): 20·log10|K| = {} dB at \
-                     ω = 1 rad/s, slope {} dB/decade",
-                    n(db),
-                    n(slope)
-                ),
-                format!(
-                    "Assíntota de baixa frequência (tipo {system_type}): 20·log10|K| = {} dB \
-                     em ω = 1 rad/s, inclinação {} dB/década",
-                    n(db),
-                    n(slope)
-                ),
-            ),
-            Line::NoCorner => lang
-                .pick(
-                    "No corner frequency: the asymptote is that one line",
-                    "Nenhuma frequência de canto: a assíntota é essa única reta",
-                )
-                .into(),
-            Line::Corner { w, change, slope } => lang.pick(
-                format!(
-                    "Corner at ω = {} rad/s: the slope changes by {} dB/decade, to {} dB/decade",
-                    n(w),
-                    n(change),
-                    n(slope)
-                ),
-                format!(
-                    "Canto em ω = {} rad/s: a inclinação muda {} dB/década, para {} dB/década",
-                    n(w),
-                    n(change),
-                    n(slope)
-                ),
-            ),
+            Line::Asymptote(a) => a.text(lang),
             Line::Delay(theta) => lang.pick(
                 format!(
                     "Dead time θ = {} s: the phase falls by ωθ rad (exactly), the magnitude \
@@ -147,17 +103,7 @@ pub fn messages() -> Vec<Message> {
         BodeCliError::Points(1),
     ];
     let lines = [
-        Line::Low {
-            db: -33.9794,
-            slope: -20.0,
-            system_type: 1,
-        },
-        Line::NoCorner,
-        Line::Corner {
-            w: 2.0,
-            change: -40.0,
-            slope: -60.0,
-        },
+        Line::Asymptote(AsymptoteLine::NoCorner),
         Line::Delay(0.5),
         Line::TableHeader,
     ];

@@ -91,9 +91,11 @@ fn hovering_the_bode_magnitude_reads_the_exact_values() {
     );
     assert!(text.contains("|G|") && text.contains("∠G"), "{text}");
     // The asymptotes in words: 0.5/25 is −33.98 dB, corners at √5 (a pair) and 5.
-    h.get_by_label("Low-frequency asymptote (type 0): -33.98 dB at ω = 1 rad/s, slope 0 dB/decade");
     h.get_by_label(
-        "Corner at ω = 2.236 rad/s: the slope changes by -40 dB/decade, to -40 dB/decade",
+        "Low-frequency asymptote (type 0): 20·log10|K| = -33.9794 dB at ω = 1 rad/s, slope 0 dB/decade",
+    );
+    h.get_by_label(
+        "Corner at ω = 2.23607 rad/s: the slope changes by -40 dB/decade, to -40 dB/decade",
     );
     h.get_by_label("Corner at ω = 5 rad/s: the slope changes by -20 dB/decade, to -60 dB/decade");
     // The phase plot reads the same way, at its own ω.

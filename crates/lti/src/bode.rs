@@ -65,6 +65,34 @@ impl Asymptotes {
         out
     }
 
+    /// The asymptotes as the notes say them, line by line: the low-frequency line, then each
+    /// corner where the slope changes (a pole and a zero sharing a corner change nothing and
+    /// are not said), or that there is none ([`AsymptoteLine`]; its words are in
+    /// `crate::words::bode`).
+    pub fn lines(&self) -> Vec<AsymptoteLine> {
+        let mut out = vec![AsymptoteLine::Low {
+            db: self.low_db_at_1,
+            slope: self.low_slope(),
+            system_type: self.system_type,
+        }];
+        let corners: Vec<AsymptoteLine> = self
+            .corners
+            .iter()
+            .zip(self.slopes().into_iter().skip(1))
+            .filter(|(c, _)| c.slope_change_db_per_decade != 0.0)
+            .map(|(c, slope)| AsymptoteLine::Corner {
+                w: c.w,
+                change: c.slope_change_db_per_decade,
+                slope,
+            })
+            .collect();
+        if corners.is_empty() {
+            out.push(AsymptoteLine::NoCorner);
+        }
+        out.extend(corners);
+        out
+    }
+
     /// The piecewise line at ω (dB): the low-frequency line plus each passed corner's change.
     pub fn value_db(&self, w: f64) -> f64 {
         let lw = w.log10();
@@ -74,6 +102,21 @@ impl Asymptotes {
         }
         value
     }
+}
+
+/// A line of the asymptotes in words ([`Asymptotes::lines`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AsymptoteLine {
+    /// The low-frequency line: `db` at ω = 1 rad/s, its `slope` (dB/decade), the type.
+    Low {
+        db: f64,
+        slope: f64,
+        system_type: i32,
+    },
+    /// No corner changes the slope: the asymptote is the low-frequency line everywhere.
+    NoCorner,
+    /// A corner at `w` (rad/s) where the slope changes by `change` to `slope` (dB/decade).
+    Corner { w: f64, change: f64, slope: f64 },
 }
 
 /// The angle of jω − r (radians), continuous in ω ≥ 0 and on the principal branch at ω = 0.

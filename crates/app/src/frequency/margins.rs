@@ -6,7 +6,7 @@
 use eframe::egui::{self, RichText, Ui};
 
 use degrau_lti::control::Margins;
-use degrau_words::Lang;
+use degrau_words::{Lang, Localize};
 
 use super::derived::LoopData;
 use super::session::Session;
@@ -42,26 +42,9 @@ pub fn show(ui: &mut Ui, session: &Session, look: &Look) {
 
 /// The asymptotes in words: the low-frequency line, then each corner and its slopes.
 fn asymptotes(ui: &mut Ui, data: &LoopData, lang: Lang) {
-    let a = &data.asymptotes;
     ui.heading(T::AsymptotesHeading.get(lang));
-    wrapped(
-        ui,
-        words::low_asymptote(a.low_db_at_1, a.low_slope(), a.system_type, lang),
-    );
-    let corners: Vec<_> = a
-        .corners
-        .iter()
-        .zip(a.slopes().into_iter().skip(1))
-        .filter(|(c, _)| c.slope_change_db_per_decade != 0.0)
-        .collect();
-    if corners.is_empty() {
-        wrapped(ui, T::NoCorner.get(lang).to_string());
-    }
-    for (c, slope) in corners {
-        wrapped(
-            ui,
-            words::corner(c.w, c.slope_change_db_per_decade, slope, lang),
-        );
+    for line in data.asymptotes.lines() {
+        wrapped(ui, line.text(lang));
     }
 }
 

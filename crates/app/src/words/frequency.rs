@@ -30,10 +30,6 @@ degrau_words::phrases! {
         Phase => ("Bode phase", "Fase de Bode"),
         Asymptotes => ("asymptotes", "assíntotas"),
         AsymptotesHeading => ("Bode asymptotes", "Assíntotas de Bode"),
-        NoCorner => (
-            "No corner frequency: the asymptote is that one line.",
-            "Nenhuma frequência de canto: a assíntota é essa única reta."
-        ),
         Corners => ("corner frequencies", "frequências de canto"),
         Curve => ("exact (dead time included)", "exata (com o tempo morto)"),
         GainCrossover => ("gain crossover ω_gc", "cruzamento de ganho ω_gc"),
@@ -234,41 +230,5 @@ pub fn indented(poles: usize, lang: Lang) -> String {
     lang.pick(
         format!("The contour goes round the {poles} open-loop pole(s) on the imaginary axis by small half-circles to their right."),
         format!("O contorno passa em volta do(s) {poles} polo(s) de malha aberta no eixo imaginário por pequenos semicírculos à direita."),
-    )
-}
-
-/// The low-frequency asymptote: its value at ω = 1 and its slope.
-pub fn low_asymptote(db: f64, slope: f64, system_type: i32, lang: Lang) -> String {
-    let n = |x: f64| lang.num(x, 4);
-    lang.pick(
-        format!(
-            "Low-frequency asymptote (type {system_type}): {} dB at ω = 1 rad/s, slope {} dB/decade",
-            n(db),
-            n(slope)
-        ),
-        format!(
-            "Assíntota de baixa frequência (tipo {system_type}): {} dB em ω = 1 rad/s, inclinação {} dB/década",
-            n(db),
-            n(slope)
-        ),
-    )
-}
-
-/// One corner of the asymptotes: where the slope changes, by how much, to what.
-pub fn corner(w: f64, change: f64, slope: f64, lang: Lang) -> String {
-    let n = |x: f64| lang.num(x, 4);
-    lang.pick(
-        format!(
-            "Corner at ω = {} rad/s: the slope changes by {} dB/decade, to {} dB/decade",
-            n(w),
-            n(change),
-            n(slope)
-        ),
-        format!(
-            "Canto em ω = {} rad/s: a inclinação muda {} dB/década, para {} dB/década",
-            n(w),
-            n(change),
-            n(slope)
-        ),
     )
 }

@@ -3,6 +3,7 @@
 //! the course notes' terms, and an example of each for the test that lists every message.
 
 pub mod approx;
+pub mod bode;
 pub mod control;
 pub mod discrete;
 pub mod expr;
@@ -20,6 +21,7 @@ pub fn messages() -> Vec<degrau_words::Message> {
     all.extend(step::messages());
     all.extend(feedback::messages());
     all.extend(approx::messages());
+    all.extend(bode::messages());
     all.extend(discrete::messages());
     all.extend(expr::messages());
     all.extend(control::messages());
