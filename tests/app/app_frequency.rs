@@ -403,24 +403,10 @@ fn the_nyquist_verdict_agrees_with_the_direct_count() {
     }
 }
 
-const TCLAB: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
-);
-
 #[test]
 fn a_fitted_model_is_a_source_once_there_is_one() {
     let mut h = harness(DegrauApp::default(), [1360.0, 860.0]);
-    h.get_by_label("Identify a step test").click();
-    h.run_steps(2);
-    let settings = &mut h.state_mut().ident.settings;
-    settings.y_col = "T1".into();
-    settings.u_col = "Q1".into();
-    settings.code = "P1D".into();
-    kit::load(&mut h, TCLAB);
-    h.get_by_label("Fit").click();
-    h.run_steps(1);
-    kit::wait_for(&mut h, |h| h.query_by_label("Fitted P1D").is_some());
+    kit::fit_tclab(&mut h, "P1D");
     let (fitted, _) = h.state().ident.fitted_transfer_function().expect("a fit");
     h.get_by_label("Frequency").click();
     h.run_steps(3);

@@ -14,11 +14,6 @@ use eframe::egui::{self, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 
-const TCLAB: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
-);
-
 fn harness(app: DegrauApp, size: [f32; 2]) -> Harness<'static, DegrauApp> {
     let mut h = Harness::builder()
         .with_size(size)
@@ -88,16 +83,7 @@ fn drag_value(h: &mut Harness<'_, DegrauApp>, name: &str, dx: f32) {
 #[test]
 fn a_fitted_tclab_model_is_tuned_and_its_responses_follow_ti() {
     let mut h = harness(DegrauApp::default(), [1360.0, 860.0]);
-    h.get_by_label("Identify a step test").click();
-    h.run_steps(2);
-    let settings = &mut h.state_mut().ident.settings;
-    settings.y_col = "T1".into();
-    settings.u_col = "Q1".into();
-    settings.code = "P1D".into();
-    kit::load(&mut h, TCLAB);
-    h.get_by_label("Fit").click();
-    h.run_steps(1);
-    kit::wait_for(&mut h, |h| h.query_by_label("Fitted P1D").is_some());
+    kit::fit_tclab(&mut h, "P1D");
     let fitted = h.state().ident.report.clone().expect("a fit").model;
     h.get_by_label("Tune a controller").click_accesskit();
     h.run_steps(3);

@@ -149,3 +149,25 @@ pub fn wait_for(h: &mut Harness<'_, DegrauApp>, done: impl Fn(&Harness<'_, Degra
     }
     h.run_steps(2);
 }
+
+/// The synthetic TCLab heater record of `tests/data/records/` (T1 against Q1).
+pub const TCLAB: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/records/tclab_step_q1_50_synthetic.csv"
+);
+
+/// Opens the Identify mode, loads [`TCLAB`] (output T1, input Q1), fits `code` and waits
+/// for the fit.
+pub fn fit_tclab(h: &mut Harness<'_, DegrauApp>, code: &str) {
+    h.get_by_label("Identify a step test").click();
+    h.run_steps(2);
+    let settings = &mut h.state_mut().ident.settings;
+    settings.y_col = "T1".into();
+    settings.u_col = "Q1".into();
+    settings.code = code.into();
+    load(h, TCLAB);
+    h.get_by_label("Fit").click();
+    h.run_steps(1);
+    let fitted = format!("Fitted {code}");
+    wait_for(h, |h| h.query_by_label(&fitted).is_some());
+}
