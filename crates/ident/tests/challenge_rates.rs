@@ -7,15 +7,20 @@
 //!
 //! The effects cycle with the index, so each is measured on the same number of cases.
 //! `cargo test -p degrau-ident --test ident challenge_rates -- --nocapture` prints the
-//! table; `DEGRAU_CHALLENGE_CASES=200` (in release) runs 200 per level.
+//! table; `DEGRAU_CHALLENGE_CASES=200` (in release) runs 200 per level,
+//! `DEGRAU_CHALLENGE_SEED=n` another seed, and `DEGRAU_CHALLENGE_DUMP=folder` writes the
+//! CSV of every first draw that is not solved there, to look at with `degrau diagnose`.
 
 use std::collections::BTreeMap;
 
-use degrau_ident::challenge::{Challenge, Effect, Level, Solution, draw, kp_within, seed, solve};
+use degrau_ident::challenge::{
+    Challenge, Effect, Level, Solution, challenge, draw, kp_within, seed, solve,
+};
 use degrau_ident::diagnose::Cause;
 
-/// Cases per level by default (debug builds run these in a few minutes on two cores).
-const CASES: usize = 18;
+/// Cases per level by default, three per effect (a debug build runs the three levels in
+/// about 20 s on two cores).
+const CASES: usize = 27;
 /// The seed of the measured challenges.
 const SEED: u64 = 2027;
 /// The rates of a right first cause asserted on the raw first draws, per level (clear,
@@ -28,6 +33,22 @@ const RAW_FLOORS: [f64; 3] = [0.97, 0.95, 0.80];
 /// this slack: a few cases cannot measure a rate to a percent.
 const FULL_RUN: usize = 100;
 const SMOKE_SLACK: f64 = 0.10;
+
+fn seed() -> u64 {
+    std::env::var("DEGRAU_CHALLENGE_SEED")
+        .ok()
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or(SEED)
+}
+
+/// Writes a missed first draw's CSV where `DEGRAU_CHALLENGE_DUMP` says (nowhere by default).
+fn dump(level: Level, index: usize, c: &Challenge) {
+    if let Ok(dir) = std::env::var("DEGRAU_CHALLENGE_DUMP") {
+        let name = format!("{}_{index:03}_{}.csv", level.id(), c.truth.effect.id());
+        let _ = std::fs::create_dir_all(&dir);
+        let _ = std::fs::write(std::path::Path::new(&dir).join(name), c.csv());
+    }
+}
 
 fn cases() -> usize {
     std::env::var("DEGRAU_CHALLENGE_CASES")
@@ -68,16 +89,19 @@ fn judge(c: &Challenge, s: &Option<Solution>) -> (bool, bool, bool, bool) {
 
 fn run(level: Level, index: usize) -> Outcome {
     let effect = Effect::ALL[index % Effect::ALL.len()];
-    let first = draw(SEED, index, 0, level, Some(effect));
+    let first = draw(seed(), index, 0, level, Some(effect));
     let solution = solve(&first.csv());
     let (cause, structure, kp, all) = judge(&first, &solution);
+    if !all {
+        dump(level, index, &first);
+    }
     // The draws the generator makes before handing this challenge out.
     let draws = if all {
         1
     } else {
         (1..LIMIT)
             .find(|&attempt| {
-                let c = draw(SEED, index, attempt, level, Some(effect));
+                let c = draw(seed(), index, attempt, level, Some(effect));
                 solve(&c.csv()).is_some_and(|s| c.solved_by(&s))
             })
             .map_or(LIMIT, |attempt| attempt + 1)
@@ -149,8 +173,9 @@ fn report(level: Level, outcomes: &[Outcome]) -> f64 {
     }
     let count = |v: &[&Outcome], f: &dyn Fn(&Outcome) -> bool| v.iter().filter(|o| f(o)).count();
     let mut text = format!(
-        "\n[challenge {}] raw (first draw): cause right first | structure | Kp within {:.0} % | all | draws to hand out (mean, max)",
+        "\n[challenge {} seed {}] raw (first draw): cause right first | structure | Kp within {:.0} % | all | draws to hand out (mean, max)",
         level.id(),
+        seed(),
         100.0 * level.kp_tolerance()
     );
     let all: Vec<&Outcome> = outcomes.iter().collect();
@@ -230,4 +255,22 @@ fn a_challenge_is_reproducible_from_its_seed() {
         seed::stream(SEED, 3, 0).bits(),
         seed::stream(SEED, 3, 1).bits()
     );
+}
+
+/// What is handed out is a draw Degrau solves, the same every time; an answer wrong in one
+/// part does not solve it.
+#[test]
+fn a_handed_out_challenge_is_one_degrau_solves() {
+    for index in 0..3 {
+        let c = challenge(SEED, index, Level::Subtle);
+        let s = solve(&c.csv()).expect("a generated record is diagnosed");
+        assert!(c.solved_by(&s), "#{index}: {s:?} for {:?}", c.causes);
+        assert_eq!(c, challenge(SEED, index, Level::Subtle));
+        let mut off = s.clone();
+        off.kp *= 1.0 + 2.0 * c.kp_tolerance;
+        assert!(!c.solved_by(&off));
+        let mut other = s.clone();
+        other.structure = "P3DUZ".into();
+        assert!(!c.solved_by(&other));
+    }
 }
