@@ -8,8 +8,8 @@
 //! shows it at the next one), the operating point is far from zero (u0 ∈ [10, 60], y0 ∈
 //! [−50, 100]), the noise is 0.2–2 % of the step's effect, Gaussian or uniform, white or
 //! AR(1)-coloured, a third of the records are quantised, a third of the steady ones have a
-//! second change (back, or further the same way), and a fifth carry spikes beside the
-//! hidden effect. Levels: *clear* (the effect large, the noise 0.2–0.5 %), *moderate*
+//! second change (back, or further the same way), and a fifth carry a flaw of the test
+//! beside the hidden effect: spikes, or a coarse converter (2–6 % of the effect). Levels: *clear* (the effect large, the noise 0.2–0.5 %), *moderate*
 //! (0.5–1 %), *subtle* (the effect small, the noise 1–2 %).
 //!
 //! **A challenge Degrau cannot solve is not handed out.** Each draw is checked by running

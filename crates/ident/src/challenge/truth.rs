@@ -1,6 +1,7 @@
 //! The hidden truth of a challenge: which effect is hidden from the start model `P1` (a
 //! dead time, one more pole, an oscillation, a zero, an inverse response, an integrator, a
 //! drift, a dead time and a pole at once, or nothing structural but spikes in the record),
+//! with or without a flaw of the test beside it (spikes, a coarse converter),
 //! drawn at a level's size, and the process that carries it (Kp, time constants, the
 //! operating point, the input's changes and the logger's flaws).
 
@@ -91,7 +92,10 @@ impl Effect {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Flaw {
+    /// Spikes and dropouts of 6–15 noise deviations on 2–4 % of the samples.
     Outliers,
+    /// A coarse converter: the output in steps of 2–6 % of the step's effect.
+    Quantisation,
 }
 
 impl Flaw {
@@ -99,6 +103,7 @@ impl Flaw {
     pub fn kind(self) -> TestCauseKind {
         match self {
             Flaw::Outliers => TestCauseKind::Outliers,
+            Flaw::Quantisation => TestCauseKind::Quantisation,
         }
     }
 }
@@ -160,7 +165,9 @@ const T0_SHARE: (f64, f64) = (0.1, 0.25);
 const SAMPLES: (f64, f64) = (200.0, 800.0);
 /// The share of samples turned into spikes or dropouts.
 const OUTLIER_SHARE: (f64, f64) = (0.02, 0.04);
-/// Odds of spikes beside a structural effect, of a second change, of coloured noise, of a
+/// The coarse converter's quantum, as a share of the step's effect.
+const COARSE: (f64, f64) = (0.02, 0.06);
+/// Odds of a flaw (spikes or a coarse converter, even odds) beside a structural effect, of a second change, of coloured noise, of a
 /// quantised output.
 const FLAW_ODDS: f64 = 0.2;
 const SECOND_CHANGE_ODDS: f64 = 1.0 / 3.0;
@@ -243,8 +250,19 @@ pub fn draw(rng: &mut Lcg, effect: Effect, level: Level) -> Truth {
     } else {
         0.0
     };
-    let quantum = (rng.unit() < QUANTISED_ODDS).then_some(0.5 * noise_sd);
-    let flaw = (effect == Effect::OutliersOnly || rng.unit() < FLAW_ODDS).then_some(Flaw::Outliers);
+    let fine = (rng.unit() < QUANTISED_ODDS).then_some(0.5 * noise_sd);
+    let flaw = if effect == Effect::OutliersOnly {
+        Some(Flaw::Outliers)
+    } else if rng.unit() < FLAW_ODDS {
+        Some(*rng.pick(&[Flaw::Outliers, Flaw::Quantisation]))
+    } else {
+        None
+    };
+    let quantum = if flaw == Some(Flaw::Quantisation) {
+        Some(rng.range(COARSE) * effect_size)
+    } else {
+        fine
+    };
     Truth {
         effect,
         flaw,
