@@ -30,6 +30,7 @@
 
 use crate::draw::Draws;
 use degrau_ident::challenge::logger::logged_input;
+use degrau_ident::challenge::truth::ramp_slope;
 use degrau_ident::model::excitation::{Excitation, Hold, InputStep};
 use std::sync::OnceLock;
 use std::time::Instant;
@@ -385,8 +386,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
     if kind == Kind::Missing(Cause::Integrator) {
         // Kp is a slope per input unit: the ramp rises by 2–10 × |Δu| over the record.
         let rise = rng.range(RAMP_RISE);
-        let slope = rise / (after - tp1 * (1.0 - (-after / tp1).exp()));
-        v.set(Param::Kp, kp.signum() * slope);
+        v.set(Param::Kp, kp.signum() * ramp_slope(rise, after, tp1));
         effect = rise * du.abs();
     }
     if drift {

@@ -26,6 +26,10 @@
 //! physics uses only + − × ÷, `exp`, `ln`, `sqrt`, `sin`/`cos`, and the CSV keeps
 //! [`logger::DIGITS`] significant digits so that the last bits of a platform's maths
 //! library do not reach the file. A change to any of this bumps [`GENERATOR_VERSION`].
+//! One limit: which draw is handed out depends on the diagnosis's verdict on the earlier
+//! ones, an iterative fit; a record at the edge of a decision could in principle be judged
+//! differently by another platform's maths library, and another draw be handed out. The
+//! same Degrau build gives the same files.
 
 pub mod flaws;
 pub mod logger;

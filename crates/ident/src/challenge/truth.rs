@@ -174,6 +174,13 @@ const SECOND_CHANGE_ODDS: f64 = 1.0 / 3.0;
 const COLOURED_ODDS: f64 = 0.5;
 const QUANTISED_ODDS: f64 = 1.0 / 3.0;
 
+/// The slope (per input unit) of an integrator with lag `tp1` whose answer to a unit step
+/// rises by `rise` over the `after` seconds that follow it: K·(t − Tp1·(1 − e^{−t/Tp1})) =
+/// rise at t = after.
+pub fn ramp_slope(rise: f64, after: f64, tp1: f64) -> f64 {
+    rise / (after - tp1 * (1.0 - (-after / tp1).exp()))
+}
+
 /// Draws the truth of `effect` at `level`.
 pub fn draw(rng: &mut Lcg, effect: Effect, level: Level) -> Truth {
     let l = level.index();
@@ -237,8 +244,7 @@ pub fn draw(rng: &mut Lcg, effect: Effect, level: Level) -> Truth {
     if effect == Effect::Integrator {
         // Kp is a slope per input unit: the ramp rises by RAMP × |Δu| over the record.
         let rise = rng.range(RAMP[l]);
-        let slope = rise / (after - tp1 * (1.0 - (-after / tp1).exp()));
-        v.set(Param::Kp, kp.signum() * slope);
+        v.set(Param::Kp, kp.signum() * ramp_slope(rise, after, tp1));
         effect_size = rise * du.abs();
     }
     if s.drift {
