@@ -1,5 +1,6 @@
 //! A class's answers: a CSV with the columns `student,file,cause,structure,kp` (any order,
-//! named in its header). Each row becomes an answer or a bad row with its line number and
+//! named in its header; separated by commas, or by semicolons with a decimal comma as a
+//! Brazilian spreadsheet saves it; a cause may be typed `Dead time` for `dead_time`). Each row becomes an answer or a bad row with its line number and
 //! what is wrong with it (a wrong number of fields, an empty field, a gain that is not a
 //! number, a record not in the key, a second answer for the same student and record); a
 //! bad row is reported, never fatal.
@@ -63,9 +64,13 @@ pub fn read(text: &str, key: &Key) -> Result<Answers, MissingColumns> {
         .enumerate()
         .map(|(i, l)| (i + 1, l.trim()))
         .filter(|(_, l)| !l.is_empty());
-    let header: Vec<String> = lines
-        .next()
-        .map(|(_, l)| split(l).map(|c| c.to_ascii_lowercase()).collect())
+    let first = lines.next();
+    let sep = match first {
+        Some((_, l)) if l.contains(';') && !l.contains(',') => ';',
+        _ => ',',
+    };
+    let header: Vec<String> = first
+        .map(|(_, l)| split(l, sep).map(|c| c.to_ascii_lowercase()).collect())
         .unwrap_or_default();
     let positions: Vec<Option<usize>> = COLUMNS
         .iter()
@@ -84,7 +89,7 @@ pub fn read(text: &str, key: &Key) -> Result<Answers, MissingColumns> {
     let mut out = Answers::default();
     for (line, text) in lines {
         out.rows += 1;
-        match row(line, text, header.len(), &positions, key, &out.answers) {
+        match row(line, text, sep, header.len(), &positions, key, &out.answers) {
             Ok(a) => out.answers.push(a),
             Err(problem) => out.bad.push(BadRow { line, problem }),
         }
@@ -92,21 +97,31 @@ pub fn read(text: &str, key: &Key) -> Result<Answers, MissingColumns> {
     Ok(out)
 }
 
-fn split(line: &str) -> impl Iterator<Item = String> + '_ {
-    line.split(',')
+fn split(line: &str, sep: char) -> impl Iterator<Item = String> + '_ {
+    line.split(sep)
         .map(|f| f.trim().trim_matches('"').trim().to_string())
+}
+
+/// A cause as typed (`Dead time`, `dead-time`) in the ids' spelling (`dead_time`).
+fn cause_id(text: &str) -> String {
+    text.to_ascii_lowercase()
+        .split(|c: char| c.is_whitespace() || c == '-' || c == '_')
+        .filter(|w| !w.is_empty())
+        .collect::<Vec<_>>()
+        .join("_")
 }
 
 /// One data row, checked.
 fn row(
     line: usize,
     text: &str,
+    sep: char,
     width: usize,
     positions: &[usize],
     key: &Key,
     earlier: &[Answer],
 ) -> Result<Answer, Problem> {
-    let fields: Vec<String> = split(text).collect();
+    let fields: Vec<String> = split(text, sep).collect();
     if fields.len() != width {
         return Err(Problem::FieldCount {
             found: fields.len(),
@@ -118,7 +133,12 @@ fn row(
         return Err(Problem::EmptyField { column: COLUMNS[k] });
     }
     let kp_text = value(4);
-    let kp = kp_text
+    let number = if sep == ';' {
+        kp_text.replace(',', ".")
+    } else {
+        kp_text.clone()
+    };
+    let kp = number
         .parse::<f64>()
         .ok()
         .filter(|k| k.is_finite())
@@ -139,8 +159,48 @@ fn row(
         line,
         student,
         file,
-        cause: value(2).to_ascii_lowercase(),
+        cause: cause_id(&value(2)),
         structure: value(3).to_ascii_uppercase(),
         kp,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cli::exercise::key::KeyRecord;
+
+    fn key() -> Key {
+        let record = KeyRecord {
+            file: "record_01.csv".into(),
+            causes: vec!["dead_time".into()],
+            structure: "P1D".into(),
+            kp: 2.0,
+            kp_tolerance: 0.1,
+        };
+        Key::new(1, "clear", vec![record])
+    }
+
+    #[test]
+    fn a_spreadsheet_s_semicolons_and_decimal_commas_are_read() {
+        let text = "Student;File;Cause;Structure;Kp\nana;record_01.csv;Dead time;p1d;2,05\n";
+        let a = read(text, &key()).expect("the columns");
+        assert!(a.bad.is_empty(), "{:?}", a.bad);
+        let first = &a.answers[0];
+        assert_eq!(
+            (
+                first.cause.as_str(),
+                first.structure.as_str(),
+                first.kp,
+                first.line
+            ),
+            ("dead_time", "P1D", 2.05, 2)
+        );
+    }
+
+    #[test]
+    fn a_header_without_the_columns_is_refused() {
+        let missing = read("name,file\n", &key()).expect_err("columns missing");
+        assert_eq!(missing.0, vec!["student", "cause", "structure", "kp"]);
+    }
 }
