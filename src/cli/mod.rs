@@ -18,6 +18,7 @@ pub mod batch;
 pub mod bode;
 pub mod diagnose;
 pub mod discrete;
+pub mod exercise;
 pub mod fit;
 pub mod hand;
 mod human;
@@ -121,6 +122,9 @@ pub enum Command {
     D2c(discrete::D2cArgs),
     /// The notes' hand methods (tangent, 63.2 %, Broida, Smith, points, three points) on a measured step.
     Hand(hand::HandArgs),
+    /// The instructor's kit: hidden-effect records with an answer key (make), and the
+    /// grading of a class's answers (check).
+    Exercise(exercise::ExerciseArgs),
 }
 
 const STEP_EXAMPLES: &str = "\
@@ -453,6 +457,7 @@ pub fn main() -> ExitCode {
         Some(Command::C2d(args)) => arx::finish(discrete::run_c2d(&args, lang), lang),
         Some(Command::D2c(args)) => arx::finish(discrete::run_d2c(&args, lang), lang),
         Some(Command::Hand(args)) => hand::finish(hand::run_hand(&args, lang), lang),
+        Some(Command::Exercise(args)) => exercise::main(&args, lang),
     }
 }
 

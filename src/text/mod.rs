@@ -24,6 +24,7 @@ pub mod bode;
 pub mod clap_words;
 pub mod cli;
 pub mod control;
+pub mod exercise;
 pub mod hand;
 pub mod lsq;
 pub mod margins;
@@ -37,6 +38,7 @@ pub fn every_message() -> Vec<Message> {
     all.extend(control::messages());
     all.extend(bode::messages());
     all.extend(margins::messages());
+    all.extend(exercise::messages());
     all
 }
 

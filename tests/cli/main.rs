@@ -5,6 +5,7 @@ mod cli;
 mod cli_approx;
 mod cli_bode;
 mod cli_diagnose;
+mod cli_exercise;
 mod cli_fit;
 mod cli_flags;
 mod cli_fuzz;

@@ -15,6 +15,7 @@
 //! [`hand`] (the notes' graphical methods) and [`lsq`] (ARX, RLS, PRBS, validation), on the
 //! shared ground of [`stats`] and [`random`].
 
+pub mod challenge;
 pub mod diagnose;
 pub mod experiment;
 pub mod fit;

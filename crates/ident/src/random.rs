@@ -34,6 +34,19 @@ impl Lcg {
         let u2 = self.unit();
         (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
     }
+    /// Uniform in [a, b).
+    pub fn range(&mut self, (a, b): (f64, f64)) -> f64 {
+        a + (b - a) * self.unit()
+    }
+    /// −1 or +1, even odds.
+    pub fn sign(&mut self) -> f64 {
+        if self.unit() < 0.5 { -1.0 } else { 1.0 }
+    }
+    /// Uniform in ±[a, b).
+    pub fn signed(&mut self, r: (f64, f64)) -> f64 {
+        let s = self.sign();
+        s * self.range(r)
+    }
     /// One of `items` (not empty), uniformly.
     pub fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
         &items[self.below(items.len())]

@@ -49,6 +49,7 @@ use draw::{range, signed};
 
 use std::sync::OnceLock;
 
+use degrau_ident::challenge::flaws::{noise, outliers, quantise};
 use degrau_ident::diagnose::test_causes::{TestCauseKind, TestEvidence};
 use degrau_ident::diagnose::{DiagnoseOptions, DiagnoseReport, diagnose};
 use degrau_ident::fit::{FitData, FitReport};
@@ -110,28 +111,6 @@ struct Case {
     /// The noise's standard deviation (output units).
     sd: f64,
     note: String,
-}
-
-/// Noise of standard deviation `sd`: Gaussian or uniform innovations, AR(1) with `rho`.
-fn noise(rng: &mut Lcg, n: usize, sd: f64, rho: f64) -> Vec<f64> {
-    let gauss = rng.unit() < 0.5;
-    let scale = sd * (1.0 - rho * rho).sqrt();
-    let mut x = if gauss {
-        rng.gaussian()
-    } else {
-        3f64.sqrt() * rng.symmetric()
-    } * sd;
-    (0..n)
-        .map(|_| {
-            let e = if gauss {
-                rng.gaussian()
-            } else {
-                3f64.sqrt() * rng.symmetric()
-            };
-            x = rho * x + scale * e;
-            x
-        })
-        .collect()
 }
 
 /// How an actuator moved on its change (`imperfect_step`), as a share of Δu at `s` seconds
@@ -383,13 +362,7 @@ fn generate(artefact: Artefact, index: usize) -> Case {
     }
     match artefact {
         Artefact::Outliers => {
-            let share = range(&mut rng, (0.02, 0.06));
-            let count = ((share * n as f64).round() as usize).max(3);
-            for _ in 0..count {
-                let i = rng.below(n);
-                let size = range(&mut rng, (6.0, 15.0)) * sd;
-                y[i] += if rng.unit() < 0.5 { -size } else { size };
-            }
+            let count = outliers(&mut rng, &mut y, (0.02, 0.06), sd);
             note = format!("{count} wild samples");
         }
         Artefact::Saturation => {
@@ -415,9 +388,7 @@ fn generate(artefact: Artefact, index: usize) -> Case {
         (rng.unit() < 1.0 / 3.0).then_some(0.5 * sd)
     };
     if let Some(q) = quantum {
-        for yi in &mut y {
-            *yi = (*yi / q).round() * q;
-        }
+        quantise(&mut y, q);
         note += &format!(" quantised {q:.4}");
     }
     let logged: Vec<f64> = times.iter().map(|&t| u0 + logged_at(t)).collect();

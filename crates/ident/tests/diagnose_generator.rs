@@ -29,7 +29,9 @@
 //! `DEGRAU_DIAGNOSE_CASES=40` for more cases per effect.
 
 use crate::draw::Draws;
-use degrau_ident::model::excitation::{Excitation, Hold};
+use degrau_ident::challenge::logger::logged_input;
+use degrau_ident::challenge::truth::ramp_slope;
+use degrau_ident::model::excitation::{Excitation, Hold, InputStep};
 use std::sync::OnceLock;
 use std::time::Instant;
 
@@ -384,8 +386,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
     if kind == Kind::Missing(Cause::Integrator) {
         // Kp is a slope per input unit: the ramp rises by 2–10 × |Δu| over the record.
         let rise = rng.range(RAMP_RISE);
-        let slope = rise / (after - tp1 * (1.0 - (-after / tp1).exp()));
-        v.set(Param::Kp, kp.signum() * slope);
+        v.set(Param::Kp, kp.signum() * ramp_slope(rise, after, tp1));
         effect = rise * du.abs();
     }
     if drift {
@@ -400,7 +401,7 @@ fn generate(kind: Kind, index: usize, noisy: bool) -> Case {
         .unwrap();
     let k = times.partition_point(|&t| t < t0);
     let lead = times[k] - t0;
-    let logged: Vec<f64> = (0..n).map(|i| if i < k { 0.0 } else { du }).collect();
+    let logged = logged_input(&times, 0.0, &[InputStep { t: t0, du }]);
     let before_record = (k == 0).then_some(0.0);
     let setup = Excitation::measured(&times, &logged, before_record, Hold::Zoh).unwrap();
     if truth_structure.delay {

@@ -2,6 +2,7 @@
 //! crate and what it depends on, no GUI. The fixtures are the workspace's (`tests/data`,
 //! `assets/`), two folders up.
 
+mod challenge_rates;
 mod data_files;
 mod data_fuzz;
 mod data_loading;
