@@ -26,6 +26,7 @@
 
 pub mod design;
 pub mod dialog;
+pub mod exercises;
 pub mod export;
 pub mod field;
 pub mod frequency;
@@ -101,6 +102,8 @@ pub enum Mode {
     Tune,
     /// The loop in frequency: Bode, margins, Nyquist, the sampled model on the z-plane.
     Frequency,
+    /// Barbosa's exercise sheet as guided exercises: answers checked, solutions worked.
+    Exercises,
 }
 
 /// What is kept between runs (the state file of [`persist`]). The Design mode's part is
@@ -116,6 +119,8 @@ pub struct Saved {
     pub tune: tune::Saved,
     /// The Frequency mode's source, tab, sampling period and Nyquist zoom.
     pub frequency: frequency::Saved,
+    /// The Exercises mode's part open and the answers typed, with their last Check.
+    pub exercises: exercises::Saved,
     pub dark: bool,
     /// The language of every label.
     pub lang: Lang,
@@ -131,6 +136,7 @@ impl Default for Saved {
             design: design::Saved::default(),
             tune: tune::Saved::default(),
             frequency: frequency::Saved::default(),
+            exercises: exercises::Saved::default(),
             dark: false,
             lang: Lang::default(),
             scale: 1.0,
@@ -165,6 +171,7 @@ pub enum Command {
     Lsq(lsq::Command),
     Tune(tune::Command),
     Frequency(frequency::Command),
+    Exercises(exercises::Command),
 }
 
 /// What the Identify mode asks of the app after a command.
@@ -181,6 +188,32 @@ fn after_identify(outcome: identify::Outcome) -> Vec<Command> {
             Command::SetMode(Mode::Tune),
         ],
         identify::Outcome::Pick(pick) => vec![Command::Pick(pick)],
+    }
+}
+
+/// What the Exercises mode asks of the app: a part's system loaded into the Design mode
+/// (a loop closed around its gain K with a P controller, specs shaded), then shown.
+fn after_exercises(outcome: exercises::Outcome) -> Vec<Command> {
+    match outcome {
+        exercises::Outcome::Load(load) => {
+            let mut out = vec![Command::Design(design::Command::SetSystem(load.system))];
+            if let Some(k) = load.loop_gain {
+                out.extend([
+                    Command::Design(design::Command::SetLoopController(
+                        design::closed_loop::ControllerShape::default(),
+                    )),
+                    Command::Design(design::Command::SetKp(k)),
+                ]);
+            }
+            out.push(Command::Design(design::Command::SetLoopClosed(
+                load.loop_gain.is_some(),
+            )));
+            if let Some(specs) = load.specs {
+                out.push(Command::Design(design::Command::SetSpecs(specs)));
+            }
+            out.push(Command::SetMode(Mode::Design));
+            out
+        }
     }
 }
 
@@ -205,6 +238,8 @@ pub struct DegrauApp {
     pub tune: tune::Session,
     /// The Frequency mode's derived data (its settings are `saved.frequency`).
     pub frequency: frequency::Session,
+    /// The Exercises mode's sheet and last Check (its progress is `saved.exercises`).
+    pub exercises: exercises::Session,
     /// Messages for the student (what could not be restored or saved), dismissable.
     pub notices: Vec<Notice>,
     export: ExportState,
@@ -251,6 +286,7 @@ impl DegrauApp {
             lsq: lsq::Session::default(),
             tune,
             frequency: frequency::Session::default(),
+            exercises: exercises::Session::default(),
             notices: Vec::new(),
             export: ExportState::default(),
             plot_rect: None,
@@ -377,6 +413,13 @@ impl DegrauApp {
                 frequency::show(ui, &self.frequency, &self.saved.frequency, look)
                     .into_iter()
                     .map(Command::Frequency)
+                    .collect()
+            }
+            Mode::Exercises => {
+                self.exercises.sync(&mut self.saved.exercises);
+                exercises::show(ui, &self.exercises, &self.saved.exercises, look)
+                    .into_iter()
+                    .map(Command::Exercises)
                     .collect()
             }
             Mode::Design => {
@@ -540,6 +583,12 @@ impl DegrauApp {
             }
             Command::Tune(c) => self.tune.apply(&mut self.saved.tune, c),
             Command::Frequency(c) => self.frequency.apply(&mut self.saved.frequency, c),
+            Command::Exercises(c) => {
+                return self
+                    .exercises
+                    .apply(&mut self.saved.exercises, c)
+                    .map_or_else(Vec::new, after_exercises);
+            }
             Command::Lsq(c) => {
                 let design = self.design.analysis.tf.as_ref().ok();
                 return self
