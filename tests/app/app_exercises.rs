@@ -83,7 +83,10 @@ fn wrong(q: &Question, lang: Lang) -> String {
             if roots.is_empty() {
                 "-1".into()
             } else {
-                let shifted: Vec<C64> = roots.iter().map(|r| C64::new(3.0 * r.re - 1.0, r.im)).collect();
+                let shifted: Vec<C64> = roots
+                    .iter()
+                    .map(|r| C64::new(3.0 * r.re - 1.0, r.im))
+                    .collect();
                 shifted
                     .iter()
                     .map(|r| format!("{}{:+}j", r.re, r.im))
@@ -99,7 +102,11 @@ fn wrong(q: &Question, lang: Lang) -> String {
             .into(),
     };
     let v = check(q, &StudentAnswer::Text(w.clone()));
-    assert!(!v.right && !v.unreadable, "{}: {w:?} is no wrong answer", q.id);
+    assert!(
+        !v.right && !v.unreadable,
+        "{}: {w:?} is no wrong answer",
+        q.id
+    );
     w
 }
 
@@ -138,7 +145,11 @@ fn part_checks(part: &Part, lang: Lang) {
         .first()
         .map(|s| s.line.clone())
         .unwrap_or_else(|| panic!("{}: no solution", part.id));
-    assert!(!shows(&h, &first_step), "{}: solution shown at first", part.id);
+    assert!(
+        !shows(&h, &first_step),
+        "{}: solution shown at first",
+        part.id
+    );
     // The exact answers: right.
     for q in &part.questions {
         type_into(&mut h, q, lang, &typed_answer(q, lang));
@@ -270,7 +281,9 @@ fn the_sheets_printed_answer_is_explained_where_it_differs() {
 #[test]
 fn progress_survives_a_restart() {
     let sheet = all();
-    let part = degrau_exercise::find_part(&sheet, "1a").expect("1a").clone();
+    let part = degrau_exercise::find_part(&sheet, "1a")
+        .expect("1a")
+        .clone();
     let mut h = exercises_app("1a", Lang::En);
     for q in &part.questions {
         type_into(&mut h, q, Lang::En, &typed_answer(q, Lang::En));
@@ -301,7 +314,11 @@ fn progress_survives_a_restart() {
     let (restored, _) = degrau::app::persist::restore_value(&value);
     assert_eq!(restored.exercises.part, "1a");
     let ids: Vec<&String> = restored.exercises.answers.keys().collect();
-    assert!(ids.iter().all(|id| degrau_exercise::find_question(&sheet, id).is_some()), "{ids:?}");
+    assert!(
+        ids.iter()
+            .all(|id| degrau_exercise::find_question(&sheet, id).is_some()),
+        "{ids:?}"
+    );
     assert!(!ids.iter().any(|id| id.starts_with("99z")));
 }
 
@@ -340,7 +357,11 @@ fn a_parts_system_opens_in_the_design_mode() {
         let feedback = &h.state().saved.design.feedback;
         assert_eq!(feedback.closed, kp.is_some(), "{id}");
         if let Some(k) = kp {
-            assert!((feedback.kp - k).abs() < 1e-9 * k, "{id}: Kp {}", feedback.kp);
+            assert!(
+                (feedback.kp - k).abs() < 1e-9 * k,
+                "{id}: Kp {}",
+                feedback.kp
+            );
         }
     }
 }
@@ -351,32 +372,35 @@ fn a_parts_system_opens_in_the_design_mode() {
 #[test]
 fn the_exercises_mode_fits_every_classroom_size() {
     let sheet = all();
-    let part = degrau_exercise::find_part(&sheet, "8b").expect("8b").clone();
+    let part = degrau_exercise::find_part(&sheet, "8b")
+        .expect("8b")
+        .clone();
     let mut h = exercises_app("8b", Lang::En);
     for q in &part.questions {
         type_into(&mut h, q, Lang::En, &wrong(q, Lang::En));
     }
     press_check(&mut h, Lang::En);
-    let problems = crate::app_classroom::problems_everywhere_with(&mut h, "Exercises", 0, |h, lang| {
-        let window = h.ctx.content_rect().expand(0.5);
-        let mut missing = Vec::new();
-        for name in [
-            T::OpenInDesign.get(lang).to_string(),
-            T::SheetHeading.get(lang).to_string(),
-            entry(&part, &h.state().saved.exercises),
-        ] {
-            let seen = h
-                .query_all_by_label(&name)
-                .any(|n| window.contains_rect(n.rect()));
-            if !seen {
-                missing.push(format!("{name:?} is not on screen"));
+    let problems =
+        crate::app_classroom::problems_everywhere_with(&mut h, "Exercises", 0, |h, lang| {
+            let window = h.ctx.content_rect().expand(0.5);
+            let mut missing = Vec::new();
+            for name in [
+                T::OpenInDesign.get(lang).to_string(),
+                T::SheetHeading.get(lang).to_string(),
+                entry(&part, &h.state().saved.exercises),
+            ] {
+                let seen = h
+                    .query_all_by_label(&name)
+                    .any(|n| window.contains_rect(n.rect()));
+                if !seen {
+                    missing.push(format!("{name:?} is not on screen"));
+                }
             }
-        }
-        if !shows(h, T::Check.get(lang)) {
-            missing.push("no Check button".into());
-        }
-        missing
-    });
+            if !shows(h, T::Check.get(lang)) {
+                missing.push("no Check button".into());
+            }
+            missing
+        });
     assert!(
         problems.is_empty(),
         "{} layout problems:\n{}",

@@ -444,7 +444,8 @@ impl<'a> Fields<'a> {
 
     /// The names of the object's fields.
     fn keys(&self) -> Vec<String> {
-        self.obj.map_or_else(Vec::new, |o| o.keys().cloned().collect())
+        self.obj
+            .map_or_else(Vec::new, |o| o.keys().cloned().collect())
     }
 
     /// The fields of the nested object `field`; one that is not an object is reported and

@@ -35,7 +35,9 @@ pub enum LoadProblem {
 pub fn design_load(part: &Part) -> Result<Load, LoadProblem> {
     let (tf, amplitude, loop_gain, specs) = match part {
         Part::Tf { tf, amplitude } => (tf.clone(), *amplitude, None, None),
-        Part::Figure { curve, amplitude, .. } => (curve.clone(), *amplitude, None, None),
+        Part::Figure {
+            curve, amplitude, ..
+        } => (curve.clone(), *amplitude, None, None),
         Part::Loop {
             plant,
             controller,
@@ -54,7 +56,10 @@ pub fn design_load(part: &Part) -> Result<Load, LoadProblem> {
 }
 
 /// C(s)·G(s) for the loop's controller.
-fn open_loop(plant: &TransferFunction, controller: Controller) -> Result<TransferFunction, LoadProblem> {
+fn open_loop(
+    plant: &TransferFunction,
+    controller: Controller,
+) -> Result<TransferFunction, LoadProblem> {
     match controller {
         Controller::Proportional => Ok(plant.clone()),
         Controller::Pole { a } => TransferFunction::from_coeffs(&[1.0], &[1.0, a])

@@ -75,7 +75,5 @@ fn weak(ui: &mut Ui, text: impl Into<String>, look: &Look) {
 
 /// Something that cannot be done, said in the error colour.
 fn refusal(ui: &mut Ui, what: &dyn Localize, look: &Look) {
-    ui.add(
-        egui::Label::new(RichText::new(what.text(look.lang)).color(look.palette.error)).wrap(),
-    );
+    ui.add(egui::Label::new(RichText::new(what.text(look.lang)).color(look.palette.error)).wrap());
 }

@@ -13,9 +13,7 @@ use crate::words::exercises::Exercises as T;
 
 /// The exercise holding the part `id`, and the part.
 pub fn find<'a>(sheet: &'a [Exercise], id: &str) -> Option<(&'a Exercise, &'a Part)> {
-    sheet
-        .iter()
-        .find_map(|e| e.part(id).map(|p| (e, p)))
+    sheet.iter().find_map(|e| e.part(id).map(|p| (e, p)))
 }
 
 /// Draws the part open.
