@@ -35,10 +35,12 @@ fn all() -> Vec<Exercise> {
 
 /// The app in the Exercises mode on the part `part`, in `lang`.
 fn exercises_app(part: &str, lang: Lang) -> Harness<'static, DegrauApp> {
-    let mut saved = Saved::default();
-    saved.mode = Mode::Exercises;
+    let mut saved = Saved {
+        mode: Mode::Exercises,
+        lang,
+        ..Saved::default()
+    };
     saved.exercises.part = part.into();
-    saved.lang = lang;
     harness(DegrauApp::new(saved), [1600.0, 1200.0])
 }
 
