@@ -340,7 +340,8 @@ fn a_parts_system_opens_in_the_design_mode() {
     for (id, lang) in [("1a", Lang::En), ("8b", Lang::Pt)] {
         let part = degrau_exercise::find_part(&sheet, id).expect("part");
         let mut h = exercises_app(id, lang);
-        h.get_by_label(T::OpenInDesign.get(lang)).click_accesskit();
+        h.get_by_label(&degrau::app::words::exercises::open_in_design(lang))
+            .click_accesskit();
         h.run_steps(3);
         assert_eq!(h.state().saved.mode, Mode::Design, "{id}");
         let g = design_fraction(&h);
@@ -387,7 +388,7 @@ fn the_exercises_mode_fits_every_classroom_size() {
             let window = h.ctx.content_rect().expand(0.5);
             let mut missing = Vec::new();
             for name in [
-                T::OpenInDesign.get(lang).to_string(),
+                degrau::app::words::exercises::open_in_design(lang),
                 T::SheetHeading.get(lang).to_string(),
                 entry(&part, &h.state().saved.exercises),
             ] {

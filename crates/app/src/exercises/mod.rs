@@ -18,6 +18,8 @@ pub mod load;
 pub mod part_view;
 pub mod session;
 pub mod solution_view;
+#[cfg(test)]
+mod tests;
 
 use eframe::egui::{self, RichText, Ui};
 

@@ -54,7 +54,7 @@ fn statement(ui: &mut Ui, exercise: &Exercise, part: &Part, look: &Look) {
 fn open_button(ui: &mut Ui, session: &Session, part: &Part, look: &Look, out: &mut Vec<Command>) {
     let lang = look.lang;
     if ui
-        .button(T::OpenInDesign.get(lang))
+        .button(crate::words::exercises::open_in_design(lang))
         .on_hover_text(T::OpenHelp.get(lang))
         .clicked()
     {

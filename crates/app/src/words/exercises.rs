@@ -19,7 +19,7 @@ degrau_words::phrases! {
         ),
         Exercise => ("Exercise", "Exercício"),
         Part => ("Part", "Alínea"),
-        OpenInDesign => ("Open in Poles and zeros", "Abrir em Polos e zeros"),
+        OpenIn => ("Open in", "Abrir em"),
         OpenHelp => (
             "Load this part's system into the Poles and zeros mode (its poles, zeros and step; a loop with its gain K)",
             "Carrega o sistema desta alínea no modo Polos e zeros (os polos, os zeros e o degrau; uma malha com o seu ganho K)"
@@ -45,6 +45,15 @@ degrau_words::phrases! {
         MarkStarted => ("started", "começado"),
         MarkNotTried => ("not tried", "por tentar"),
     }
+}
+
+/// The button that loads a part's system: "Open in" and the Design tab's name.
+pub fn open_in_design(lang: Lang) -> String {
+    format!(
+        "{} {}",
+        Exercises::OpenIn.get(lang),
+        crate::words::app::App::ModeDesign.get(lang)
+    )
 }
 
 impl Progress {
