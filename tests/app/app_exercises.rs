@@ -411,3 +411,25 @@ fn the_exercises_mode_fits_every_classroom_size() {
         problems.join("\n")
     );
 }
+
+/// A part read off a figure lists the figure's readings (the sheet's figure is not in its
+/// text), in the student's language; a click on a part in the list opens it.
+#[test]
+fn a_figures_readings_are_listed_and_the_list_opens_a_part() {
+    let sheet = all();
+    let part = degrau_exercise::find_part(&sheet, "2").expect("2");
+    let degrau_exercise::System::Figure { readings, .. } = &part.system else {
+        panic!("2 is read off a figure");
+    };
+    let mut h = exercises_app("1a", Lang::Pt);
+    h.get_by_label(&entry(part, &h.state().saved.exercises))
+        .click_accesskit();
+    h.run_steps(2);
+    assert_eq!(h.state().saved.exercises.part, "2");
+    assert!(shows(&h, part.statement.get(Lang::Pt)));
+    for r in readings {
+        let value = degrau_exercise::text::num(Lang::Pt, r.value);
+        let line = format!("• {} = {value} {}", r.label.get(Lang::Pt), r.unit.symbol());
+        assert!(shows(&h, line.trim_end()), "{line:?} not listed");
+    }
+}

@@ -4,7 +4,7 @@
 
 use eframe::egui::{self, RichText, Ui};
 
-use degrau_exercise::{Exercise, Part};
+use degrau_exercise::{Exercise, Part, System};
 
 use super::session::{Saved, Session};
 use super::{Command, answers, solution_view};
@@ -29,6 +29,7 @@ pub fn show(
         return;
     };
     statement(ui, exercise, part, look);
+    readings(ui, part, look);
     open_button(ui, session, part, look, out);
     ui.separator();
     answers::show(ui, session, part, kept, look, out);
@@ -47,6 +48,27 @@ fn statement(ui: &mut Ui, exercise: &Exercise, part: &Part, look: &Look) {
     ui.add(egui::Label::new(exercise.statement.get(lang)).wrap());
     ui.add_space(4.0);
     ui.add(egui::Label::new(RichText::new(part.statement.get(lang)).strong()).wrap());
+    ui.add_space(4.0);
+}
+
+/// The numbers a part gives besides its statement: a figure's readings, or specs.
+fn readings(ui: &mut Ui, part: &Part, look: &Look) {
+    let lang = look.lang;
+    let (heading, list) = match &part.system {
+        System::Figure { readings, .. } => (T::FigureReadings, readings),
+        System::Specs { specs, .. } => (T::Specs, specs),
+        System::Tf { .. } | System::Loop { .. } => return,
+    };
+    ui.label(heading.get(lang));
+    for r in list {
+        let line = format!(
+            "• {} = {} {}",
+            r.label.get(lang),
+            degrau_exercise::text::num(lang, r.value),
+            r.unit.symbol()
+        );
+        ui.add(egui::Label::new(line.trim_end()).wrap());
+    }
     ui.add_space(4.0);
 }
 

@@ -25,6 +25,11 @@ degrau_words::phrases! {
             "Carrega o sistema desta alínea no modo Polos e zeros (os polos, os zeros e o degrau; uma malha com o seu ganho K)"
         ),
         Answers => ("Your answers", "As suas respostas"),
+        FigureReadings => (
+            "The sheet's figure, as read (Open shows its step response):",
+            "A figura da folha, tal como lida (Abrir mostra a sua resposta ao degrau):"
+        ),
+        Specs => ("The specifications:", "As especificações:"),
         Check => ("Check", "Verificar"),
         CheckHelp => (
             "Compare each answer typed with Degrau's exact value, within the exercise's tolerance",
@@ -35,7 +40,6 @@ degrau_words::phrases! {
         Solution => ("Worked solution", "Resolução"),
         SheetDiffers => ("Where the sheet's printed answer differs", "Onde a resposta impressa na folha difere"),
         SheetPrints => ("The sheet prints", "A folha imprime"),
-        NotChecked => ("not checked (nothing typed)", "não verificada (nada escrito)"),
         NoSheet => (
             "The exercise sheet could not be built:",
             "A folha de exercícios não pôde ser construída:"
