@@ -4,7 +4,9 @@
 //! [`identify::Saved`]), the sessions of the modes (Design: [`design`]; Identify:
 //! [`identify`]; least squares: [`lsq`]; Tune: [`tune`], its settings [`tune::Saved`];
 //! Frequency: [`frequency`], its settings [`frequency::Saved`], its sources handed over from
-//! the other modes before it draws), the export window, the notices and the saver.
+//! the other modes before it draws; Exercises: [`exercises`], the sheet's guided exercises,
+//! the student's progress kept as [`exercises::Saved`], a part's system loaded into Design),
+//! the export window, the notices and the saver.
 //!
 //! Each frame the views draw from the sessions and return [`Command`]s (egui's own
 //! `wrap_app.rs` pattern), and one function applies them: the menu's, the keys', the
