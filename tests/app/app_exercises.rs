@@ -304,6 +304,11 @@ fn progress_survives_a_restart() {
     assert_eq!(h2.state().saved.exercises, kept);
     assert!(h2.state().notices.is_empty());
     assert!(shows(&h2, &mark), "the mark {mark:?} after the restart");
+    for q in &part.questions {
+        let v = check(q, &StudentAnswer::Text(typed_answer(q, Lang::En)));
+        let line = verdict_line(&v, Lang::En);
+        assert!(shows(&h2, &line), "{line:?} after the restart");
+    }
     let _ = std::fs::remove_dir_all(&dir);
     // Unknown ids are dropped, an unknown part opens the first.
     let mut value = serde_json::to_value(Saved::default()).expect("JSON");

@@ -278,9 +278,10 @@ impl Default for DegrauApp {
 
 impl DegrauApp {
     /// An app showing `saved` as it is (the callers check it first).
-    fn unchecked(saved: Saved) -> Self {
+    fn unchecked(mut saved: Saved) -> Self {
         let ident = identify::Session::with_settings(saved.ident.clone());
         let tune = tune::Session::new(&saved.tune);
+        let exercises = exercises::Session::restored(&mut saved.exercises);
         Self {
             design: design::Session::new(&saved.design),
             saved,
@@ -288,7 +289,7 @@ impl DegrauApp {
             lsq: lsq::Session::default(),
             tune,
             frequency: frequency::Session::default(),
-            exercises: exercises::Session::default(),
+            exercises,
             notices: Vec::new(),
             export: ExportState::default(),
             plot_rect: None,

@@ -67,6 +67,36 @@ pub struct Session {
 }
 
 impl Session {
+    /// The session of a restored state: each answer that had been checked is checked
+    /// again (its verdict shown as before the restart, its mark brought up to date).
+    pub fn restored(kept: &mut Saved) -> Self {
+        let mut session = Self::default();
+        let checked: Vec<String> = kept
+            .answers
+            .iter()
+            .filter(|(_, a)| a.right.is_some())
+            .map(|(id, _)| id.clone())
+            .collect();
+        if checked.is_empty() {
+            return session;
+        }
+        let Ok(sheet) = session.sheet() else {
+            return session;
+        };
+        for id in checked {
+            let (Some(q), Some(answer)) = (
+                degrau_exercise::find_question(sheet, &id),
+                kept.answers.get_mut(&id),
+            ) else {
+                continue;
+            };
+            let verdict = check(q, &StudentAnswer::Text(answer.text.trim().to_string()));
+            answer.right = Some(verdict.right);
+            session.verdicts.insert(id, verdict);
+        }
+        session
+    }
+
     /// The sheet, or why it could not be built.
     pub fn sheet(&self) -> Result<&'static [Exercise], &'static SheetError> {
         the_sheet()
