@@ -6,6 +6,7 @@ mod app_approx;
 mod app_classroom;
 mod app_commands;
 mod app_design;
+mod app_exercises;
 mod app_frequency;
 mod app_hand;
 mod app_identify;

@@ -4,7 +4,9 @@
 //! [`identify::Saved`]), the sessions of the modes (Design: [`design`]; Identify:
 //! [`identify`]; least squares: [`lsq`]; Tune: [`tune`], its settings [`tune::Saved`];
 //! Frequency: [`frequency`], its settings [`frequency::Saved`], its sources handed over from
-//! the other modes before it draws), the export window, the notices and the saver.
+//! the other modes before it draws; Exercises: [`exercises`], the sheet's guided exercises,
+//! the student's progress kept as [`exercises::Saved`], a part's system loaded into Design),
+//! the export window, the notices and the saver.
 //!
 //! Each frame the views draw from the sessions and return [`Command`]s (egui's own
 //! `wrap_app.rs` pattern), and one function applies them: the menu's, the keys', the
@@ -26,6 +28,7 @@
 
 pub mod design;
 pub mod dialog;
+pub mod exercises;
 pub mod export;
 pub mod field;
 pub mod frequency;
@@ -101,6 +104,8 @@ pub enum Mode {
     Tune,
     /// The loop in frequency: Bode, margins, Nyquist, the sampled model on the z-plane.
     Frequency,
+    /// Barbosa's exercise sheet as guided exercises: answers checked, solutions worked.
+    Exercises,
 }
 
 /// What is kept between runs (the state file of [`persist`]). The Design mode's part is
@@ -116,6 +121,8 @@ pub struct Saved {
     pub tune: tune::Saved,
     /// The Frequency mode's source, tab, sampling period and Nyquist zoom.
     pub frequency: frequency::Saved,
+    /// The Exercises mode's part open and the answers typed, with their last Check.
+    pub exercises: exercises::Saved,
     pub dark: bool,
     /// The language of every label.
     pub lang: Lang,
@@ -131,6 +138,7 @@ impl Default for Saved {
             design: design::Saved::default(),
             tune: tune::Saved::default(),
             frequency: frequency::Saved::default(),
+            exercises: exercises::Saved::default(),
             dark: false,
             lang: Lang::default(),
             scale: 1.0,
@@ -165,6 +173,7 @@ pub enum Command {
     Lsq(lsq::Command),
     Tune(tune::Command),
     Frequency(frequency::Command),
+    Exercises(exercises::Command),
 }
 
 /// What the Identify mode asks of the app after a command.
@@ -181,6 +190,32 @@ fn after_identify(outcome: identify::Outcome) -> Vec<Command> {
             Command::SetMode(Mode::Tune),
         ],
         identify::Outcome::Pick(pick) => vec![Command::Pick(pick)],
+    }
+}
+
+/// What the Exercises mode asks of the app: a part's system loaded into the Design mode
+/// (a loop closed around its gain K with a P controller, specs shaded), then shown.
+fn after_exercises(outcome: exercises::Outcome) -> Vec<Command> {
+    match outcome {
+        exercises::Outcome::Load(load) => {
+            let mut out = vec![Command::Design(design::Command::SetSystem(load.system))];
+            if let Some(k) = load.loop_gain {
+                out.extend([
+                    Command::Design(design::Command::SetLoopController(
+                        design::closed_loop::ControllerShape::default(),
+                    )),
+                    Command::Design(design::Command::SetKp(k)),
+                ]);
+            }
+            out.push(Command::Design(design::Command::SetLoopClosed(
+                load.loop_gain.is_some(),
+            )));
+            if let Some(specs) = load.specs {
+                out.push(Command::Design(design::Command::SetSpecs(specs)));
+            }
+            out.push(Command::SetMode(Mode::Design));
+            out
+        }
     }
 }
 
@@ -205,6 +240,8 @@ pub struct DegrauApp {
     pub tune: tune::Session,
     /// The Frequency mode's derived data (its settings are `saved.frequency`).
     pub frequency: frequency::Session,
+    /// The Exercises mode's sheet and last Check (its progress is `saved.exercises`).
+    pub exercises: exercises::Session,
     /// Messages for the student (what could not be restored or saved), dismissable.
     pub notices: Vec<Notice>,
     export: ExportState,
@@ -241,9 +278,10 @@ impl Default for DegrauApp {
 
 impl DegrauApp {
     /// An app showing `saved` as it is (the callers check it first).
-    fn unchecked(saved: Saved) -> Self {
+    fn unchecked(mut saved: Saved) -> Self {
         let ident = identify::Session::with_settings(saved.ident.clone());
         let tune = tune::Session::new(&saved.tune);
+        let exercises = exercises::Session::restored(&mut saved.exercises);
         Self {
             design: design::Session::new(&saved.design),
             saved,
@@ -251,6 +289,7 @@ impl DegrauApp {
             lsq: lsq::Session::default(),
             tune,
             frequency: frequency::Session::default(),
+            exercises,
             notices: Vec::new(),
             export: ExportState::default(),
             plot_rect: None,
@@ -377,6 +416,13 @@ impl DegrauApp {
                 frequency::show(ui, &self.frequency, &self.saved.frequency, look)
                     .into_iter()
                     .map(Command::Frequency)
+                    .collect()
+            }
+            Mode::Exercises => {
+                self.exercises.sync(&mut self.saved.exercises);
+                exercises::show(ui, &self.exercises, &self.saved.exercises, look)
+                    .into_iter()
+                    .map(Command::Exercises)
                     .collect()
             }
             Mode::Design => {
@@ -540,6 +586,12 @@ impl DegrauApp {
             }
             Command::Tune(c) => self.tune.apply(&mut self.saved.tune, c),
             Command::Frequency(c) => self.frequency.apply(&mut self.saved.frequency, c),
+            Command::Exercises(c) => {
+                return self
+                    .exercises
+                    .apply(&mut self.saved.exercises, c)
+                    .map_or_else(Vec::new, after_exercises);
+            }
             Command::Lsq(c) => {
                 let design = self.design.analysis.tf.as_ref().ok();
                 return self

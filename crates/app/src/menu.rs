@@ -70,6 +70,11 @@ impl DegrauApp {
                 Mode::Frequency,
                 crate::words::frequency::Frequency::ModeName.get(lang),
             );
+            ui.selectable_value(
+                &mut mode,
+                Mode::Exercises,
+                crate::words::exercises::Exercises::ModeName.get(lang),
+            );
             if mode != self.saved.mode {
                 out.push(Command::SetMode(mode));
             }

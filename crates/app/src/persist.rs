@@ -33,6 +33,7 @@ use super::Saved;
 use super::design;
 use super::design::plane::{SPlaneState, View};
 use super::design::state::{self, RootRole, System};
+use super::exercises;
 use super::frequency;
 use super::identify;
 use super::look::clamp_scale;
@@ -196,6 +197,7 @@ pub fn restore_value(value: &Value) -> (Saved, Vec<FieldProblem>) {
         ident: restore_ident(f.nested("ident"), d.ident),
         tune: restore_tune(f.nested("tune"), d.tune),
         frequency: restore_frequency(f.nested("frequency"), d.frequency),
+        exercises: restore_exercises(f.nested("exercises"), d.exercises),
         design,
         dark: f.take("dark", d.dark),
         lang: f.take("lang", d.lang),
@@ -330,6 +332,26 @@ fn restore_frequency(mut f: Fields<'_>, d: frequency::Saved) -> frequency::Saved
     }
 }
 
+/// The Exercises mode's progress: each answer read on its own (an unreadable one is
+/// reported and dropped), then what names no part or question of the sheet is dropped.
+fn restore_exercises(mut f: Fields<'_>, d: exercises::Saved) -> exercises::Saved {
+    let part = f.take("part", d.part);
+    let mut each = f.nested("answers");
+    let answers = each
+        .keys()
+        .into_iter()
+        .filter_map(|id| {
+            let answer = each.take::<Option<exercises::session::Answer>>(&id, None)?;
+            Some((id, answer))
+        })
+        .collect();
+    let mut kept = exercises::Saved { part, answers };
+    if let Ok(sheet) = exercises::session::the_sheet() {
+        exercises::session::prune(&mut kept, sheet);
+    }
+    kept
+}
+
 /// The choices on a test: every number finite, Δu ≠ 0, a window with start < end and a
 /// filter cut-off > 0.
 fn check_experiment(e: &Experiment) -> Result<(), ExperimentProblem> {
@@ -418,6 +440,12 @@ impl<'a> Fields<'a> {
                 default
             }
         }
+    }
+
+    /// The names of the object's fields.
+    fn keys(&self) -> Vec<String> {
+        self.obj
+            .map_or_else(Vec::new, |o| o.keys().cloned().collect())
     }
 
     /// The fields of the nested object `field`; one that is not an object is reported and

@@ -11,7 +11,7 @@ degrau_words::phrases! {
     /// of file.
     pub enum App {
         ModeDesign => ("Poles and zeros", "Polos e zeros"),
-        ModeIdentify => ("Identify a step test", "Identificar ensaio ao degrau"),
+        ModeIdentify => ("Identify a step test", "Identificar ensaio"),
         File => ("File", "Arquivo"),
         OpenTest => ("Open a step test…", "Abrir um ensaio ao degrau…"),
         Export => ("Export…", "Exportar…"),

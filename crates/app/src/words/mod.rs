@@ -5,6 +5,7 @@
 pub mod app;
 pub mod code;
 pub mod design;
+pub mod exercises;
 pub mod frequency;
 pub mod identify;
 pub mod lsq_app;
@@ -19,6 +20,7 @@ pub fn messages() -> Vec<degrau_words::Message> {
     all.extend(crate::field::examples());
     all.extend(app::messages());
     all.extend(design::messages());
+    all.extend(exercises::messages());
     all.extend(frequency::messages());
     all.extend(identify::messages());
     all.extend(lsq_app::messages());
