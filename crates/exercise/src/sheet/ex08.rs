@@ -227,8 +227,8 @@ pub fn exercise() -> Result<Exercise, SheetError> {
             Part {
                 id: "8b".into(),
                 statement: Text::new(
-                    "b) Find (K, a) so that the specs hold.",
-                    "b) Determine os valores de (K, a) do sistema de forma que as especificações sejam cumpridas.",
+                    "b) Find (K, a) so that the specs hold. Loop: the compensator K/(s + a) in series with G(s) = 100/(s + 25), unity feedback.",
+                    "b) Determine os valores de (K, a) do sistema de forma que as especificações sejam cumpridas. Malha: o compensador K/(s + a) em série com G(s) = 100/(s + 25), realimentação unitária.",
                 ),
                 system: System::Loop {
                     plant,
