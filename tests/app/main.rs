@@ -3,6 +3,7 @@
 
 mod app;
 mod app_approx;
+mod app_challenges;
 mod app_classroom;
 mod app_commands;
 mod app_design;

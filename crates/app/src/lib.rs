@@ -216,6 +216,10 @@ fn after_exercises(outcome: exercises::Outcome) -> Vec<Command> {
             out.push(Command::SetMode(Mode::Design));
             out
         }
+        exercises::Outcome::Record(csv) => vec![
+            Command::SetMode(Mode::Identify),
+            Command::Identify(identify::Command::LoadText(csv)),
+        ],
     }
 }
 
@@ -419,6 +423,7 @@ impl DegrauApp {
                     .collect()
             }
             Mode::Exercises => {
+                self.poll_challenge(ui.ctx());
                 self.exercises.sync(&mut self.saved.exercises);
                 exercises::show(ui, &self.exercises, &self.saved.exercises, look)
                     .into_iter()
@@ -453,6 +458,22 @@ impl DegrauApp {
                 .ident
                 .fitted_transfer_function()
                 .map(|(tf, _)| alone(tf)),
+        }
+    }
+
+    /// The Challenges' draw: a challenge drawn is taken in (and kept), and frames are asked
+    /// while one is drawn.
+    fn poll_challenge(&mut self, ctx: &egui::Context) {
+        let board = &mut self.exercises.board;
+        if !board.has_waker() {
+            let ctx = ctx.clone();
+            board.set_waker(std::sync::Arc::new(move || ctx.request_repaint()));
+        }
+        if board.poll(&mut self.saved.exercises.challenges) {
+            self.dirty = true;
+            ctx.request_repaint();
+        } else if board.drawing() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
     }
 

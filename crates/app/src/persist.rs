@@ -333,7 +333,7 @@ fn restore_frequency(mut f: Fields<'_>, d: frequency::Saved) -> frequency::Saved
 }
 
 /// The Exercises mode's progress: each answer read on its own (an unreadable one is
-/// reported and dropped), then what names no part or question of the sheet is dropped.
+/// reported and dropped), the Challenges' state as a whole, then what names no part or question of the sheet is dropped.
 fn restore_exercises(mut f: Fields<'_>, d: exercises::Saved) -> exercises::Saved {
     let part = f.take("part", d.part);
     let mut each = f.nested("answers");
@@ -345,7 +345,12 @@ fn restore_exercises(mut f: Fields<'_>, d: exercises::Saved) -> exercises::Saved
             Some((id, answer))
         })
         .collect();
-    let mut kept = exercises::Saved { part, answers };
+    let challenges = f.take("challenges", d.challenges);
+    let mut kept = exercises::Saved {
+        part,
+        answers,
+        challenges,
+    };
     if let Ok(sheet) = exercises::session::the_sheet() {
         exercises::session::prune(&mut kept, sheet);
     }

@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use crate::ident::challenge::kp_within;
+use crate::ident::challenge::Grade;
 
 use super::answers::{Answer, Answers, BadRow};
 use super::key::Key;
@@ -83,12 +83,19 @@ pub fn grade(key: &Key, answers: &Answers) -> Grading {
 
 fn one(key: &Key, a: &Answer) -> Option<Graded> {
     let r = key.record(&a.file)?;
+    let g = Grade::of(
+        &r.causes,
+        &r.structure,
+        r.kp,
+        r.kp_tolerance,
+        (&a.cause, &a.structure, a.kp),
+    );
     Some(Graded {
         file: a.file.clone(),
         line: a.line,
-        cause: r.causes.contains(&a.cause),
-        structure: r.structure.eq_ignore_ascii_case(&a.structure),
-        kp: kp_within(a.kp, r.kp, r.kp_tolerance),
+        cause: g.cause,
+        structure: g.structure,
+        kp: g.kp,
     })
 }
 

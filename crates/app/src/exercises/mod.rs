@@ -12,6 +12,8 @@
 //! [`Session::apply`] once per frame, after the views.
 
 pub mod answers;
+pub mod challenge_view;
+pub mod challenges;
 pub mod commands;
 pub mod list;
 pub mod load;
@@ -23,7 +25,7 @@ mod tests;
 
 use eframe::egui::{self, RichText, Ui};
 
-pub use commands::{Command, Outcome};
+pub use commands::{ChallengeCommand, Command, Outcome};
 pub use session::{Saved, Session};
 
 use crate::look::Look;
@@ -57,14 +59,22 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look) -> Vec<Co
         .show(ui, |ui| {
             egui::ScrollArea::vertical()
                 .id_salt("exercise list")
-                .show(ui, |ui| list::show(ui, sheet, kept, look, &mut commands));
+                .show(ui, |ui| {
+                    list::show(ui, sheet, kept, look, &mut commands);
+                    ui.separator();
+                    challenge_view::list(ui, session, kept, look, &mut commands);
+                });
         });
     egui::CentralPanel::default().show(ui, |ui| {
         egui::ScrollArea::vertical()
             .id_salt("exercise part")
             .auto_shrink([false, false])
             .show(ui, |ui| {
-                part_view::show(ui, session, sheet, kept, look, &mut commands);
+                if kept.challenges.open {
+                    challenge_view::show(ui, session, kept, look, &mut commands);
+                } else {
+                    part_view::show(ui, session, sheet, kept, look, &mut commands);
+                }
             });
     });
     commands

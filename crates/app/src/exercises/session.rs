@@ -11,7 +11,8 @@ use serde::{Deserialize, Serialize};
 
 use degrau_exercise::{Exercise, Part, SheetError, StudentAnswer, Verdict, check, sheet};
 
-use super::commands::{Command, Outcome};
+use super::challenges::{Board, Kept};
+use super::commands::{ChallengeCommand, Command, Outcome};
 use super::load::{self, LoadProblem};
 
 /// The part open at first.
@@ -25,6 +26,8 @@ pub struct Saved {
     pub part: String,
     /// Per question id (`"8b.K"`): the last answer typed and its last Check.
     pub answers: BTreeMap<String, Answer>,
+    /// The Challenges' seed, level, the challenge handed out and its answers.
+    pub challenges: Kept,
 }
 
 impl Default for Saved {
@@ -32,6 +35,7 @@ impl Default for Saved {
         Self {
             part: FIRST_PART.into(),
             answers: BTreeMap::new(),
+            challenges: Kept::default(),
         }
     }
 }
@@ -64,13 +68,18 @@ pub struct Session {
     solutions: HashSet<String>,
     /// The part whose system could not be loaded, and why.
     pub load_problem: Option<(String, LoadProblem)>,
+    /// The Challenges: the challenge drawn (or being drawn) and its last Check.
+    pub board: Board,
 }
 
 impl Session {
     /// The session of a restored state: each answer that had been checked is checked
     /// again (its verdict shown as before the restart, its mark brought up to date).
     pub fn restored(kept: &mut Saved) -> Self {
-        let mut session = Self::default();
+        let mut session = Self {
+            board: Board::restored(&kept.challenges),
+            ..Self::default()
+        };
         let checked: Vec<String> = kept
             .answers
             .iter()
@@ -132,10 +141,15 @@ impl Session {
             Command::Select(part) => {
                 if self.part(&part).is_some() {
                     kept.part = part;
+                    kept.challenges.open = false;
                 }
             }
             Command::Type { question, text } => self.type_answer(kept, question, text),
             Command::Check(part) => self.check_part(kept, &part),
+            Command::Challenge(ChallengeCommand::OpenRecord) => {
+                return self.board.csv().map(Outcome::Record);
+            }
+            Command::Challenge(c) => self.board.apply(&mut kept.challenges, c),
             Command::ShowSolution(part, shown) => {
                 if shown {
                     self.solutions.insert(part);
@@ -232,8 +246,16 @@ pub fn progress(part: &Part, kept: &Saved) -> Progress {
     }
 }
 
-/// Drops the answers whose question is not in `sheet`; an unknown part opens the first.
+/// Drops the answers whose question is not in `sheet` and a challenge's cause that is no
+/// cause id; an unknown part opens the first.
 pub fn prune(kept: &mut Saved, sheet: &[Exercise]) {
+    if let Some(c) = kept.challenges.current.as_mut()
+        && !c.cause.is_empty()
+        && !super::challenges::CAUSES.iter().any(|k| k.id() == c.cause)
+    {
+        c.cause.clear();
+        c.checked = false;
+    }
     kept.answers
         .retain(|id, _| degrau_exercise::find_question(sheet, id).is_some());
     if degrau_exercise::find_part(sheet, &kept.part).is_none() {

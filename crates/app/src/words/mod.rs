@@ -3,6 +3,7 @@
 //! student copies to MATLAB or python-control.
 
 pub mod app;
+pub mod challenges;
 pub mod code;
 pub mod design;
 pub mod exercises;
@@ -21,6 +22,7 @@ pub fn messages() -> Vec<degrau_words::Message> {
     all.extend(app::messages());
     all.extend(design::messages());
     all.extend(exercises::messages());
+    all.extend(challenges::messages());
     all.extend(frequency::messages());
     all.extend(identify::messages());
     all.extend(lsq_app::messages());

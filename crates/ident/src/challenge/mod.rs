@@ -44,7 +44,7 @@ use crate::model::excitation::Excitation;
 use crate::random::Lcg;
 
 pub use logger::Record;
-pub use solve::{Grade, Solution, kp_within, solve};
+pub use solve::{Grade, Solution, diagnosis, kp_within, solve};
 pub use truth::{Effect, Flaw, START, Truth};
 
 /// The generator's version, written in the key: the same seed gives the same files in

@@ -4,7 +4,7 @@
 //! of an answer against the key.
 
 use crate::diagnose::test_causes::TestCauseKind;
-use crate::diagnose::{Cause, DiagnoseOptions, diagnose};
+use crate::diagnose::{Cause, DiagnoseOptions, DiagnoseReport, diagnose};
 use crate::experiment::Experiment;
 use crate::model::{Param, Values};
 use crate::record::data::{LoadOptions, load_str};
@@ -27,6 +27,18 @@ pub struct Solution {
 /// The diagnosis of a record's CSV text from [`START`], as the CLI runs it; `None` when the
 /// text cannot be loaded or fitted (never for a generated record).
 pub fn solve(csv: &str) -> Option<Solution> {
+    let report = diagnosis(csv)?;
+    Some(Solution {
+        first_cause: report.steps.first().map_or(Cause::None, |s| s.cause),
+        structure: report.final_fit.model.structure.code(),
+        kp: report.final_fit.model.get(Param::Kp),
+        test_causes: report.test_causes.iter().map(|c| c.kind).collect(),
+    })
+}
+
+/// The whole diagnosis of a record's CSV text from [`START`], as the CLI runs it (the
+/// report [`solve`] reads, and the app shows a student after Check).
+pub fn diagnosis(csv: &str) -> Option<DiagnoseReport> {
     let test = load_str(csv, &LoadOptions::from_text("", "", "", None, 0)).ok()?;
     let experiment = Experiment::new(&test, None, None, None).ok()?;
     let data = experiment.fit_data(&test).ok()?;
@@ -38,13 +50,7 @@ pub fn solve(csv: &str) -> Option<Solution> {
     });
     let mut options = DiagnoseOptions::default();
     options.fit.starts = options.fit.starts.max(1);
-    let report = diagnose(&data, start, values, &options).ok()?;
-    Some(Solution {
-        first_cause: report.steps.first().map_or(Cause::None, |s| s.cause),
-        structure: report.final_fit.model.structure.code(),
-        kp: report.final_fit.model.get(Param::Kp),
-        test_causes: report.test_causes.iter().map(|c| c.kind).collect(),
-    })
+    diagnose(&data, start, values, &options).ok()
 }
 
 /// An answer graded against a key: each part right or not.
@@ -56,6 +62,24 @@ pub struct Grade {
 }
 
 impl Grade {
+    /// One answer graded against a key's facts: the cause among the key's ids (`none` when
+    /// the key says so), the structure's code (case aside), the gain within the relative
+    /// `kp_tolerance` of `kp`.
+    pub fn of(
+        causes: &[String],
+        structure: &str,
+        kp: f64,
+        kp_tolerance: f64,
+        answer: (&str, &str, f64),
+    ) -> Self {
+        let (cause, code, gain) = answer;
+        Self {
+            cause: causes.iter().any(|c| c == cause.trim()),
+            structure: structure.eq_ignore_ascii_case(code.trim()),
+            kp: kp_within(gain, kp, kp_tolerance),
+        }
+    }
+
     /// Every part right.
     pub fn all(self) -> bool {
         self.cause && self.structure && self.kp

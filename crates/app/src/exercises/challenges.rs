@@ -1,0 +1,255 @@
+//! The Challenges of the Exercises mode (issue 27, item 2): a record drawn from a process
+//! with a hidden effect ([`degrau_ident::challenge`]), drawn off the UI thread, the
+//! student's answers (cause, final structure, static gain), their Check against the hidden
+//! truth ([`Grade::of`], the grading the CLI's class check uses), the evidence the diagnosis
+//! gives for the true cause, and Degrau's own diagnosis, offered only after Check. No egui
+//! here: [`Board::apply`] is the only place anything changes.
+
+use serde::{Deserialize, Serialize};
+
+use degrau_ident::challenge::{Challenge, Grade, Level, challenge, diagnosis};
+use degrau_ident::diagnose::{Cause, DiagnoseReport};
+
+use crate::field::{FieldError, parse_number};
+use crate::job::{Job, Waker};
+
+/// The causes a student can name, in the combo's order (`none` last).
+pub const CAUSES: [Cause; 9] = [
+    Cause::DeadTime,
+    Cause::ExtraPole,
+    Cause::Oscillation,
+    Cause::Zero,
+    Cause::InverseResponse,
+    Cause::Integrator,
+    Cause::Drift,
+    Cause::Offset,
+    Cause::None,
+];
+
+/// What the Challenges keep between runs (the state file's `exercises.challenges`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Kept {
+    /// This install's seed (drawn at the first challenge).
+    pub seed: Option<u64>,
+    /// The level the next challenge is drawn at.
+    pub level: Level,
+    /// The index of the next challenge.
+    pub next: usize,
+    /// Whether the centre shows the challenge (not a part of the sheet).
+    pub open: bool,
+    /// The challenge handed out and the student's answers.
+    pub current: Option<Current>,
+}
+
+impl Default for Kept {
+    fn default() -> Self {
+        Self {
+            seed: None,
+            level: Level::Moderate,
+            next: 0,
+            open: false,
+            current: None,
+        }
+    }
+}
+
+/// The challenge handed out (re-drawn from its seed, index and level on restore) and the
+/// student's last answers.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Current {
+    pub seed: u64,
+    pub index: usize,
+    pub level: Level,
+    /// A cause id (`dead_time`, …, `none`), or empty.
+    #[serde(default)]
+    pub cause: String,
+    #[serde(default)]
+    pub structure: String,
+    #[serde(default)]
+    pub kp: String,
+    /// Whether the answers were checked (the verdicts shown again on restore).
+    #[serde(default)]
+    pub checked: bool,
+}
+
+/// One answer field.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Field {
+    Cause,
+    Structure,
+    Kp,
+}
+
+/// A challenge drawn, with Degrau's diagnosis of its record.
+#[derive(Debug, Clone)]
+pub struct Drawn {
+    pub seed: u64,
+    pub index: usize,
+    pub level: Level,
+    pub challenge: Challenge,
+    pub report: Option<DiagnoseReport>,
+}
+
+/// The last Check: each answer right or not, and why the gain could not be read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Checked {
+    pub grade: Grade,
+    pub kp_problem: Option<FieldError>,
+}
+
+/// What the Challenges hold while the app runs.
+#[derive(Default)]
+pub struct Board {
+    job: Option<Job<(), Drawn>>,
+    waker: Option<Waker>,
+    pub drawn: Option<Drawn>,
+    pub checked: Option<Checked>,
+    pub diagnosis_shown: bool,
+}
+
+impl std::fmt::Debug for Board {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Board")
+            .field("drawing", &self.job.is_some())
+            .field("drawn", &self.drawn)
+            .field("checked", &self.checked)
+            .finish()
+    }
+}
+
+impl Board {
+    /// The board of a restored state: the challenge kept is drawn again (deterministic).
+    pub fn restored(kept: &Kept) -> Self {
+        let mut board = Self::default();
+        if let Some(c) = &kept.current {
+            board.draw(c.seed, c.index, c.level);
+        }
+        board
+    }
+
+    /// Whether a challenge is being drawn.
+    pub fn drawing(&self) -> bool {
+        self.job.is_some()
+    }
+
+    pub fn has_waker(&self) -> bool {
+        self.waker.is_some()
+    }
+
+    pub fn set_waker(&mut self, waker: Waker) {
+        self.waker = Some(waker);
+    }
+
+    /// Takes in a challenge drawn; true when one arrived.
+    pub fn poll(&mut self, kept: &mut Kept) -> bool {
+        let Some(drawn) = self.job.as_mut().and_then(Job::poll) else {
+            return false;
+        };
+        self.job = None;
+        self.drawn = Some(drawn);
+        self.checked = None;
+        self.diagnosis_shown = false;
+        if kept.current.as_ref().is_some_and(|c| c.checked) {
+            self.check(kept);
+        }
+        true
+    }
+
+    /// Carries out one command of the Challenges.
+    pub fn apply(&mut self, kept: &mut Kept, command: super::ChallengeCommand) {
+        use super::ChallengeCommand as C;
+        match command {
+            C::Open => kept.open = true,
+            C::SetLevel(level) => kept.level = level,
+            C::New => {
+                let seed = *kept.seed.get_or_insert_with(fresh_seed);
+                let index = kept.next;
+                kept.next += 1;
+                kept.open = true;
+                kept.current = Some(Current {
+                    seed,
+                    index,
+                    level: kept.level,
+                    cause: String::new(),
+                    structure: String::new(),
+                    kp: String::new(),
+                    checked: false,
+                });
+                self.drawn = None;
+                self.checked = None;
+                self.diagnosis_shown = false;
+                self.draw(seed, index, kept.level);
+            }
+            C::Cancel => {
+                self.job = None;
+                kept.current = None;
+            }
+            C::Type(field, text) => {
+                if let Some(c) = kept.current.as_mut() {
+                    let slot = match field {
+                        Field::Cause => &mut c.cause,
+                        Field::Structure => &mut c.structure,
+                        Field::Kp => &mut c.kp,
+                    };
+                    if *slot != text {
+                        *slot = text;
+                        c.checked = false;
+                        self.checked = None;
+                    }
+                }
+            }
+            C::Check => self.check(kept),
+            C::ShowDiagnosis => self.diagnosis_shown = self.checked.is_some(),
+            // The session hands the record to the app.
+            C::OpenRecord => {}
+        }
+    }
+
+    /// Grades the answers kept against the challenge drawn.
+    fn check(&mut self, kept: &mut Kept) {
+        let (Some(c), Some(d)) = (kept.current.as_mut(), self.drawn.as_ref()) else {
+            return;
+        };
+        let key = &d.challenge;
+        let kp = parse_number(&c.kp);
+        let grade = Grade::of(
+            &key.causes,
+            &key.structure,
+            key.kp,
+            key.kp_tolerance,
+            (&c.cause, &c.structure, *kp.as_ref().unwrap_or(&f64::NAN)),
+        );
+        c.checked = true;
+        self.checked = Some(Checked {
+            grade,
+            kp_problem: kp.err(),
+        });
+    }
+
+    /// The CSV of the challenge drawn.
+    pub fn csv(&self) -> Option<String> {
+        self.drawn.as_ref().map(|d| d.challenge.csv())
+    }
+
+    fn draw(&mut self, seed: u64, index: usize, level: Level) {
+        self.job = Some(Job::spawn(self.waker.clone(), move |_| {
+            let challenge = challenge(seed, index, level);
+            let report = diagnosis(&challenge.csv());
+            Drawn {
+                seed,
+                index,
+                level,
+                challenge,
+                report,
+            }
+        }));
+    }
+}
+
+/// A seed for this install: the clock's nanoseconds.
+fn fresh_seed() -> u64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(27, |d| d.as_nanos() as u64)
+}

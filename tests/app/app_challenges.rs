@@ -1,0 +1,219 @@
+//! The Challenges of the Exercises mode through egui_kittest (issue 27, item 2): a moderate
+//! challenge drawn off the UI thread, the key's answers typed are right on Check with the
+//! evidence shown, a wrong cause is wrong, Degrau's diagnosis is offered only after Check,
+//! the record opens in Identify, a restart keeps the challenge and the answers, and the
+//! layout holds at the classroom's sizes.
+
+use crate::kit;
+
+use degrau::app::exercises::challenge_view::{entry, evidence, verdict};
+use degrau::app::words::challenges::Challenges as T;
+use degrau::app::{DegrauApp, Mode, Saved};
+use degrau::ident::challenge::{Challenge, Level, challenge};
+use degrau::ident::diagnose::Cause;
+use degrau::ident::words::ident::{Naming, cause_name};
+use degrau::text::Lang;
+use eframe::egui;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+
+/// A challenge that draws quickly in a debug build.
+const SEED: u64 = 7;
+const INDEX: usize = 0;
+const LEVEL: Level = Level::Moderate;
+
+fn harness(app: DegrauApp, size: [f32; 2]) -> Harness<'static, DegrauApp> {
+    let mut h = Harness::builder()
+        .with_size(size)
+        .build_ui_state(|ui, app: &mut DegrauApp| app.show(ui), app);
+    h.run_steps(3);
+    h
+}
+
+/// The app in the Exercises mode with the challenge drawn (New challenge pressed).
+fn drawn(lang: Lang) -> Harness<'static, DegrauApp> {
+    let mut saved = Saved {
+        mode: Mode::Exercises,
+        lang,
+        ..Saved::default()
+    };
+    saved.exercises.challenges.seed = Some(SEED);
+    saved.exercises.challenges.next = INDEX;
+    saved.exercises.challenges.level = LEVEL;
+    let mut h = harness(DegrauApp::new(saved), [1600.0, 1000.0]);
+    h.get_by_label(T::New.get(lang)).click_accesskit();
+    h.run_steps(2);
+    kit::wait_for(&mut h, |h| h.state().exercises.board.drawn.is_some());
+    h
+}
+
+fn key() -> Challenge {
+    challenge(SEED, INDEX, LEVEL)
+}
+
+/// The key's first cause (`none` when it has none).
+fn true_cause(key: &Challenge) -> Cause {
+    let id = key.causes.first().map_or("none", String::as_str);
+    degrau::app::exercises::challenges::CAUSES
+        .into_iter()
+        .find(|c| c.id() == id)
+        .unwrap_or_else(|| panic!("unknown cause {id}"))
+}
+
+/// Chooses `cause` in the cause combo.
+fn choose_cause(h: &mut Harness<'_, DegrauApp>, cause: Cause, lang: Lang) {
+    h.get_by_role_and_label(egui::accesskit::Role::ComboBox, T::Cause.get(lang))
+        .click_accesskit();
+    h.run_steps(2);
+    h.get_by_label(cause_name(cause, Naming::Words, lang))
+        .click_accesskit();
+    h.run_steps(2);
+    // The popup closed (a click through accesskit is not a pointer's).
+    h.key_press(egui::Key::Escape);
+    h.run_steps(2);
+}
+
+fn press_check(h: &mut Harness<'_, DegrauApp>, lang: Lang) {
+    h.get_by_label(T::Check.get(lang)).click_accesskit();
+    h.run_steps(2);
+}
+
+fn shows(h: &Harness<'_, DegrauApp>, text: &str) -> bool {
+    h.query_all_by_label(text).next().is_some()
+}
+
+/// The key's answers (the gain with a decimal comma) are right, the evidence for the true
+/// cause is shown, and Degrau's diagnosis only after Check; a wrong cause is then wrong;
+/// the record opens in Identify.
+#[test]
+fn a_challenge_is_checked_against_the_hidden_truth() {
+    let key = key();
+    let lang = Lang::Pt;
+    let mut h = drawn(lang);
+    assert_eq!(
+        h.state()
+            .exercises
+            .board
+            .drawn
+            .as_ref()
+            .map(|d| &d.challenge),
+        Some(&key)
+    );
+    assert!(
+        !shows(&h, T::ShowDiagnosis.get(lang)),
+        "diagnosis before Check"
+    );
+    let cause = true_cause(&key);
+    choose_cause(&mut h, cause, lang);
+    kit::type_number(&mut h, T::Structure.get(lang), 0, &key.structure);
+    let kp = format!("{:.4}", key.kp).replace('.', ",");
+    kit::type_number(&mut h, T::Kp.get(lang), 0, &kp);
+    assert!(
+        !shows(&h, T::ShowDiagnosis.get(lang)),
+        "diagnosis before Check"
+    );
+    press_check(&mut h, lang);
+    let checked = h.state().exercises.board.checked.clone().expect("checked");
+    assert!(checked.grade.all(), "{checked:?}");
+    assert_eq!(
+        h.query_all_by_label(&verdict(true, lang)).count(),
+        3,
+        "three right marks"
+    );
+    let report = h
+        .state()
+        .exercises
+        .board
+        .drawn
+        .as_ref()
+        .and_then(|d| d.report.clone());
+    let lines = evidence(&report.expect("a diagnosis"), &key.causes, lang);
+    for line in &lines {
+        assert!(shows(&h, line), "evidence {line:?} not shown");
+    }
+    assert!(shows(&h, T::ShowDiagnosis.get(lang)));
+    h.get_by_label(T::ShowDiagnosis.get(lang)).click_accesskit();
+    h.run_steps(2);
+    assert!(shows(&h, T::Diagnosis.get(lang)));
+    // A wrong cause: the verdicts and the diagnosis hidden until the next Check, then the
+    // cause wrong, and the diagnosis (revealed once) shown again.
+    let wrong = if cause == Cause::Drift {
+        Cause::Oscillation
+    } else {
+        Cause::Drift
+    };
+    choose_cause(&mut h, wrong, lang);
+    assert!(
+        !shows(&h, T::ShowDiagnosis.get(lang)),
+        "diagnosis before Check"
+    );
+    assert!(!shows(&h, T::Diagnosis.get(lang)), "diagnosis before Check");
+    assert!(!shows(&h, &verdict(true, lang)), "verdicts before Check");
+    press_check(&mut h, lang);
+    let checked = h.state().exercises.board.checked.clone().expect("checked");
+    assert!(!checked.grade.cause && checked.grade.structure && checked.grade.kp);
+    assert!(shows(&h, &verdict(false, lang)));
+    assert!(shows(&h, T::Diagnosis.get(lang)));
+    // The record opens in Identify.
+    h.get_by_label(T::OpenRecord.get(lang)).click_accesskit();
+    h.run_steps(3);
+    assert_eq!(h.state().saved.mode, Mode::Identify);
+    let loaded = h.state().ident.loaded.as_ref().expect("a record loaded");
+    assert_eq!(loaded.test.time.len(), key.record.t.len());
+    assert!(loaded.test.input.is_some(), "the input column u");
+}
+
+/// A restart keeps the challenge and the answers, their verdicts shown again; the layout
+/// holds at 1000×650 and 1600×900, zoom 1–1.6, both languages, with the challenge checked.
+#[test]
+fn a_challenge_survives_a_restart_and_fits_every_classroom_size() {
+    let key = key();
+    let lang = Lang::En;
+    let mut h = drawn(lang);
+    choose_cause(&mut h, true_cause(&key), lang);
+    kit::type_number(&mut h, T::Structure.get(lang), 0, &key.structure);
+    kit::type_number(&mut h, T::Kp.get(lang), 0, "-1e9");
+    press_check(&mut h, lang);
+    let kept = h.state().saved.exercises.clone();
+    let current = kept.challenges.current.clone().expect("a challenge kept");
+    assert_eq!(
+        (current.seed, current.index, current.level),
+        (SEED, INDEX, LEVEL)
+    );
+    assert!(current.checked);
+    let dir = std::env::temp_dir().join(format!("degrau-challenges-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let path = dir.join("state.json");
+    let json = serde_json::to_string_pretty(&h.state().saved).expect("JSON");
+    degrau::app::persist::write_atomically(&path, json.as_bytes()).expect("written");
+    let mut h2 = harness(DegrauApp::with_state_file(path), [1600.0, 1000.0]);
+    kit::wait_for(&mut h2, |h| h.state().exercises.board.checked.is_some());
+    assert_eq!(h2.state().saved.exercises, kept);
+    assert!(shows(&h2, &entry(&current, lang)));
+    assert!(shows(&h2, &verdict(false, lang)), "the gain's mark");
+    assert_eq!(h2.query_all_by_label(&verdict(true, lang)).count(), 2);
+    let _ = std::fs::remove_dir_all(&dir);
+    let problems =
+        crate::app_classroom::problems_everywhere_with(&mut h2, "Exercises", 0, |h, lang| {
+            let window = h.ctx.content_rect().expand(0.5);
+            let mut missing = Vec::new();
+            for name in [T::OpenRecord.get(lang), T::New.get(lang)] {
+                let seen = h
+                    .query_all_by_label(name)
+                    .any(|n| window.contains_rect(n.rect()));
+                if !seen {
+                    missing.push(format!("{name:?} is not on screen"));
+                }
+            }
+            if !shows(h, T::Check.get(lang)) {
+                missing.push("no Check button".into());
+            }
+            missing
+        });
+    assert!(
+        problems.is_empty(),
+        "{} layout problems:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
