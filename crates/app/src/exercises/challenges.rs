@@ -253,3 +253,83 @@ fn fresh_seed() -> u64 {
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(27, |d| d.as_nanos() as u64)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exercises::ChallengeCommand as C;
+
+    /// A board with a challenge drawn (its first draw, unchecked: no diagnosis run).
+    fn board() -> (Board, Kept, Challenge) {
+        let key = degrau_ident::challenge::draw(3, 0, 0, Level::Clear, None);
+        let mut kept = Kept::default();
+        kept.current = Some(Current {
+            seed: 3,
+            index: 0,
+            level: Level::Clear,
+            cause: String::new(),
+            structure: String::new(),
+            kp: String::new(),
+            checked: false,
+        });
+        let board = Board {
+            drawn: Some(Drawn {
+                seed: 3,
+                index: 0,
+                level: Level::Clear,
+                challenge: key.clone(),
+                report: None,
+            }),
+            ..Board::default()
+        };
+        (board, kept, key)
+    }
+
+    #[test]
+    fn the_keys_answers_are_right_and_a_retyped_one_unchecked() {
+        let (mut b, mut kept, key) = board();
+        let cause = key.causes.first().cloned().unwrap_or_else(|| "none".into());
+        b.apply(&mut kept, C::ShowDiagnosis);
+        assert!(!b.diagnosis_shown, "the diagnosis before Check");
+        b.apply(&mut kept, C::Type(Field::Cause, cause));
+        b.apply(
+            &mut kept,
+            C::Type(Field::Structure, key.structure.to_lowercase()),
+        );
+        let kp = format!("{:.6}", key.kp).replace('.', ",");
+        b.apply(&mut kept, C::Type(Field::Kp, kp));
+        b.apply(&mut kept, C::Check);
+        let checked = b.checked.clone().expect("checked");
+        assert!(checked.grade.all(), "{checked:?}");
+        assert!(kept.current.as_ref().is_some_and(|c| c.checked));
+        b.apply(&mut kept, C::ShowDiagnosis);
+        assert!(b.diagnosis_shown);
+        b.apply(&mut kept, C::Type(Field::Kp, "abc".into()));
+        assert!(b.checked.is_none());
+        assert!(kept.current.as_ref().is_some_and(|c| !c.checked));
+        b.apply(&mut kept, C::Check);
+        let checked = b.checked.clone().expect("checked");
+        assert!(!checked.grade.kp);
+        assert!(matches!(
+            checked.kp_problem,
+            Some(FieldError::NotANumber { .. })
+        ));
+    }
+
+    #[test]
+    fn a_cancelled_draw_leaves_no_challenge() {
+        let mut b = Board::default();
+        let mut kept = Kept {
+            seed: Some(3),
+            ..Kept::default()
+        };
+        b.apply(&mut kept, C::New);
+        assert!(b.drawing());
+        assert_eq!(kept.next, 1);
+        assert!(kept.open);
+        b.apply(&mut kept, C::Cancel);
+        assert!(!b.drawing());
+        assert!(kept.current.is_none());
+        assert!(!b.poll(&mut kept));
+    }
+}

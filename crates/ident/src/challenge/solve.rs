@@ -90,3 +90,25 @@ impl Grade {
 pub fn kp_within(kp: f64, truth: f64, tolerance: f64) -> bool {
     kp.is_finite() && (kp - truth).abs() <= tolerance * truth.abs()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_answer_is_graded_part_by_part() {
+        let causes = vec!["dead_time".to_string(), "extra_pole".to_string()];
+        let g = Grade::of(&causes, "P2D", 2.0, 0.1, (" extra_pole", "p2d ", 2.19));
+        assert_eq!(
+            g,
+            Grade {
+                cause: true,
+                structure: true,
+                kp: true
+            }
+        );
+        let g = Grade::of(&causes, "P2D", 2.0, 0.1, ("zero", "P1D", 2.21));
+        assert!(!g.cause && !g.structure && !g.kp);
+        assert!(!Grade::of(&causes, "P2D", 2.0, 0.1, ("dead_time", "P2D", f64::NAN)).kp);
+    }
+}
