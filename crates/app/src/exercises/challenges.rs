@@ -262,16 +262,18 @@ mod tests {
     /// A board with a challenge drawn (its first draw, unchecked: no diagnosis run).
     fn board() -> (Board, Kept, Challenge) {
         let key = degrau_ident::challenge::draw(3, 0, 0, Level::Clear, None);
-        let mut kept = Kept::default();
-        kept.current = Some(Current {
-            seed: 3,
-            index: 0,
-            level: Level::Clear,
-            cause: String::new(),
-            structure: String::new(),
-            kp: String::new(),
-            checked: false,
-        });
+        let kept = Kept {
+            current: Some(Current {
+                seed: 3,
+                index: 0,
+                level: Level::Clear,
+                cause: String::new(),
+                structure: String::new(),
+                kp: String::new(),
+                checked: false,
+            }),
+            ..Kept::default()
+        };
         let board = Board {
             drawn: Some(Drawn {
                 seed: 3,
