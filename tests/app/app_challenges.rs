@@ -164,7 +164,8 @@ fn a_challenge_is_checked_against_the_hidden_truth() {
 }
 
 /// A restart keeps the challenge and the answers, their verdicts shown again; the layout
-/// holds at 1000×650 and 1600×900, zoom 1–1.6, both languages, with the challenge checked.
+/// holds at 1000×650 and 1600×900, zoom 1–1.6, both languages, with the challenge checked
+/// and Degrau's diagnosis shown.
 #[test]
 fn a_challenge_survives_a_restart_and_fits_every_classroom_size() {
     let key = key();
@@ -193,6 +194,9 @@ fn a_challenge_survives_a_restart_and_fits_every_classroom_size() {
     assert!(shows(&h2, &verdict(false, lang)), "the gain's mark");
     assert_eq!(h2.query_all_by_label(&verdict(true, lang)).count(), 2);
     let _ = std::fs::remove_dir_all(&dir);
+    h2.get_by_label(T::ShowDiagnosis.get(lang)).click_accesskit();
+    h2.run_steps(2);
+    assert!(shows(&h2, T::Diagnosis.get(lang)));
     let problems =
         crate::app_classroom::problems_everywhere_with(&mut h2, "Exercises", 0, |h, lang| {
             let window = h.ctx.content_rect().expand(0.5);
