@@ -194,7 +194,8 @@ fn a_challenge_survives_a_restart_and_fits_every_classroom_size() {
     assert!(shows(&h2, &verdict(false, lang)), "the gain's mark");
     assert_eq!(h2.query_all_by_label(&verdict(true, lang)).count(), 2);
     let _ = std::fs::remove_dir_all(&dir);
-    h2.get_by_label(T::ShowDiagnosis.get(lang)).click_accesskit();
+    h2.get_by_label(T::ShowDiagnosis.get(lang))
+        .click_accesskit();
     h2.run_steps(2);
     assert!(shows(&h2, T::Diagnosis.get(lang)));
     let problems =
