@@ -5,7 +5,9 @@
 //! [`identify`]; least squares: [`lsq`]; Tune: [`tune`], its settings [`tune::Saved`];
 //! Frequency: [`frequency`], its settings [`frequency::Saved`], its sources handed over from
 //! the other modes before it draws; Exercises: [`exercises`], the sheet's guided exercises,
-//! the student's progress kept as [`exercises::Saved`], a part's system loaded into Design),
+//! the student's progress kept as [`exercises::Saved`], a part's system loaded into Design,
+//! and the hidden-effect challenges, drawn off the UI thread, their record loaded into
+//! Identify),
 //! the export window, the notices and the saver.
 //!
 //! Each frame the views draw from the sessions and return [`Command`]s (egui's own

@@ -3,7 +3,10 @@
 //! part open: its statement in the student's language, a button that loads its system into
 //! the Design mode, one field per question, a Check that compares each answer with Degrau's
 //! exact value (the exercise crate's [`degrau_exercise::check`]) and the worked solution,
-//! with where the sheet's printed answer differs and why.
+//! with where the sheet's printed answer differs and why. Below the sheet, the
+//! [`challenges`] (issue 27, item 2): a record with a hidden effect drawn off the UI thread,
+//! opened in Identify, the student's cause, structure and gain checked against the hidden
+//! truth, the evidence that gave it away, then Degrau's diagnosis ([`challenge_view`]).
 //!
 //! The mode is a [`Session`] (the sheet, the last Check's verdicts; no egui) over what it
 //! keeps ([`Saved`], in the app's state file), and views that read them and return
