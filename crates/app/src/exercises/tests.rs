@@ -1,6 +1,6 @@
 //! The Exercises session without egui: every part's system loads into the Design mode, a
 //! Check marks the answers and opens the solution when one is wrong, typing clears the last
-//! Check, and a kept state naming unknown ids is pruned.
+//! Check, a kept state naming unknown ids is pruned, and a kept challenge is checked.
 
 use degrau_exercise::{Lang, find_question, typed_answer};
 
@@ -95,4 +95,33 @@ fn unknown_ids_are_pruned() {
     let left: Vec<&String> = kept.answers.keys().collect();
     assert_eq!(left, [&known]);
     assert!(find_question(sheet(), &known).is_some());
+}
+
+#[test]
+fn a_kept_challenge_is_checked_on_restore() {
+    use degrau_ident::challenge::Level;
+    let mut value = serde_json::to_value(crate::Saved::default()).expect("JSON");
+    value["exercises"]["challenges"] = serde_json::json!({
+        "seed": 7, "level": "subtle", "next": 3, "open": true,
+        "current": {"seed": 7, "index": 2, "level": "subtle",
+                    "cause": "gremlins", "structure": "P2", "kp": "1,5", "checked": true}
+    });
+    let (restored, problems) = crate::persist::restore_value(&value);
+    assert!(problems.is_empty(), "{problems:?}");
+    let kept = &restored.exercises.challenges;
+    assert_eq!(
+        (kept.seed, kept.level, kept.next),
+        (Some(7), Level::Subtle, 3)
+    );
+    let current = kept.current.as_ref().expect("the challenge kept");
+    assert_eq!((current.index, current.kp.as_str()), (2, "1,5"));
+    assert!(current.cause.is_empty() && !current.checked, "{current:?}");
+    // An unreadable one is reported and dropped.
+    value["exercises"]["challenges"]["level"] = serde_json::json!("extreme");
+    let (restored, problems) = crate::persist::restore_value(&value);
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert_eq!(
+        restored.exercises.challenges,
+        super::challenges::Kept::default()
+    );
 }
