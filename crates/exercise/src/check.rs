@@ -386,11 +386,7 @@ fn describe_expected(q: &Question, lang: Lang) -> String {
             num(lang, r.sigma_min),
             num(lang, r.zeta_min.acos().to_degrees())
         ),
-        Expected::ClosedForm { tf, amplitude, .. } => degrau_lti::StepResponse::new(tf, *amplitude)
-            .map(|r| {
-                degrau_lti::expr::expression_in(&r, degrau_lti::expr::OscillationForm::CosSin, lang)
-            })
-            .unwrap_or_default(),
+        Expected::ClosedForm { tf, amplitude, .. } => closed_form_text(tf, *amplitude, lang),
         Expected::Roots(roots) => {
             if roots.is_empty() {
                 lang.pick("none", "nenhum").into()
@@ -422,6 +418,15 @@ fn also(q: &Question) -> Option<Text> {
         })),
         _ => None,
     }
+}
+
+/// y(t) of `tf` under a step of `amplitude`, written as the notes write it (cos and sin).
+fn closed_form_text(tf: &degrau_lti::TransferFunction, amplitude: f64, lang: Lang) -> String {
+    degrau_lti::StepResponse::new(tf, amplitude)
+        .map(|r| {
+            degrau_lti::expr::expression_in(&r, degrau_lti::expr::OscillationForm::CosSin, lang)
+        })
+        .unwrap_or_default()
 }
 
 fn value_text(lang: Lang, x: f64, unit: Unit) -> String {
@@ -484,11 +489,7 @@ pub fn typed_answer(q: &Question, lang: Lang) -> String {
             }
         }
         Expected::Region(r) => format!("ζ ≥ {}; σ ≥ {}", full(r.zeta_min), full(r.sigma_min)),
-        Expected::ClosedForm { tf, amplitude, .. } => degrau_lti::StepResponse::new(tf, *amplitude)
-            .map(|r| {
-                degrau_lti::expr::expression_in(&r, degrau_lti::expr::OscillationForm::CosSin, lang)
-            })
-            .unwrap_or_default(),
+        Expected::ClosedForm { tf, amplitude, .. } => closed_form_text(tf, *amplitude, lang),
         Expected::Roots(roots) => {
             if roots.is_empty() {
                 lang.pick("none", "nenhum").into()
