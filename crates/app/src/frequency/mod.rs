@@ -25,7 +25,8 @@ pub mod zplane;
 use eframe::egui::{self, Ui};
 
 pub use commands::Command;
-pub use session::{Saved, Session, Source, SourceKind, Sources, Tab};
+pub use commands::{SourceKind, Tab};
+pub use session::{Saved, Session, Source, Sources};
 
 use crate::look::Look;
 use crate::words::frequency::Frequency as T;

@@ -11,40 +11,11 @@ use serde::{Deserialize, Serialize};
 use degrau_lti::control::Controller;
 use degrau_lti::{LtiError, TransferFunction};
 
-use super::commands::Command;
+use super::commands::{Command, SourceKind, Tab};
 use super::derived::{LoopData, SampledData};
 
 /// The sampling period the z-plane starts with (s).
 pub const DEFAULT_PERIOD: f64 = 0.1;
-
-/// Which system the mode shows.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub enum SourceKind {
-    /// The Design mode's G(s); the loop is L = G.
-    #[default]
-    Design,
-    /// The Tune mode's loop L = C·G.
-    Tune,
-    /// The Identify mode's fitted model; the loop is L = G.
-    Fitted,
-}
-
-impl SourceKind {
-    pub const ALL: [SourceKind; 3] = [SourceKind::Design, SourceKind::Tune, SourceKind::Fitted];
-}
-
-/// The tab shown in the centre.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Tab {
-    #[default]
-    Bode,
-    Nyquist,
-    ZPlane,
-}
-
-impl Tab {
-    pub const ALL: [Tab; 3] = [Tab::Bode, Tab::Nyquist, Tab::ZPlane];
-}
 
 /// What the Frequency mode keeps between runs (the state file's `frequency`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

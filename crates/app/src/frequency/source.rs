@@ -8,7 +8,8 @@ use degrau_lti::poly::format_poly;
 use degrau_words::Lang;
 
 use super::commands::Command;
-use super::session::{Saved, Session, SourceKind};
+use super::commands::SourceKind;
+use super::session::{Saved, Session};
 use crate::design::system_panel::fraction_text;
 use crate::look::Look;
 use crate::words::frequency::Frequency as T;
