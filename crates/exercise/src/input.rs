@@ -233,26 +233,28 @@ pub fn coefficient_lists(text: &str) -> Option<Result<Coefficients, InputError>>
 /// Splits a list on spaces, semicolons, and commas that are not between two digits (those
 /// are decimal commas).
 fn split_items(text: &str) -> Vec<String> {
+    split_outside_decimals(text, true)
+}
+
+/// Splits on semicolons, commas that are not between two digits and, with `on_space`,
+/// whitespace; pieces that are only whitespace are dropped.
+fn split_outside_decimals(text: &str, on_space: bool) -> Vec<String> {
     let chars: Vec<char> = text.chars().collect();
-    let mut items = Vec::new();
+    let mut out = Vec::new();
     let mut current = String::new();
     for (i, &c) in chars.iter().enumerate() {
         let decimal_comma = c == ','
             && i > 0
             && chars[i - 1].is_ascii_digit()
             && chars.get(i + 1).is_some_and(char::is_ascii_digit);
-        if c.is_whitespace() || c == ';' || (c == ',' && !decimal_comma) {
-            if !current.is_empty() {
-                items.push(std::mem::take(&mut current));
-            }
+        if (on_space && c.is_whitespace()) || c == ';' || (c == ',' && !decimal_comma) {
+            out.push(std::mem::take(&mut current));
         } else {
             current.push(c);
         }
     }
-    if !current.is_empty() {
-        items.push(current);
-    }
-    items
+    out.push(current);
+    out.into_iter().filter(|c| !c.trim().is_empty()).collect()
 }
 
 /// What a range answer says: both ends, or a bare number (one end, left to the check).
@@ -460,22 +462,7 @@ pub fn roots(text: &str) -> Result<Vec<C64>, InputError> {
 
 /// Splits on semicolons and on commas that are not between two digits.
 fn split_separators(text: &str) -> Vec<String> {
-    let chars: Vec<char> = text.chars().collect();
-    let mut out = Vec::new();
-    let mut current = String::new();
-    for (i, &c) in chars.iter().enumerate() {
-        let decimal_comma = c == ','
-            && i > 0
-            && chars[i - 1].is_ascii_digit()
-            && chars.get(i + 1).is_some_and(char::is_ascii_digit);
-        if c == ';' || (c == ',' && !decimal_comma) {
-            out.push(std::mem::take(&mut current));
-        } else {
-            current.push(c);
-        }
-    }
-    out.push(current);
-    out.into_iter().filter(|c| !c.trim().is_empty()).collect()
+    split_outside_decimals(text, false)
 }
 
 /// `j2`, `2j`, `2,5j`, `j` as the imaginary coefficient.
