@@ -50,6 +50,7 @@ use draw::{range, signed};
 use std::sync::OnceLock;
 
 use degrau_ident::challenge::flaws::{noise, outliers, quantise};
+use degrau_ident::challenge::test_flaw::Actuator;
 use degrau_ident::diagnose::test_causes::{TestCauseKind, TestEvidence};
 use degrau_ident::diagnose::{DiagnoseOptions, DiagnoseReport, diagnose};
 use degrau_ident::fit::{FitData, FitReport};
@@ -113,65 +114,12 @@ struct Case {
     note: String,
 }
 
-/// How an actuator moved on its change (`imperfect_step`), as a share of Δu at `s` seconds
-/// after the command.
-#[derive(Debug, Clone, Copy)]
-enum Actuator {
-    /// A straight line over `duration` seconds (a slow valve, a motor's acceleration).
-    Ramp { duration: f64 },
-    /// Past the new level by `fraction` of Δu, settling with time constant `decay`.
-    Overshoot { fraction: f64, decay: f64 },
-    /// ± `amplitude` of Δu about the new level, of `period`, dying out over four periods.
-    Wobble { amplitude: f64, period: f64 },
-}
-
-impl Actuator {
-    fn at(self, s: f64) -> f64 {
-        if s < 0.0 {
-            return 0.0;
-        }
-        match self {
-            Actuator::Ramp { duration } => (s / duration).min(1.0),
-            Actuator::Overshoot { fraction, decay } if s < 12.0 * decay => {
-                1.0 + fraction * (-s / decay).exp()
-            }
-            Actuator::Wobble { amplitude, period } if s < 4.0 * period => {
-                let phase = std::f64::consts::TAU * s / period;
-                1.0 + amplitude * (-s / (2.0 * period)).exp() * phase.sin()
-            }
-            _ => 1.0,
-        }
-    }
-
-    /// How long it moves after the command (s).
-    fn span(self) -> f64 {
-        match self {
-            Actuator::Ramp { duration } => duration,
-            Actuator::Overshoot { decay, .. } => 12.0 * decay,
-            Actuator::Wobble { period, .. } => 4.0 * period,
-        }
-    }
-
-    /// The input it gave the process: Δu·shape held on a fine grid of its motion (400
-    /// points), an ideal step's change record (the plant sees it, no logger does).
-    fn excitation(self, t0: f64, du: f64) -> Excitation {
-        const FINE: usize = 400;
-        let mut input = Excitation::step(t0, du);
-        let mut level = 0.0;
-        input.steps = (0..=FINE)
-            .map(|k| {
-                let t = t0 + self.span() * k as f64 / FINE as f64;
-                let next = du * self.at(t - t0);
-                let step = InputStep {
-                    t,
-                    du: next - level,
-                };
-                level = next;
-                step
-            })
-            .collect();
-        input
-    }
+/// The input an actuator gave the process on a command `du` at `t0` (an ideal step's
+/// change record of its fine motion: the plant sees it, no logger does).
+fn driven_by(actuator: Actuator, t0: f64, du: f64) -> Excitation {
+    let mut input = Excitation::step(t0, du);
+    input.steps = actuator.changes(t0, du);
+    input
 }
 
 /// The `index`-th case of `artefact`.
@@ -273,7 +221,7 @@ fn generate(artefact: Artefact, index: usize) -> Case {
                     }
                 }
             };
-            driven = actuator.excitation(t0, du);
+            driven = driven_by(actuator, t0, du);
             logged_at = Box::new(move |t| du * actuator.at(t - t0));
             note = format!("{actuator:?}");
         }

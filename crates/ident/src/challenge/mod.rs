@@ -1,21 +1,25 @@
 //! Hidden-effect challenges: step-test records drawn from a process with an effect hidden
 //! from the start model `P1` (a dead time, one more pole, an oscillation, a zero, an
-//! inverse response, an integrator, a drift, two at once, or only spikes in the record), at
-//! three levels, with the answer key a teacher grades against. This module owns the
+//! inverse response, an integrator, a drift, two at once, or nothing structural but a flaw
+//! of the test: spikes, a coarse converter, a load disturbance, a clipped output, a process
+//! not at rest, an actuator that ramps or overshoots, a gain that differs step to step, a
+//! period too slow, a step too small, strongly coloured noise ([`test_flaw`])), at three
+//! levels, with the answer key a teacher grades against. This module owns the
 //! drawing and the key's facts; writing files and grading a class are the CLI's.
 //!
 //! A record is as messy as a real one: the input changes between two samples (the logger
 //! shows it at the next one), the operating point is far from zero (u0 ∈ [10, 60], y0 ∈
 //! [−50, 100]), the noise is 0.2–2 % of the step's effect, Gaussian or uniform, white or
 //! AR(1)-coloured, a third of the records are quantised, a third of the steady ones have a
-//! second change (back, or further the same way), and a fifth carry a flaw of the test
-//! beside the hidden effect: spikes, or a coarse converter (2–6 % of the effect). Levels: *clear* (the effect large, the noise 0.2–0.5 %), *moderate*
-//! (0.5–1 %), *subtle* (the effect small, the noise 1–2 %).
+//! second change (back, or further the same way), and a fifth of the structural ones carry
+//! a flaw of the test beside the hidden effect: spikes, or a coarse converter. Levels:
+//! *clear* (the effect or flaw large, the noise 0.2–0.5 %), *moderate* (0.5–1 %), *subtle*
+//! (the effect or flaw small, the noise 1–2 %).
 //!
 //! **A challenge Degrau cannot solve is not handed out.** Each draw is checked by running
 //! the diagnosis on the record exactly as `degrau diagnose record.csv` would
 //! ([`solve::solve`]); when its first structural cause is not one of the key's, its final
-//! structure is not the key's, a spike flaw is not named, or its gain misses the key's
+//! structure is not the key's, the key's flaw is not named, or its gain misses the key's
 //! tolerance, the challenge is drawn again from the next sub-seed ([`seed::stream`]:
 //! seed, index, attempt), deterministically. The rates the issue asks for are therefore
 //! met by construction on what is handed out; the raw rates (first draws) are measured by
@@ -35,21 +39,24 @@ pub mod flaws;
 pub mod logger;
 pub mod seed;
 pub mod solve;
+pub mod test_flaw;
 pub mod truth;
 
 use serde::{Deserialize, Serialize};
 
 use crate::diagnose::Cause;
-use crate::model::excitation::Excitation;
+use crate::model::excitation::{Excitation, InputStep};
+use crate::model::{Model, Param};
 use crate::random::Lcg;
 
 pub use logger::Record;
 pub use solve::{Grade, Solution, diagnosis, kp_within, solve};
-pub use truth::{Effect, Flaw, START, Truth};
+pub use test_flaw::{Flaw, Setting};
+pub use truth::{Effect, START, Truth};
 
 /// The generator's version, written in the key: the same seed gives the same files in
 /// every Degrau that keeps it.
-pub const GENERATOR_VERSION: u32 = 1;
+pub const GENERATOR_VERSION: u32 = 2;
 
 /// Draws of one challenge before giving up on its effect (never reached in the measured
 /// runs; then any effect is drawn).
@@ -116,23 +123,32 @@ impl Challenge {
         self.record.csv()
     }
 
-    /// Whether `solution` gets every part of this challenge right (the check before it is
-    /// handed out): the first structural cause among the key's (`none` when the key has no
-    /// structural cause), the final structure, the gain within tolerance, and the key's
-    /// flaw named among the test's causes.
-    pub fn solved_by(&self, solution: &Solution) -> bool {
+    /// Whether `solution` names this challenge's cause right first: its first structural
+    /// cause among the key's, or, when the key has none, no structural cause and the test's
+    /// flaw among the test's causes named.
+    pub fn names_cause(&self, solution: &Solution) -> bool {
         let causes = self.truth.effect.causes();
-        let cause = if causes.is_empty() {
-            solution.first_cause == Cause::None
+        if causes.is_empty() {
+            solution.first_cause == Cause::None && self.flaw_named(solution)
         } else {
             causes.contains(&solution.first_cause)
-        };
-        let flaw = self
-            .truth
+        }
+    }
+
+    /// Whether the key's flaw of the test (if any) is among the test's causes `solution`
+    /// names.
+    pub fn flaw_named(&self, solution: &Solution) -> bool {
+        self.truth
             .flaw
-            .is_none_or(|f| solution.test_causes.contains(&f.kind()));
-        cause
-            && flaw
+            .is_none_or(|f| solution.test_causes.contains(&f.kind()))
+    }
+
+    /// Whether `solution` gets every part of this challenge right (the check before it is
+    /// handed out): the cause ([`Self::names_cause`]), the key's flaw named, the final
+    /// structure, the gain within tolerance.
+    pub fn solved_by(&self, solution: &Solution) -> bool {
+        self.names_cause(solution)
+            && self.flaw_named(solution)
             && solution.structure == self.structure
             && kp_within(solution.kp, self.kp, self.kp_tolerance)
     }
@@ -191,24 +207,64 @@ fn checked(seed: u64, index: usize, level: Level, effect: Option<Effect>) -> Cha
     last.expect("at least one draw")
 }
 
-/// The record of `truth`: the process's answer to the changes at their true instants,
-/// sampled, with the logger's noise, spikes and resolution; the input as logged.
+/// The record of `truth`: the process's answer to the changes at their true instants (a
+/// second change with its own gain, an earlier change still answered, a load), sampled,
+/// with the logger's noise, spikes, range and resolution; the input as logged.
 fn sample(rng: &mut Lcg, truth: &Truth) -> Record {
     let t = logger::sample_times(truth.length, truth.ts);
-    let mut input = Excitation::step(truth.changes[0].t, truth.changes[0].du);
-    input.steps = truth.changes.clone();
-    let mut y = truth
-        .model
-        .simulate(&input, &t)
-        .unwrap_or_else(|_| vec![truth.model.get(crate::model::Param::Y0); t.len()]);
+    let mut y = answer(truth, &t);
     let e = flaws::noise(rng, t.len(), truth.noise_sd, truth.rho);
     y.iter_mut().zip(&e).for_each(|(v, e)| *v += e);
     if truth.flaw == Some(Flaw::Outliers) {
         flaws::outliers(rng, &mut y, Truth::outlier_share(), truth.noise_sd);
+    }
+    if let Some(Setting::Clip { fraction }) = truth.setting {
+        let dir = (truth.kp() * truth.changes[0].du).signum();
+        test_flaw::add_clip(&mut y, truth.model.get(Param::Y0), dir, fraction);
     }
     if let Some(q) = truth.quantum {
         flaws::quantise(&mut y, q);
     }
     let u = logger::logged_input(&t, truth.u0, &truth.changes);
     Record { t, u, y }
+}
+
+/// The process's noiseless answer at the instants `t`.
+fn answer(truth: &Truth, t: &[f64]) -> Vec<f64> {
+    let model = &truth.model;
+    let y0 = model.get(Param::Y0);
+    let simulate = |m: &Model, changes: &[InputStep]| {
+        let mut input = Excitation::step(changes[0].t, changes[0].du);
+        input.steps = changes.to_vec();
+        m.simulate(&input, t).unwrap_or_else(|_| vec![y0; t.len()])
+    };
+    // The same process from rest at zero, with gain `kp`.
+    let from_zero = |kp: f64| {
+        let mut v = model.values;
+        v.set(Param::Kp, kp);
+        v.set(Param::Y0, 0.0);
+        Model::new(model.structure, v)
+    };
+    let (own, later) = match truth.setting {
+        Some(Setting::SecondGain(_)) => truth.changes.split_at(1),
+        _ => (&truth.changes[..], &[][..]),
+    };
+    let mut y = simulate(model, own);
+    match truth.setting {
+        Some(Setting::SecondGain(k2)) if !later.is_empty() => {
+            let second = simulate(&from_zero(k2), later);
+            y.iter_mut().zip(&second).for_each(|(v, s)| *v += s);
+        }
+        Some(Setting::Earlier { before, du }) => {
+            // The earlier change's answer, still moving towards Kp·du: its decaying part.
+            let kp = truth.kp();
+            let earlier = simulate(&from_zero(kp), &[InputStep { t: -before, du }]);
+            y.iter_mut()
+                .zip(&earlier)
+                .for_each(|(v, p)| *v += p - kp * du);
+        }
+        Some(Setting::Load { at, size, ramp }) => test_flaw::add_load(t, &mut y, at, size, ramp),
+        _ => {}
+    }
+    y
 }
