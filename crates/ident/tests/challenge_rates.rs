@@ -14,7 +14,7 @@
 use std::collections::BTreeMap;
 
 use degrau_ident::challenge::{
-    Challenge, Effect, Level, Solution, challenge, draw, kp_within, seed, solve,
+    Challenge, Effect, Level, Solution, challenge, challenge_until, draw, kp_within, seed, solve,
 };
 
 /// Cases per level by default, three per effect (a debug build runs the three levels in
@@ -274,6 +274,22 @@ fn a_handed_out_challenge_is_one_degrau_solves() {
         other.structure = "P3DUZ".into();
         assert!(!c.solved_by(&other));
     }
+}
+
+/// A draw told to stop hands nothing out: at once, or at the draw after the stop (a
+/// student's Cancel ends the work within one diagnosis).
+#[test]
+fn a_stopped_draw_hands_nothing_out() {
+    assert_eq!(challenge_until(SEED, 0, Level::Clear, &|| true), None);
+    let asked = std::sync::atomic::AtomicUsize::new(0);
+    let stop = || asked.fetch_add(1, std::sync::atomic::Ordering::Relaxed) >= 1;
+    // A challenge handed out at its first draw: asked once, not stopped.
+    let (index, first) = (0..20)
+        .map(|i| (i, challenge(SEED, i, Level::Clear)))
+        .find(|(_, c)| c.attempt == 0)
+        .expect("a clear challenge solved at its first draw");
+    let handed = challenge_until(SEED, index, Level::Clear, &stop);
+    assert_eq!(handed, Some(first));
 }
 
 /// FNV-1a of a text: a fingerprint of a record's bytes.

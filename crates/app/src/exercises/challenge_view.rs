@@ -10,10 +10,10 @@ use degrau_ident::challenge::Level;
 use degrau_ident::diagnose::{Cause, DiagnoseReport};
 use degrau_ident::words::ident::{Naming, cause_name};
 use degrau_ident::words::report::{diagnose_text, step_lines};
-use degrau_ident::words::test_causes::section;
+use degrau_ident::words::test_causes::{cause_lines, section, test_cause_name};
 use degrau_words::{Lang, Localize};
 
-use super::challenges::{CAUSES, Current, Drawn, Field};
+use super::challenges::{ANSWERS, Current, Drawn, Field, Named};
 use super::session::{Progress, Saved, Session};
 use super::{ChallengeCommand as C, Command};
 use crate::look::Look;
@@ -122,25 +122,37 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look, out: &mut
     }
 }
 
-/// The cause's combo: the causes in words, `none` last.
+/// The cause's combo: the model's causes, then the test's, in words, `none` last.
 fn cause_field(ui: &mut Ui, current: &Current, lang: Lang, out: &mut Vec<Command>) {
-    let chosen = CAUSES.into_iter().find(|c| c.id() == current.cause);
-    let shown = chosen.map_or(T::ChooseCause.get(lang), |c| {
-        cause_name(c, Naming::Words, lang)
-    });
+    let chosen = Named::of_id(&current.cause);
+    let shown = chosen.map_or(T::ChooseCause.get(lang), |n| answer_name(n, lang));
     egui::ComboBox::from_label(T::Cause.get(lang))
         .selected_text(shown)
         .show_ui(ui, |ui| {
-            for c in CAUSES {
+            let mut group = None;
+            for n in ANSWERS {
+                let this = matches!(n, Named::Test(_));
+                if group.is_some_and(|g| g != this) || n == Named::Model(Cause::None) {
+                    ui.separator();
+                }
+                group = Some(this);
                 if ui
-                    .selectable_label(chosen == Some(c), cause_name(c, Naming::Words, lang))
+                    .selectable_label(chosen == Some(n), answer_name(n, lang))
                     .clicked()
-                    && chosen != Some(c)
+                    && chosen != Some(n)
                 {
-                    out.push(Command::Challenge(C::Type(Field::Cause, c.id().into())));
+                    out.push(Command::Challenge(C::Type(Field::Cause, n.id().into())));
                 }
             }
         });
+}
+
+/// A cause a student can name, in a few words.
+pub fn answer_name(n: Named, lang: Lang) -> &'static str {
+    match n {
+        Named::Model(c) => cause_name(c, Naming::Words, lang),
+        Named::Test(k) => test_cause_name(k, Naming::Words, lang),
+    }
 }
 
 /// A labelled text field; a change is a [`C::Type`].
@@ -207,23 +219,28 @@ fn after_check(ui: &mut Ui, drawn: &Drawn, shown: bool, look: &Look, out: &mut V
 }
 
 /// The evidence the diagnosis gives for the key's causes: each step naming one (its cause
-/// and evidence, as the Identify mode shows a step), and what the test got wrong when the
-/// key names no structural cause.
+/// and evidence, as the Identify mode shows a step), and each flaw of the test the key
+/// names (what the test got wrong, with what Degrau did about it); every test cause when
+/// the key names nothing.
 pub fn evidence(report: &DiagnoseReport, causes: &[String], lang: Lang) -> Vec<String> {
-    let named = |c: Cause| causes.iter().any(|k| k == c.id());
+    let named = |id: &str| causes.iter().any(|k| k == id);
     let mut lines: Vec<String> = report
         .steps
         .iter()
-        .filter(|s| !s.removed && (named(s.cause) || s.paired.is_some_and(named)))
+        .filter(|s| !s.removed && (named(s.cause.id()) || s.paired.is_some_and(|p| named(p.id()))))
         .flat_map(|s| {
             let [cause, evidence, _] = step_lines(s, Naming::Words, lang);
             [cause, evidence]
         })
         .collect();
+    for c in report.test_causes.iter().filter(|c| named(c.kind.id())) {
+        let [name, evidence, done, _] = cause_lines(c, Naming::Words, lang);
+        lines.extend([name, evidence, done]);
+    }
     if lines.is_empty() {
         lines.push(T::NoEvidence.get(lang).to_string());
     }
-    if report.steps.is_empty() || causes.iter().any(|c| c == "none") {
+    if named(Cause::None.id()) {
         lines.extend(section(&report.test_causes, lang));
     }
     lines

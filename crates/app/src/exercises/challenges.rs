@@ -7,23 +7,58 @@
 
 use serde::{Deserialize, Serialize};
 
-use degrau_ident::challenge::{Challenge, Grade, Level, challenge, diagnosis};
+use degrau_ident::challenge::{Challenge, Grade, Level, challenge_until, diagnosis};
+use degrau_ident::diagnose::test_causes::TestCauseKind;
 use degrau_ident::diagnose::{Cause, DiagnoseReport};
 
 use crate::field::{FieldError, parse_number};
 use crate::job::{Job, Waker};
 
-/// The causes a student can name, in the combo's order (`none` last).
-pub const CAUSES: [Cause; 9] = [
-    Cause::DeadTime,
-    Cause::ExtraPole,
-    Cause::Oscillation,
-    Cause::Zero,
-    Cause::InverseResponse,
-    Cause::Integrator,
-    Cause::Drift,
-    Cause::Offset,
-    Cause::None,
+/// A cause a student can name: what the model lacks, or what the test got wrong.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Named {
+    Model(Cause),
+    Test(TestCauseKind),
+}
+
+impl Named {
+    /// Its identifier, as the key and `degrau diagnose` write it.
+    pub fn id(self) -> &'static str {
+        match self {
+            Named::Model(c) => c.id(),
+            Named::Test(k) => k.id(),
+        }
+    }
+
+    /// The one of `id`, if any.
+    pub fn of_id(id: &str) -> Option<Named> {
+        ANSWERS.into_iter().find(|n| n.id() == id)
+    }
+}
+
+/// The causes a student can name, in the combo's order: the model's, the test's, `none`
+/// last.
+pub const ANSWERS: [Named; 20] = [
+    Named::Model(Cause::DeadTime),
+    Named::Model(Cause::ExtraPole),
+    Named::Model(Cause::Oscillation),
+    Named::Model(Cause::Zero),
+    Named::Model(Cause::InverseResponse),
+    Named::Model(Cause::Integrator),
+    Named::Model(Cause::Drift),
+    Named::Model(Cause::Offset),
+    Named::Test(TestCauseKind::Outliers),
+    Named::Test(TestCauseKind::Quantisation),
+    Named::Test(TestCauseKind::Disturbance),
+    Named::Test(TestCauseKind::Saturation),
+    Named::Test(TestCauseKind::NotAtRest),
+    Named::Test(TestCauseKind::ImperfectStep),
+    Named::Test(TestCauseKind::Nonlinearity),
+    Named::Test(TestCauseKind::Sampling),
+    Named::Test(TestCauseKind::SmallStep),
+    Named::Test(TestCauseKind::ColouredNoise),
+    Named::Test(TestCauseKind::ClosedLoop),
+    Named::Model(Cause::None),
 ];
 
 /// What the Challenges keep between runs (the state file's `exercises.challenges`).
@@ -101,7 +136,7 @@ pub struct Checked {
 /// What the Challenges hold while the app runs.
 #[derive(Default)]
 pub struct Board {
-    job: Option<Job<(), Drawn>>,
+    job: Option<Job<(), Option<Drawn>>>,
     waker: Option<Waker>,
     pub drawn: Option<Drawn>,
     pub checked: Option<Checked>,
@@ -147,6 +182,9 @@ impl Board {
             return false;
         };
         self.job = None;
+        let Some(drawn) = drawn else {
+            return false;
+        };
         self.drawn = Some(drawn);
         self.checked = None;
         self.diagnosis_shown = false;
@@ -182,7 +220,9 @@ impl Board {
                 self.draw(seed, index, kept.level);
             }
             C::Cancel => {
-                self.job = None;
+                if let Some(job) = self.job.take() {
+                    job.cancel();
+                }
                 kept.current = None;
             }
             C::Type(field, text) => {
@@ -232,17 +272,21 @@ impl Board {
         self.drawn.as_ref().map(|d| d.challenge.csv())
     }
 
+    /// Draws the challenge off the UI thread; a cancelled job ends at its next draw and
+    /// hands back nothing.
     fn draw(&mut self, seed: u64, index: usize, level: Level) {
-        self.job = Some(Job::spawn(self.waker.clone(), move |_| {
-            let challenge = challenge(seed, index, level);
-            let report = diagnosis(&challenge.csv());
-            Drawn {
+        self.job = Some(Job::spawn(self.waker.clone(), move |ctx| {
+            let challenge = challenge_until(seed, index, level, &|| ctx.cancelled())?;
+            let report = (!ctx.cancelled())
+                .then(|| diagnosis(&challenge.csv()))
+                .flatten();
+            Some(Drawn {
                 seed,
                 index,
                 level,
                 challenge,
                 report,
-            }
+            })
         }));
     }
 }

@@ -251,7 +251,7 @@ pub fn progress(part: &Part, kept: &Saved) -> Progress {
 pub fn prune(kept: &mut Saved, sheet: &[Exercise]) {
     if let Some(c) = kept.challenges.current.as_mut()
         && !c.cause.is_empty()
-        && !super::challenges::CAUSES.iter().any(|k| k.id() == c.cause)
+        && super::challenges::Named::of_id(&c.cause).is_none()
     {
         c.cause.clear();
         c.checked = false;

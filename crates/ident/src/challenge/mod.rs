@@ -180,12 +180,23 @@ pub fn draw(
 
 /// The challenge `index` of `seed` handed out: the first draw Degrau solves.
 pub fn challenge(seed: u64, index: usize, level: Level) -> Challenge {
-    checked(seed, index, level, None)
+    checked(seed, index, level, None, &|| false).expect("a draw never stopped")
+}
+
+/// [`challenge`], given up (`None`) at the next draw once `stop` says so: a student's
+/// Cancel ends the work within one diagnosis.
+pub fn challenge_until(
+    seed: u64,
+    index: usize,
+    level: Level,
+    stop: &dyn Fn() -> bool,
+) -> Option<Challenge> {
+    checked(seed, index, level, None, stop)
 }
 
 /// [`challenge`] with its effect given (the rates per effect).
 pub fn challenge_of(effect: Effect, seed: u64, index: usize, level: Level) -> Challenge {
-    checked(seed, index, level, Some(effect))
+    checked(seed, index, level, Some(effect), &|| false).expect("a draw never stopped")
 }
 
 /// `count` challenges of `seed` (indices 0..count), drawn over the machine's cores.
@@ -194,17 +205,28 @@ pub fn challenges(seed: u64, count: usize, level: Level) -> Vec<Challenge> {
     crate::parallel::map(&indices, |&i| challenge(seed, i, level))
 }
 
-fn checked(seed: u64, index: usize, level: Level, effect: Option<Effect>) -> Challenge {
+/// The first draw Degrau solves (after [`MAX_ATTEMPTS`] of `effect`, any effect; the last
+/// draw if none is solved), or `None` when `stop` said so before a draw.
+fn checked(
+    seed: u64,
+    index: usize,
+    level: Level,
+    effect: Option<Effect>,
+    stop: &dyn Fn() -> bool,
+) -> Option<Challenge> {
     let mut last = None;
     for attempt in 0..2 * MAX_ATTEMPTS {
+        if stop() {
+            return None;
+        }
         let fixed = effect.filter(|_| attempt < MAX_ATTEMPTS);
         let c = draw(seed, index, attempt, level, fixed);
         if solve(&c.csv()).is_some_and(|s| c.solved_by(&s)) {
-            return c;
+            return Some(c);
         }
         last = Some(c);
     }
-    last.expect("at least one draw")
+    last
 }
 
 /// The record of `truth`: the process's answer to the changes at their true instants (a
