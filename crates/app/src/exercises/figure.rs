@@ -112,7 +112,15 @@ pub fn scene(part: &Part, lang: Lang) -> Option<Scene> {
     let read = |key: &str| readings.iter().find(|r| r.key == key);
     let mut marks = Vec::new();
     for r in readings {
-        marks.extend(marks_of(r, &read, &response, final_value, output, t_end, lang));
+        marks.extend(marks_of(
+            r,
+            &read,
+            &response,
+            final_value,
+            output,
+            t_end,
+            lang,
+        ));
     }
     let ys = curve
         .iter()
@@ -411,7 +419,11 @@ mod tests {
             panic!("the overshoot marked: {:?}", s.marks);
         };
         assert_eq!((t, to), (tp, y));
-        assert!(close(to - from, reading(&p, "x_over"), 1e-6), "{}", to - from);
+        assert!(
+            close(to - from, reading(&p, "x_over"), 1e-6),
+            "{}",
+            to - from
+        );
         // x(t) is 10 N times the curve: x(∞) = 0.03 m.
         assert!(close(from, 0.03, 1e-9));
         let texts: Vec<&str> = s.marks.iter().map(|m| m.label().text.as_str()).collect();

@@ -4,7 +4,9 @@
 //! does not zoom, pan or take the page's scrolling; hovering reads the coordinates.
 
 use eframe::egui::{self, Align2, FontId, RichText, Ui};
-use egui_plot::{Arrows, HoverPosition, Line, LineStyle, Plot, PlotBounds, PlotPoint, Points, Text};
+use egui_plot::{
+    Arrows, HoverPosition, Line, LineStyle, Plot, PlotBounds, PlotPoint, Points, Text,
+};
 
 use degrau_exercise::Part;
 
@@ -82,7 +84,13 @@ fn plot(ui: &mut Ui, id: &str, scene: &Scene, look: &Look) {
 }
 
 /// A dashed guide from `from` to `to` in the markers' colour.
-fn guide(plot: &mut egui_plot::PlotUi<'_>, name: String, from: [f64; 2], to: [f64; 2], look: &Look) {
+fn guide(
+    plot: &mut egui_plot::PlotUi<'_>,
+    name: String,
+    from: [f64; 2],
+    to: [f64; 2],
+    look: &Look,
+) {
     plot.line(
         Line::new(name, vec![from, to])
             .color(look.palette.marker)
@@ -98,7 +106,13 @@ fn draw_mark(plot: &mut egui_plot::PlotUi<'_>, mark: &Mark, scene: &Scene, look:
     let name = label.text.clone();
     match *mark {
         Mark::Instant { t, y, .. } => {
-            guide(plot, format!("{name} |"), [t, scene.y_range.0], [t, y], look);
+            guide(
+                plot,
+                format!("{name} |"),
+                [t, scene.y_range.0],
+                [t, y],
+                look,
+            );
             plot.points(
                 Points::new(format!("{name} •"), vec![[t, y]])
                     .color(color)
@@ -114,9 +128,13 @@ fn draw_mark(plot: &mut egui_plot::PlotUi<'_>, mark: &Mark, scene: &Scene, look:
         }
         Mark::Gap { t, from, to, .. } => {
             plot.arrows(
-                Arrows::new(format!("{name} ↕"), vec![[t, from], [t, to]], vec![[t, to], [t, from]])
-                    .color(color)
-                    .tip_length(6.0),
+                Arrows::new(
+                    format!("{name} ↕"),
+                    vec![[t, from], [t, to]],
+                    vec![[t, to], [t, from]],
+                )
+                .color(color)
+                .tip_length(6.0),
             );
         }
     }
