@@ -5,7 +5,8 @@
 //! it marked with dashed guides from the axes and labelled with its value in the student's
 //! language. No transfer function is shown: the figure must not give the answer away.
 //!
-//! Pure: no egui here; [`super::figure_view`] draws the scene.
+//! Pure: no egui here; [`super::figure_view`] draws the scene, built again each frame the
+//! part is shown (a few hundred samples of a second-order response: microseconds).
 
 use degrau_exercise::text::num;
 use degrau_exercise::{Lang, Part, Reading, System, Unit};
