@@ -438,3 +438,148 @@ fn a_figures_readings_are_listed_and_the_list_opens_a_part() {
         assert!(shows(&h, line.trim_end()), "{line:?} not listed");
     }
 }
+
+/// The painted texts of the last frame reading exactly `text`, with where they are.
+fn painted(h: &Harness<'_, DegrauApp>, text: &str) -> Vec<egui::Rect> {
+    kit::painted_texts(h)
+        .into_iter()
+        .filter(|(t, _)| t == text)
+        .map(|(_, r)| r)
+        .collect()
+}
+
+/// Exercise 4 is read off a figure: its part draws the figure (the plot names itself) with
+/// each reading marked and labelled on it in the student's language (a decimal comma in
+/// Portuguese), and nothing on screen gives the answer away (no G(s), no ωn or K).
+#[test]
+fn a_figure_part_draws_its_figure_with_the_readings_marked() {
+    use degrau::app::exercises::figure;
+    let sheet = all();
+    let part = degrau_exercise::find_part(&sheet, "4").expect("4");
+    for lang in Lang::ALL {
+        let h = exercises_app("4", lang);
+        let canvas = h.get_by_label(T::FigureName.get(lang)).rect();
+        assert!(
+            canvas.width() > 400.0 && canvas.height() >= 220.0,
+            "{lang:?}: the figure at {canvas:?}"
+        );
+        assert!(shows(&h, T::FigureTitle.get(lang)));
+        let scene = figure::scene(part, lang).expect("a figure");
+        assert_eq!(scene.marks.len(), 3, "t_p, y(t_p) and y(∞)");
+        for m in &scene.marks {
+            let text = &m.label().text;
+            let at = painted(&h, text);
+            assert!(
+                at.iter().any(|r| canvas.expand(1.0).contains_rect(*r)),
+                "{lang:?}: {text:?} not on the figure ({at:?}, figure {canvas:?})"
+            );
+        }
+        let want = match lang {
+            Lang::Pt => ["t_p = 0,0551 s", "y(t_p) = 0,944", "y(∞) = 0,75"],
+            _ => ["t_p = 0.0551 s", "y(t_p) = 0.944", "y(∞) = 0.75"],
+        };
+        for text in want {
+            assert!(!painted(&h, text).is_empty(), "{lang:?}: {text:?}");
+        }
+        // The answer stays hidden: not the curve's transfer function, nor ωn, nor K.
+        let degrau_exercise::System::Figure { curve, .. } = &part.system else {
+            panic!("4 is read off a figure");
+        };
+        let g = degrau_exercise::text::tf(lang, curve);
+        let hidden: Vec<String> = ["4.wn", "4.K"]
+            .iter()
+            .map(|id| {
+                let q = part.question(id).expect("question");
+                let Expected::Number { main, .. } = &q.expected else {
+                    panic!("{id} is a number");
+                };
+                degrau_exercise::text::num(lang, main.value)
+            })
+            .collect();
+        for (text, _) in kit::painted_texts(&h) {
+            assert!(!text.contains(g.as_str()), "{lang:?}: {text:?} shows G(s)");
+            for answer in &hidden {
+                assert!(!text.contains(answer.as_str()), "{lang:?}: {text:?}");
+            }
+        }
+    }
+}
+
+/// Exercise 4 at every classroom size, zoom and language: the figure keeps 220 points, its
+/// labels stay whole and apart, the readings and Check are there; at 1000×650 asked at 1.6×
+/// (drawn at 1×, the size the window holds) the readings and Check scroll into view.
+#[test]
+fn a_figure_part_fits_every_classroom_size() {
+    let sheet = all();
+    let part = degrau_exercise::find_part(&sheet, "4").expect("4").clone();
+    let degrau_exercise::System::Figure { readings, .. } = &part.system else {
+        panic!("4 is read off a figure");
+    };
+    let lines = |lang: Lang| -> Vec<String> {
+        readings
+            .iter()
+            .map(|r| {
+                let value = degrau_exercise::text::num(lang, r.value);
+                format!("• {} = {value} {}", r.label.get(lang), r.unit.symbol())
+                    .trim_end()
+                    .to_string()
+            })
+            .collect()
+    };
+    let mut h = exercises_app("4", Lang::En);
+    for q in &part.questions {
+        type_into(&mut h, q, Lang::En, &typed_answer(q, Lang::En));
+    }
+    let problems =
+        crate::app_classroom::problems_everywhere_with(&mut h, "Exercise 4", 1, |h, lang| {
+            let mut missing = Vec::new();
+            for line in lines(lang) {
+                if !shows(h, &line) {
+                    missing.push(format!("{line:?} is not listed"));
+                }
+            }
+            if !shows(h, T::Check.get(lang)) {
+                missing.push("no Check button".into());
+            }
+            missing
+        });
+    assert!(
+        problems.is_empty(),
+        "{} layout problems:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+    for lang in Lang::ALL {
+        h.state_mut().saved.scale = 1.6;
+        h.state_mut().saved.lang = lang;
+        // The harness takes points: pixels over the zoom drawn at, until it holds still.
+        for _ in 0..4 {
+            let drawn = h.ctx.zoom_factor();
+            h.set_size(egui::vec2(1000.0, 650.0) / drawn);
+            h.run_steps(3);
+        }
+        assert!(
+            (h.ctx.zoom_factor() - 1.0).abs() < 1e-3,
+            "1000×650 holds 1×"
+        );
+        let window = h.ctx.content_rect();
+        let mut names = lines(lang);
+        names.push(T::Check.get(lang).to_string());
+        for name in names {
+            h.get_by_label(&name).scroll_to_me();
+            h.run_steps(4);
+            let r = h.get_by_label(&name).rect();
+            assert!(window.contains_rect(r), "{lang:?}: {name:?} at {r:?}");
+        }
+        h.get_by_label(T::Check.get(lang)).click_accesskit();
+        h.run_steps(2);
+        assert!(
+            part.questions.iter().all(|q| h
+                .state()
+                .exercises
+                .verdict(&q.id)
+                .is_some_and(|v| v.right)),
+            "{lang:?}: Check checked the part"
+        );
+    }
+}

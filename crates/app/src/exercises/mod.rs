@@ -10,7 +10,8 @@
 //!
 //! The mode is a [`Session`] (the sheet, the last Check's verdicts; no egui) over what it
 //! keeps ([`Saved`], in the app's state file), and views that read them and return
-//! [`Command`]s: [`list`] (the left side), [`part_view`] (the centre), with [`answers`] (the
+//! [`Command`]s: [`list`] (the left side), [`part_view`] (the centre), with [`figure_view`]
+//! (the figure a part is read off, laid out by the pure [`figure`]), [`answers`] (the
 //! fields and their verdicts) and [`solution_view`]. The app applies each command with
 //! [`Session::apply`] once per frame, after the views.
 
@@ -18,6 +19,8 @@ pub mod answers;
 pub mod challenge_view;
 pub mod challenges;
 pub mod commands;
+pub mod figure;
+pub mod figure_view;
 pub mod list;
 pub mod load;
 pub mod part_view;

@@ -1,13 +1,14 @@
 //! The centre of the Exercises mode: the part open, its statement (the exercise's and the
-//! part's, in the student's language), the button that loads its system into the Design
-//! mode, the answer fields, Check and the worked solution.
+//! part's, in the student's language), the figure it is read off and the readings taken off
+//! it (or its specs), the button that loads its system into the Design mode, the answer
+//! fields, Check and the worked solution.
 
 use eframe::egui::{self, RichText, Ui};
 
 use degrau_exercise::{Exercise, Part, System};
 
 use super::session::{Saved, Session};
-use super::{Command, answers, solution_view};
+use super::{Command, answers, figure_view, solution_view};
 use crate::look::Look;
 use crate::words::exercises::Exercises as T;
 
@@ -29,6 +30,7 @@ pub fn show(
         return;
     };
     statement(ui, exercise, part, look);
+    figure_view::show(ui, part, look);
     readings(ui, part, look);
     open_button(ui, session, part, look, out);
     ui.separator();

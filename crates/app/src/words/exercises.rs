@@ -26,9 +26,14 @@ degrau_words::phrases! {
         ),
         Answers => ("Your answers", "As suas respostas"),
         FigureReadings => (
-            "The sheet's figure, as read (Open shows its step response):",
-            "A figura da folha, tal como lida (Abrir mostra a sua resposta ao degrau):"
+            "The readings the sheet takes off its figure:",
+            "As leituras que a folha retira da figura:"
         ),
+        FigureTitle => (
+            "The sheet's figure, drawn from its readings",
+            "A figura da folha, desenhada a partir das leituras"
+        ),
+        FigureName => ("the sheet's figure", "a figura da folha"),
         Specs => ("The specifications:", "As especificações:"),
         Check => ("Check", "Verificar"),
         CheckHelp => (
