@@ -9,8 +9,8 @@
 
 use super::{
     FittedRecord, TestCause, closed_loop::closed_loop, coloured_noise, disturbance, fit_held,
-    imperfect_step, nonlinearity, not_at_rest, outliers, quantisation, sampling, saturation,
-    small_step, steps_held,
+    imperfect_step, nonlinearity, not_at_rest, outliers, own_fit_held, quantisation, sampling,
+    saturation, small_step, steps_held,
 };
 use crate::diagnose::drift_evidence::{read_drift, read_drift_after};
 use crate::diagnose::extension::{Extensions, StartExtensions};
@@ -212,16 +212,17 @@ fn reported(data: &FitData, last: &FitReport) -> Vec<TestCause> {
 /// `fitted`'s process model, against `fitted` itself; the cause with the per-step fits.
 fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, Vec<StepFit>)> {
     let changes = data.input.changes.len();
-    if !(2..=MAX_PER_STEP).contains(&changes) || !steps_held(data, &fitted.model) {
+    if !(2..=MAX_PER_STEP).contains(&changes) {
         return None;
     }
     let options = FitOptions {
         starts: 1,
         ..FitOptions::default()
     };
-    let mut structure = fitted.model.structure;
-    structure.transient = false;
-    let fits = per_step_fits(data, structure, &options);
+    let fits = own_fits(data, fitted, &options);
+    if !held_for_comparison(data, fitted, &fits) {
+        return None;
+    }
     // Judged on intervals as honest as the model's fit: a structure about to be extended
     // leaves correlated residuals, and its white-noise intervals would call a linear
     // record's steps different. The fits returned keep their own intervals (a model started
@@ -243,6 +244,62 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
         return None;
     }
     Some((cause, fits))
+}
+
+/// Each change of `data` fitted on its own window with `fitted`'s process model
+/// ([`per_step_fits`]), the first with an initial transient when `fitted` has one. A
+/// record found not at rest was moving before its first change, but the first window
+/// holds only the last third of that stretch, where the motion may be too small for the
+/// window's own rest test: fitted from rest, its gain would take the earlier response's
+/// tail for its own, and differ from the others' as a nonlinearity's would.
+fn own_fits(data: &FitData, fitted: &FitReport, options: &FitOptions) -> Vec<StepFit> {
+    let mut structure = fitted.model.structure;
+    let moving = structure.transient;
+    structure.transient = false;
+    let mut fits = per_step_fits(data, structure, options);
+    if moving && let Some(first) = fits.first_mut().filter(|f| !f.not_at_rest) {
+        structure.transient = true;
+        if let Some(refit) = first_from_motion(data, structure, options) {
+            *first = refit;
+        }
+    }
+    fits
+}
+
+/// The first change of `data` fitted on its own window ([`window_data`]) with an initial
+/// transient, as [`per_step_fits`] fits a window found not at rest: Y0 free, the step
+/// instant's lead when the record has one.
+fn first_from_motion(
+    data: &FitData,
+    structure: Structure,
+    options: &FitOptions,
+) -> Option<StepFit> {
+    let window = window_data(data, 0)?;
+    let s = Structure {
+        free_offset: true,
+        drift: false,
+        lead: window.input.lead_range > 0.0,
+        transient: true,
+        ..structure
+    };
+    let guess = auto_guess(&window, s, None);
+    let span = (*window.times.first()?, *window.times.last()?);
+    Some(StepFit {
+        change: *data.input.changes.first()?,
+        window: span,
+        not_at_rest: true,
+        fit: fit(&window, s, guess, options, &mut ()),
+    })
+}
+
+/// Whether at least two changes of `data` were held long enough for their gains to be
+/// compared: by the joint fit's time scales ([`steps_held`]), or, when the joint fit says
+/// not, by the changes' own fits, each window showing its level within its own intervals
+/// ([`own_fit_held`]). The joint fit alone cannot decide it: a linear model through
+/// changes whose gains differ bends its lags to compromise between their levels, and the
+/// very nonlinearity to be named would hide itself behind a lag no change shows.
+fn held_for_comparison(data: &FitData, fitted: &FitReport, fits: &[StepFit]) -> bool {
+    steps_held(data, &fitted.model) || fits.iter().filter(|f| own_fit_held(f)).count() >= 2
 }
 
 /// Whether the motion before the first change is a drift rather than a test not at rest.
@@ -311,9 +368,7 @@ fn drift_explains_gains(data: &FitData, fitted: &FitReport, options: &FitOptions
     }
     let mut joint = with_drift;
     joint.model.structure.drift = false;
-    let mut structure = joint.model.structure;
-    structure.transient = false;
-    let mut fits = per_step_fits(&detrended, structure, options);
+    let mut fits = own_fits(&detrended, &joint, options);
     widen_steps_for_colour(&detrended, &mut fits);
     let held: Vec<StepFit> = fits
         .into_iter()

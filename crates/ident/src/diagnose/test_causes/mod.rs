@@ -37,7 +37,9 @@ mod small_step;
 mod testing;
 
 pub use imperfect_step::{imperfect_step, input_at};
-pub use nonlinearity::{HELD_LAGS, change_held, fit_held, nonlinearity, step_gains, steps_held};
+pub use nonlinearity::{
+    HELD_LAGS, change_held, fit_held, nonlinearity, own_fit_held, step_gains, steps_held,
+};
 pub use quantisation::{COARSE_SHARE, quantisation, resolution};
 pub use sampling::{TimeScales, sampling, sampling_checks, time_constants};
 pub use small_step::{SMALL_STEP_RATIO, small_step};
