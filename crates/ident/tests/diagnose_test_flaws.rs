@@ -4,7 +4,7 @@
 
 use degrau_ident::challenge::solve::diagnosis;
 use degrau_ident::diagnose::DiagnoseReport;
-use degrau_ident::diagnose::test_causes::TestCauseKind;
+use degrau_ident::diagnose::test_causes::{TestCauseKind, TestEvidence};
 use degrau_ident::model::Param;
 use degrau_ident::random::Lcg;
 
@@ -98,4 +98,33 @@ fn a_test_not_at_rest_is_no_nonlinearity_when_its_first_window_is_short() {
     assert_eq!(r.steps.first().map(|s| s.cause), None, "{:?}", r.steps);
     let kp = r.final_fit.model.get(Param::Kp);
     assert!((kp + 3.75).abs() < 0.05 * 3.75, "Kp {kp}");
+}
+
+#[test]
+fn a_motion_small_against_the_range_is_not_at_rest_when_the_transient_explains_it() {
+    // τ 19 s, an earlier change of a quarter of the step 17 s before the record, the step
+    // 15 s in: the output falls by under 5 % of the record's range before it, four times
+    // the noise; left to the model's loop, it bought a zero.
+    let changes = [(15.05, -9.38, 1.637)];
+    let csv = p1_not_at_rest(19.0, (17.0, -2.2), &changes, (0.1, 1900), 0.135);
+    let r = diagnosis(&csv).expect("the record is diagnosed");
+    let motion = r.test_causes.iter().find_map(|c| match &c.evidence {
+        TestEvidence::NotAtRest { motion } => Some(*motion),
+        _ => None,
+    });
+    let motion = motion.unwrap_or_else(|| panic!("not named: {:?}", r.test_causes));
+    let ys: Vec<f64> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(2).unwrap().parse().unwrap())
+        .collect();
+    let range = ys.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+        - ys.iter().cloned().fold(f64::INFINITY, f64::min);
+    assert!(
+        motion.change.abs() < 0.05 * range,
+        "{motion:?} range {range}"
+    );
+    assert_eq!(r.steps.first().map(|s| s.cause), None, "{:?}", r.steps);
+    let kp = r.final_fit.model.get(Param::Kp);
+    assert!((kp - 1.637).abs() < 0.05 * 1.637, "Kp {kp}");
 }

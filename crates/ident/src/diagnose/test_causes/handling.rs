@@ -9,16 +9,17 @@
 
 use super::{
     FittedRecord, TestCause, closed_loop::closed_loop, coloured_noise, disturbance, fit_held,
-    imperfect_step, nonlinearity, not_at_rest, outliers, own_fit_held, quantisation, sampling,
-    saturation, small_step, steps_held,
+    imperfect_step, nonlinearity, not_at_rest, not_at_rest_with, outliers, own_fit_held,
+    quantisation, sampling, saturation, small_step, steps_held, time_constants,
 };
 use crate::diagnose::drift_evidence::{read_drift, read_drift_after};
 use crate::diagnose::extension::{Extensions, StartExtensions};
-use crate::diagnose::judge::bic;
+use crate::diagnose::judge::{BIC_THRESHOLD, bic};
 use crate::diagnose::per_step::{
     MAX_PER_STEP, StepFit, per_step_fits, widen_steps_for_colour, window_data,
 };
 use crate::fit::guess::auto_guess;
+use crate::fit::rest::{Motion, motion_within_range};
 use crate::fit::robust::{RobustFit, robust_fit};
 use crate::fit::{FitData, FitOptions, FitReport, fit, within_span};
 use crate::model::{Param, Structure};
@@ -71,6 +72,10 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
                 current = r;
             }
         }
+    } else if let Some((cause, transient)) = small_motion_that_matters(data, &current, fit_options)
+    {
+        causes.push(cause);
+        current = transient;
     }
     causes.extend(FittedRecord::new(data, &current).and_then(|r| closed_loop(&r)));
     let mut kept = Kept {
@@ -133,6 +138,70 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
 fn within_record(causes: &mut [TestCause], times: &[f64]) {
     for c in causes {
         c.interval = c.interval.and_then(|i| within_span(times, i));
+    }
+}
+
+/// `not_at_rest` for a motion before the first change beyond the noise but small against
+/// the record's range ([`motion_within_range`]), when it matters to the fit: the start
+/// structure with the initial transient pays for its parameters by the BIC threshold
+/// ([`BIC_THRESHOLD`]) on the whole record and on the samples before the change alone
+/// ([`explains_before`]), and a drift does not explain the motion instead
+/// ([`drift_explains_motion`]). Without it, the earlier response's tail is left for the
+/// model's loop, which bends a zero or a dead time to the start of the response; with it,
+/// the transient models it as the free response of the same poles. A motion that changes
+/// nothing in the fit is not worth the words.
+fn small_motion_that_matters(
+    data: &FitData,
+    current: &FitReport,
+    options: &FitOptions,
+) -> Option<(TestCause, FitReport)> {
+    let motion = motion_within_range(data)?;
+    let transient = with_transient(data, current, options)?;
+    let pays = bic(&transient) < bic(current) - BIC_THRESHOLD;
+    (pays
+        && seen_over_half_life(&motion, &transient)
+        && explains_before(data, current, &transient, motion.samples)
+        && !drift_explains_motion(data, current, Some(&transient), options))
+    .then(|| (not_at_rest_with(motion), transient))
+}
+
+/// Whether the motion before the change was seen for at least the half-life of the
+/// transient's slowest pole (ln 2 of its time constant): most of what the transient
+/// attributes to the earlier response is then in the record, not extrapolated from it. On
+/// a stretch short against the lag, the free response is a straight line whose slope
+/// alone fixes a transient many times the motion seen (ten samples of a heater moving by
+/// 0.4 before its step, read with its two-minute lag, made a transient of 5.5 that traded
+/// with the gain): a line there is as much a drift, or the noise's wander.
+fn seen_over_half_life(motion: &Motion, transient: &FitReport) -> bool {
+    let span = motion.span.1 - motion.span.0;
+    time_constants(&transient.model)
+        .first()
+        .is_some_and(|&slowest| span >= std::f64::consts::LN_2 * slowest)
+}
+
+/// Whether `transient` explains the first `samples` samples (those before the first
+/// change) better than `current` by the BIC threshold, n·ln(SSE ratio) > [`BIC_THRESHOLD`]
+/// on them alone. The initial transient is the free response of the model's poles over
+/// the whole record, and with Y0 free it can also bend the response after the change (and
+/// trade with the gain: a record of ten samples before its step, read as a transient of the
+/// heater's two-minute lag, lost a third of its gain); only the samples before the change
+/// are what a test not at rest, and nothing else, explains.
+fn explains_before(
+    data: &FitData,
+    current: &FitReport,
+    transient: &FitReport,
+    samples: usize,
+) -> bool {
+    let sse = |r: &FitReport| {
+        r.residuals(data)
+            .ok()
+            .map(|e| e.iter().take(samples).map(|v| v * v).sum::<f64>())
+    };
+    match (sse(current), sse(transient)) {
+        (Some(before), Some(after)) if after > 0.0 => {
+            samples as f64 * (before / after).ln() > BIC_THRESHOLD
+        }
+        _ => false,
     }
 }
 

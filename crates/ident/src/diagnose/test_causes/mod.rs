@@ -306,12 +306,17 @@ pub fn not_at_rest(data: &FitData) -> Option<TestCause> {
     let Rest::NotAtRest(motion) = rest_before(data) else {
         return None;
     };
-    Some(TestCause {
+    Some(not_at_rest_with(motion))
+}
+
+/// `not_at_rest` with the motion it was found by.
+pub fn not_at_rest_with(motion: Motion) -> TestCause {
+    TestCause {
         kind: TestCauseKind::NotAtRest,
         interval: Some(motion.span),
         evidence: TestEvidence::NotAtRest { motion },
         handling: Handling::InitialTransient,
-    })
+    }
 }
 
 /// A fit on its data, as the detectors that read a model read it: the residuals
