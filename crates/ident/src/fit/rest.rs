@@ -57,16 +57,17 @@ pub fn rest_before(data: &FitData) -> Rest {
     }
 }
 
-/// The motion before the first change when it is beyond the noise (six standard errors of
-/// itself, widened for the residuals' correlation about the line as for an AR(1), and four
-/// white-noise deviations) but within the 5 % of the record's range [`rest_before`] also
-/// asks of it: too small to call the test not at rest on its own account, which the caller
-/// may still do when a model shows that it matters to the fit. Its `threshold` is the
-/// noise's. The widening matters here, without the range's floor: strongly coloured noise
-/// wanders, and a stretch of it looks like a line many white-noise errors long.
+/// The motion before the first change when it is significant (beyond six standard errors
+/// of itself, widened for the residuals' correlation about the line as for an AR(1)) but
+/// not beyond the floors [`rest_before`] also asks of it (four white-noise deviations, 5 %
+/// of the record's range): too small to call the test not at rest on its own account,
+/// which the caller may still do when a model shows that it matters to the fit. Its
+/// `threshold` is the significance's. The widening matters here, without the floors:
+/// strongly coloured noise wanders, and a stretch of it looks like a line many white-noise
+/// errors long.
 pub fn motion_within_range(data: &FitData) -> Option<Motion> {
     let (motion, parts) = line_before(data).ok()?;
-    let noise = parts.white.max(parts.widening * parts.significance);
+    let noise = parts.widening * parts.significance;
     let within = motion.change.abs() <= motion.threshold;
     (within && motion.change.abs() > noise).then_some(Motion {
         threshold: noise,
@@ -74,16 +75,16 @@ pub fn motion_within_range(data: &FitData) -> Option<Motion> {
     })
 }
 
-/// The noise's parts of a motion's threshold (output units), and the factor an AR(1) of
-/// the residuals' lag-one correlation about the line widens the slope's error by.
+/// The significance part of a motion's threshold (six standard errors of the line's change,
+/// output units), and the factor an AR(1) of the residuals' lag-one correlation about the
+/// line widens that error by.
 struct Noise {
     significance: f64,
-    white: f64,
     widening: f64,
 }
 
 /// The line through the samples before the first change: the motion (its threshold the
-/// largest of the three of the module docs) and the noise's parts of that threshold; the
+/// largest of the three of the module docs) and the noise's part of that threshold; the
 /// number of samples when there are too few to tell.
 fn line_before(data: &FitData) -> Result<(Motion, Noise), usize> {
     let t0 = data.input.t0();
@@ -111,7 +112,6 @@ fn line_before(data: &FitData) -> Result<(Motion, Noise), usize> {
     };
     let noise = Noise {
         significance,
-        white,
         widening: crate::stats::ar1_widening(line.lag1),
     };
     Ok((motion, noise))
