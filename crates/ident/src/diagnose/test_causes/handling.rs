@@ -6,6 +6,14 @@
 //! refit from the current optimum, so the next check sees the handled problem. When the
 //! changes' own gains differ (`nonlinearity`), the model is sought on the first change's
 //! window ([`on_first_step_when_nonlinear`]).
+//!
+//! Two judgements here do not trust the joint fit alone. Whether the changes were held
+//! long enough to compare their gains is read from the changes' own fits too
+//! ([`held_for_comparison`]): a linear fit through gains that differ bends its lag, and
+//! would hide the nonlinearity behind it. And a motion before the first change that is
+//! significant but small against the record's range is still a test not at rest when the
+//! initial transient explains it, on the whole record and on the samples before the change
+//! alone, having been seen over the transient's half-life ([`small_motion_that_matters`]).
 
 use super::{
     FittedRecord, TestCause, closed_loop::closed_loop, coloured_noise, disturbance, fit_held,
