@@ -11,6 +11,7 @@ mod diagnose_closed_loop;
 mod diagnose_generator;
 mod diagnose_lookalikes;
 mod diagnose_real;
+mod diagnose_test_flaws;
 mod draw;
 mod ident_arx;
 mod ident_excitation;

@@ -50,15 +50,50 @@ impl Rest {
 
 /// Whether `data` were at rest before their input's first change.
 pub fn rest_before(data: &FitData) -> Rest {
+    match line_before(data) {
+        Err(samples) => Rest::Unknown { samples },
+        Ok((motion, _)) if motion.change.abs() > motion.threshold => Rest::NotAtRest(motion),
+        Ok((motion, _)) => Rest::AtRest(motion),
+    }
+}
+
+/// The motion before the first change when it is significant (beyond six standard errors
+/// of itself, widened for the residuals' correlation about the line as for an AR(1)) but
+/// not beyond the floors [`rest_before`] also asks of it (four white-noise deviations, 5 %
+/// of the record's range): too small to call the test not at rest on its own account,
+/// which the caller may still do when a model shows that it matters to the fit. Its
+/// `threshold` is the significance's. The widening matters here, without the floors:
+/// strongly coloured noise wanders, and a stretch of it looks like a line many white-noise
+/// errors long.
+pub fn motion_within_range(data: &FitData) -> Option<Motion> {
+    let (motion, parts) = line_before(data).ok()?;
+    let noise = parts.widening * parts.significance;
+    let within = motion.change.abs() <= motion.threshold;
+    (within && motion.change.abs() > noise).then_some(Motion {
+        threshold: noise,
+        ..motion
+    })
+}
+
+/// The significance part of a motion's threshold (six standard errors of the line's change,
+/// output units), and the factor an AR(1) of the residuals' lag-one correlation about the
+/// line widens that error by.
+struct Noise {
+    significance: f64,
+    widening: f64,
+}
+
+/// The line through the samples before the first change: the motion (its threshold the
+/// largest of the three of the module docs) and the noise's part of that threshold; the
+/// number of samples when there are too few to tell.
+fn line_before(data: &FitData) -> Result<(Motion, Noise), usize> {
     let t0 = data.input.t0();
     let samples = crate::record::timebase::samples_before(&data.times, t0).min(data.y.len());
     if samples < MIN_SAMPLES_BEFORE {
-        return Rest::Unknown { samples };
+        return Err(samples);
     }
     let (t, y) = (&data.times[..samples], &data.y[..samples]);
-    let Some(line) = Line::fit(t, y) else {
-        return Rest::Unknown { samples };
-    };
+    let line = Line::fit(t, y).ok_or(samples)?;
     let span = (t[0], t[samples - 1]);
     let change = line.slope * (span.1 - span.0);
     let significance = 6.0 * line.slope_error * (span.1 - span.0);
@@ -69,24 +104,25 @@ pub fn rest_before(data: &FitData) -> Rest {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
             (lo.min(v), hi.max(v))
         });
-    let threshold = significance.max(white).max(0.05 * (hi - lo));
     let motion = Motion {
         change,
         span,
         samples,
-        threshold,
+        threshold: significance.max(white).max(0.05 * (hi - lo)),
     };
-    if change.abs() > threshold {
-        Rest::NotAtRest(motion)
-    } else {
-        Rest::AtRest(motion)
-    }
+    let noise = Noise {
+        significance,
+        widening: crate::stats::ar1_widening(line.lag1),
+    };
+    Ok((motion, noise))
 }
 
 /// A least-squares line y = a + b·(t − t̄) and the standard error of its slope.
 struct Line {
     slope: f64,
     slope_error: f64,
+    /// The lag-one autocorrelation of the residuals about the line.
+    lag1: f64,
 }
 
 impl Line {
@@ -104,13 +140,19 @@ impl Line {
             .map(|(t, y)| (t - t_mean) * (y - y_mean))
             .sum();
         let slope = sty / stt;
-        let sse: f64 = t
+        let residuals: Vec<f64> = t
             .iter()
             .zip(y)
-            .map(|(t, y)| (y - y_mean - slope * (t - t_mean)).powi(2))
-            .sum();
+            .map(|(t, y)| y - y_mean - slope * (t - t_mean))
+            .collect();
+        let sse: f64 = residuals.iter().map(|r| r * r).sum();
         let slope_error = (sse / (n - 2.0).max(1.0) / stt).sqrt();
-        slope.is_finite().then_some(Line { slope, slope_error })
+        let lag1 = crate::stats::lag_one(&residuals);
+        slope.is_finite().then_some(Line {
+            slope,
+            slope_error,
+            lag1,
+        })
     }
 }
 

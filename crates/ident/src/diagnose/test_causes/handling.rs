@@ -6,19 +6,28 @@
 //! refit from the current optimum, so the next check sees the handled problem. When the
 //! changes' own gains differ (`nonlinearity`), the model is sought on the first change's
 //! window ([`on_first_step_when_nonlinear`]).
+//!
+//! Two judgements here do not trust the joint fit alone. Whether the changes were held
+//! long enough to compare their gains is read from the changes' own fits too
+//! ([`held_for_comparison`]): a linear fit through gains that differ bends its lag, and
+//! would hide the nonlinearity behind it. And a motion before the first change that is
+//! significant but small against the record's range is still a test not at rest when the
+//! initial transient explains it, on the whole record and on the samples before the change
+//! alone, having been seen over the transient's half-life ([`small_motion_that_matters`]).
 
 use super::{
     FittedRecord, TestCause, closed_loop::closed_loop, coloured_noise, disturbance, fit_held,
-    imperfect_step, nonlinearity, not_at_rest, outliers, quantisation, sampling, saturation,
-    small_step, steps_held,
+    imperfect_step, nonlinearity, not_at_rest, not_at_rest_with, outliers, own_fit_held,
+    quantisation, sampling, saturation, small_step, steps_held, time_constants,
 };
 use crate::diagnose::drift_evidence::{read_drift, read_drift_after};
 use crate::diagnose::extension::{Extensions, StartExtensions};
-use crate::diagnose::judge::bic;
+use crate::diagnose::judge::{BIC_THRESHOLD, bic};
 use crate::diagnose::per_step::{
     MAX_PER_STEP, StepFit, per_step_fits, widen_steps_for_colour, window_data,
 };
 use crate::fit::guess::auto_guess;
+use crate::fit::rest::{Motion, motion_within_range};
 use crate::fit::robust::{RobustFit, robust_fit};
 use crate::fit::{FitData, FitOptions, FitReport, fit, within_span};
 use crate::model::{Param, Structure};
@@ -71,6 +80,10 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
                 current = r;
             }
         }
+    } else if let Some((cause, transient)) = small_motion_that_matters(data, &current, fit_options)
+    {
+        causes.push(cause);
+        current = transient;
     }
     causes.extend(FittedRecord::new(data, &current).and_then(|r| closed_loop(&r)));
     let mut kept = Kept {
@@ -133,6 +146,70 @@ pub fn handle(data: &FitData, start: FitReport, fit_options: &FitOptions) -> Han
 fn within_record(causes: &mut [TestCause], times: &[f64]) {
     for c in causes {
         c.interval = c.interval.and_then(|i| within_span(times, i));
+    }
+}
+
+/// `not_at_rest` for a motion before the first change beyond the noise but small against
+/// the record's range ([`motion_within_range`]), when it matters to the fit: the start
+/// structure with the initial transient pays for its parameters by the BIC threshold
+/// ([`BIC_THRESHOLD`]) on the whole record and on the samples before the change alone
+/// ([`explains_before`]), and a drift does not explain the motion instead
+/// ([`drift_explains_motion`]). Without it, the earlier response's tail is left for the
+/// model's loop, which bends a zero or a dead time to the start of the response; with it,
+/// the transient models it as the free response of the same poles. A motion that changes
+/// nothing in the fit is not worth the words.
+fn small_motion_that_matters(
+    data: &FitData,
+    current: &FitReport,
+    options: &FitOptions,
+) -> Option<(TestCause, FitReport)> {
+    let motion = motion_within_range(data)?;
+    let transient = with_transient(data, current, options)?;
+    let pays = bic(&transient) < bic(current) - BIC_THRESHOLD;
+    (pays
+        && seen_over_half_life(&motion, &transient)
+        && explains_before(data, current, &transient, motion.samples)
+        && !drift_explains_motion(data, current, Some(&transient), options))
+    .then(|| (not_at_rest_with(motion), transient))
+}
+
+/// Whether the motion before the change was seen for at least the half-life of the
+/// transient's slowest pole (ln 2 of its time constant): most of what the transient
+/// attributes to the earlier response is then in the record, not extrapolated from it. On
+/// a stretch short against the lag, the free response is a straight line whose slope
+/// alone fixes a transient many times the motion seen (ten samples of a heater moving by
+/// 0.4 before its step, read with its two-minute lag, made a transient of 5.5 that traded
+/// with the gain): a line there is as much a drift, or the noise's wander.
+fn seen_over_half_life(motion: &Motion, transient: &FitReport) -> bool {
+    let span = motion.span.1 - motion.span.0;
+    time_constants(&transient.model)
+        .first()
+        .is_some_and(|&slowest| span >= std::f64::consts::LN_2 * slowest)
+}
+
+/// Whether `transient` explains the first `samples` samples (those before the first
+/// change) better than `current` by the BIC threshold, n·ln(SSE ratio) > [`BIC_THRESHOLD`]
+/// on them alone. The initial transient is the free response of the model's poles over
+/// the whole record, and with Y0 free it can also bend the response after the change (and
+/// trade with the gain: a record of ten samples before its step, read as a transient of the
+/// heater's two-minute lag, lost a third of its gain); only the samples before the change
+/// are what a test not at rest, and nothing else, explains.
+fn explains_before(
+    data: &FitData,
+    current: &FitReport,
+    transient: &FitReport,
+    samples: usize,
+) -> bool {
+    let sse = |r: &FitReport| {
+        r.residuals(data)
+            .ok()
+            .map(|e| e.iter().take(samples).map(|v| v * v).sum::<f64>())
+    };
+    match (sse(current), sse(transient)) {
+        (Some(before), Some(after)) if after > 0.0 => {
+            samples as f64 * (before / after).ln() > BIC_THRESHOLD
+        }
+        _ => false,
     }
 }
 
@@ -212,16 +289,17 @@ fn reported(data: &FitData, last: &FitReport) -> Vec<TestCause> {
 /// `fitted`'s process model, against `fitted` itself; the cause with the per-step fits.
 fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, Vec<StepFit>)> {
     let changes = data.input.changes.len();
-    if !(2..=MAX_PER_STEP).contains(&changes) || !steps_held(data, &fitted.model) {
+    if !(2..=MAX_PER_STEP).contains(&changes) {
         return None;
     }
     let options = FitOptions {
         starts: 1,
         ..FitOptions::default()
     };
-    let mut structure = fitted.model.structure;
-    structure.transient = false;
-    let fits = per_step_fits(data, structure, &options);
+    let fits = own_fits(data, fitted, &options);
+    if !held_for_comparison(data, fitted, &fits) {
+        return None;
+    }
     // Judged on intervals as honest as the model's fit: a structure about to be extended
     // leaves correlated residuals, and its white-noise intervals would call a linear
     // record's steps different. The fits returned keep their own intervals (a model started
@@ -243,6 +321,62 @@ fn step_gains_differ(data: &FitData, fitted: &FitReport) -> Option<(TestCause, V
         return None;
     }
     Some((cause, fits))
+}
+
+/// Each change of `data` fitted on its own window with `fitted`'s process model
+/// ([`per_step_fits`]), the first with an initial transient when `fitted` has one. A
+/// record found not at rest was moving before its first change, but the first window
+/// holds only the last third of that stretch, where the motion may be too small for the
+/// window's own rest test: fitted from rest, its gain would take the earlier response's
+/// tail for its own, and differ from the others' as a nonlinearity's would.
+fn own_fits(data: &FitData, fitted: &FitReport, options: &FitOptions) -> Vec<StepFit> {
+    let mut structure = fitted.model.structure;
+    let moving = structure.transient;
+    structure.transient = false;
+    let mut fits = per_step_fits(data, structure, options);
+    if moving && let Some(first) = fits.first_mut().filter(|f| !f.not_at_rest) {
+        structure.transient = true;
+        if let Some(refit) = first_from_motion(data, structure, options) {
+            *first = refit;
+        }
+    }
+    fits
+}
+
+/// The first change of `data` fitted on its own window ([`window_data`]) with an initial
+/// transient, as [`per_step_fits`] fits a window found not at rest: Y0 free, the step
+/// instant's lead when the record has one.
+fn first_from_motion(
+    data: &FitData,
+    structure: Structure,
+    options: &FitOptions,
+) -> Option<StepFit> {
+    let window = window_data(data, 0)?;
+    let s = Structure {
+        free_offset: true,
+        drift: false,
+        lead: window.input.lead_range > 0.0,
+        transient: true,
+        ..structure
+    };
+    let guess = auto_guess(&window, s, None);
+    let span = (*window.times.first()?, *window.times.last()?);
+    Some(StepFit {
+        change: *data.input.changes.first()?,
+        window: span,
+        not_at_rest: true,
+        fit: fit(&window, s, guess, options, &mut ()),
+    })
+}
+
+/// Whether at least two changes of `data` were held long enough for their gains to be
+/// compared: by the joint fit's time scales ([`steps_held`]), or, when the joint fit says
+/// not, by the changes' own fits, each window showing its level within its own intervals
+/// ([`own_fit_held`]). The joint fit alone cannot decide it: a linear model through
+/// changes whose gains differ bends its lags to compromise between their levels, and the
+/// very nonlinearity to be named would hide itself behind a lag no change shows.
+fn held_for_comparison(data: &FitData, fitted: &FitReport, fits: &[StepFit]) -> bool {
+    steps_held(data, &fitted.model) || fits.iter().filter(|f| own_fit_held(f)).count() >= 2
 }
 
 /// Whether the motion before the first change is a drift rather than a test not at rest.
@@ -311,9 +445,7 @@ fn drift_explains_gains(data: &FitData, fitted: &FitReport, options: &FitOptions
     }
     let mut joint = with_drift;
     joint.model.structure.drift = false;
-    let mut structure = joint.model.structure;
-    structure.transient = false;
-    let mut fits = per_step_fits(&detrended, structure, options);
+    let mut fits = own_fits(&detrended, &joint, options);
     widen_steps_for_colour(&detrended, &mut fits);
     let held: Vec<StepFit> = fits
         .into_iter()

@@ -37,7 +37,9 @@ mod small_step;
 mod testing;
 
 pub use imperfect_step::{imperfect_step, input_at};
-pub use nonlinearity::{HELD_LAGS, change_held, fit_held, nonlinearity, step_gains, steps_held};
+pub use nonlinearity::{
+    HELD_LAGS, change_held, fit_held, nonlinearity, own_fit_held, step_gains, steps_held,
+};
 pub use quantisation::{COARSE_SHARE, quantisation, resolution};
 pub use sampling::{TimeScales, sampling, sampling_checks, time_constants};
 pub use small_step::{SMALL_STEP_RATIO, small_step};
@@ -304,12 +306,17 @@ pub fn not_at_rest(data: &FitData) -> Option<TestCause> {
     let Rest::NotAtRest(motion) = rest_before(data) else {
         return None;
     };
-    Some(TestCause {
+    Some(not_at_rest_with(motion))
+}
+
+/// `not_at_rest` with the motion it was found by.
+pub fn not_at_rest_with(motion: Motion) -> TestCause {
+    TestCause {
         kind: TestCauseKind::NotAtRest,
         interval: Some(motion.span),
         evidence: TestEvidence::NotAtRest { motion },
         handling: Handling::InitialTransient,
-    })
+    }
 }
 
 /// A fit on its data, as the detectors that read a model read it: the residuals

@@ -63,6 +63,48 @@ pub fn fit_held(f: &StepFit, joint: &Model) -> bool {
         .is_some_and(|needed| f.window.1 - f.change.t >= needed)
 }
 
+/// The time scales that set how long a change must be held, as slow as `report`'s 95 %
+/// intervals allow: each lag and the dead time at its interval's upper end; `None` when one
+/// of them has no interval (the window did not determine it).
+fn slowest_allowed(report: &crate::fit::FitReport) -> Option<Model> {
+    let mut model = report.model;
+    let s = model.structure;
+    let mut scales = vec![Param::Tp1, Param::Tp2, Param::Tp3];
+    scales.truncate(s.poles as usize);
+    if s.underdamped {
+        scales = vec![Param::Tw];
+        if s.poles == 3 {
+            scales.push(Param::Tp3);
+        }
+    }
+    if s.delay {
+        scales.push(Param::Td);
+    }
+    for p in scales {
+        let (_, high) = report.interval(p)?;
+        model.values.set(p, high);
+    }
+    Some(model)
+}
+
+/// Whether a change's own fit shows, by itself, that the change was held through its
+/// response: its window lasts the [`needed_hold`] of the slowest lags and dead time its own
+/// 95 % intervals allow ([`slowest_allowed`]). A window cut before the response settled
+/// leaves its lag undetermined (the level it heads for trades with how slowly it gets
+/// there), and its interval reaches past the window; one that shows the level pins the lag
+/// down. This needs no joint fit: when the changes' gains differ, a joint linear fit bends
+/// its lags to reach levels it cannot (a P1 through an up step of gain 2.8 and a down step
+/// of 1.5 ends with a lag four times the steps' own), and would say that changes held
+/// through four of their own time constants were not.
+pub fn own_fit_held(f: &StepFit) -> bool {
+    let Ok(report) = &f.fit else {
+        return false;
+    };
+    slowest_allowed(report)
+        .and_then(|m| needed_hold(&m))
+        .is_some_and(|needed| f.window.1 - f.change.t >= needed)
+}
+
 /// Each fitted change's own static gain and its 95 % interval (failed fits left out).
 pub fn step_gains(fits: &[StepFit]) -> Vec<StepGain> {
     fits.iter()

@@ -1,0 +1,130 @@
+//! Flaws of the test alone on records built here (a P1 process, the CSV text read as
+//! `degrau diagnose` reads it): each flaw is named among the test's causes, no structure
+//! is bought for it, and the gain is the process's own.
+
+use degrau_ident::challenge::solve::diagnosis;
+use degrau_ident::diagnose::DiagnoseReport;
+use degrau_ident::diagnose::test_causes::{TestCauseKind, TestEvidence};
+use degrau_ident::model::Param;
+use degrau_ident::random::Lcg;
+
+/// A first-order process of lag `tau` from `y0`, sampled every `h` s for `n` samples, the
+/// input from `u0` changed at each (instant, Δu, that change's own gain), with white noise
+/// of `sd`, written as a CSV.
+fn p1_record(
+    tau: f64,
+    y0: f64,
+    u0: f64,
+    changes: &[(f64, f64, f64)],
+    (h, n): (f64, usize),
+    sd: f64,
+) -> String {
+    let mut rng = Lcg(0x7E57_F1A5);
+    let mut csv = String::from("t,u,y\n");
+    for k in 0..n {
+        let t = h * k as f64;
+        let mut u = u0;
+        let mut y = y0 + sd * rng.gaussian();
+        for &(tc, du, gain) in changes.iter().filter(|c| c.0 <= t) {
+            u += du;
+            y += gain * du * (1.0 - (-(t - tc) / tau).exp());
+        }
+        csv.push_str(&format!("{t:.1},{u:.5},{y:.5}\n"));
+    }
+    csv
+}
+
+/// [`p1_record`] from a process still answering an earlier change `(before, du)`: made
+/// `before` s ahead of the record, of the same gain as the first change.
+fn p1_not_at_rest(
+    tau: f64,
+    earlier: (f64, f64),
+    changes: &[(f64, f64, f64)],
+    sampling: (f64, usize),
+    sd: f64,
+) -> String {
+    let gain = changes[0].2;
+    let plain = p1_record(tau, 0.0, 23.23, changes, sampling, sd);
+    let mut csv = String::from("t,u,y\n");
+    for line in plain.lines().skip(1) {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        let tail = gain * earlier.1 * (1.0 - (-(v[0] + earlier.0) / tau).exp());
+        csv.push_str(&format!(
+            "{:.1},{:.5},{:.5}\n",
+            v[0],
+            v[1],
+            20.0 + v[2] + tail
+        ));
+    }
+    csv
+}
+
+fn named(r: &DiagnoseReport, kind: TestCauseKind) -> bool {
+    r.test_causes.iter().any(|c| c.kind == kind)
+}
+
+#[test]
+fn a_gain_that_differs_up_and_down_is_named_though_a_joint_p1_bends_its_lag() {
+    // Up with gain −2.8, back down with −1.5, each held over eight lags of 17 s: a joint P1
+    // through both compromises with a lag near 67 s, under which neither change looks held.
+    let changes = [(20.05, 8.53, -2.8), (167.75, -8.53, -1.5)];
+    let csv = p1_record(17.0, 98.7, 57.17, &changes, (0.1, 3156), 0.05);
+    let r = diagnosis(&csv).expect("the record is diagnosed");
+    assert!(
+        named(&r, TestCauseKind::Nonlinearity),
+        "{:?}",
+        r.test_causes
+    );
+    assert_eq!(r.steps.first().map(|s| s.cause), None, "{:?}", r.steps);
+    let kp = r.final_fit.model.get(Param::Kp);
+    assert!((kp + 2.8).abs() < 0.05 * 2.8, "Kp {kp}");
+}
+
+#[test]
+fn a_test_not_at_rest_is_no_nonlinearity_when_its_first_window_is_short() {
+    // τ 7 s; the record starts 4 s after an earlier change of half the step, 13.6 s before
+    // the first of two changes of the same gain: the first window holds only the last 4.5 s
+    // of that motion, too little for its own rest test, and fitted from rest its gain was
+    // 6 % off the second's.
+    let changes = [(13.65, -3.695, -3.75), (70.15, 3.695, -3.75)];
+    let csv = p1_not_at_rest(7.0, (4.0, -1.85), &changes, (0.1, 1268), 0.012);
+    let r = diagnosis(&csv).expect("the record is diagnosed");
+    assert!(named(&r, TestCauseKind::NotAtRest), "{:?}", r.test_causes);
+    assert!(
+        !named(&r, TestCauseKind::Nonlinearity),
+        "{:?}",
+        r.test_causes
+    );
+    assert_eq!(r.steps.first().map(|s| s.cause), None, "{:?}", r.steps);
+    let kp = r.final_fit.model.get(Param::Kp);
+    assert!((kp + 3.75).abs() < 0.05 * 3.75, "Kp {kp}");
+}
+
+#[test]
+fn a_motion_small_against_the_range_is_not_at_rest_when_the_transient_explains_it() {
+    // τ 19 s, an earlier change of a quarter of the step 17 s before the record, the step
+    // 15 s in: the output falls by under 5 % of the record's range before it, four times
+    // the noise; left to the model's loop, it bought a zero.
+    let changes = [(15.05, -9.38, 1.637)];
+    let csv = p1_not_at_rest(19.0, (17.0, -2.2), &changes, (0.1, 1900), 0.135);
+    let r = diagnosis(&csv).expect("the record is diagnosed");
+    let motion = r.test_causes.iter().find_map(|c| match &c.evidence {
+        TestEvidence::NotAtRest { motion } => Some(*motion),
+        _ => None,
+    });
+    let motion = motion.unwrap_or_else(|| panic!("not named: {:?}", r.test_causes));
+    let ys: Vec<f64> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(2).unwrap().parse().unwrap())
+        .collect();
+    let range = ys.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+        - ys.iter().cloned().fold(f64::INFINITY, f64::min);
+    assert!(
+        motion.change.abs() < 0.05 * range,
+        "{motion:?} range {range}"
+    );
+    assert_eq!(r.steps.first().map(|s| s.cause), None, "{:?}", r.steps);
+    let kp = r.final_fit.model.get(Param::Kp);
+    assert!((kp - 1.637).abs() < 0.05 * 1.637, "Kp {kp}");
+}
