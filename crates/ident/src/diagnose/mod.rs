@@ -49,9 +49,9 @@ use crate::diagnose::test_causes::handling;
 use crate::diagnose::tracker::Tracker;
 use crate::fit::guess::auto_guess;
 use crate::fit::{FitData, FitError, FitReport, fit};
-use crate::model::{Param, Structure, Values};
+use crate::model::{Model, Param, Structure, Values};
 use explain::verdict;
-use extension::{EXTENSIONS, Extension, oscillates};
+use extension::{EXTENSIONS, Extension, oscillates, real_poles};
 use report::gain_trade;
 use step::{backward_step, next_step_with};
 
@@ -96,16 +96,21 @@ pub fn diagnose_tracked(
     tracker: &Tracker,
 ) -> DiagnoseReport {
     let handled = handling::handle(data, start, &options.fit);
-    let (mut current, mut steps, mut adequate) = run_loop(&handled, options, &EXTENSIONS, tracker);
+    let (mut current, mut steps, mut adequate) =
+        run_loop(&handled, options, &EXTENSIONS, None, tracker);
     if current.model.structure.underdamped && !oscillates(&current) {
         // The pair ended overdamped (ζ ≥ 1 within its interval, once the other extensions
         // took their part): it is two real poles, and the chain is made again without the
-        // oscillation, so that its steps name the extra pole.
+        // oscillation, so that its steps name the extra pole. The model the first chain
+        // reached, its pair as two real poles, guides the new one ([`next_step_with`]): a
+        // pair of extensions that paid there (the pole and the zero of an overshoot, each
+        // alone no better than coloured noise) is tried here too, and starts from it.
         let real: Vec<Extension> = EXTENSIONS
             .into_iter()
             .filter(|e| *e != Extension::Underdamped)
             .collect();
-        (current, steps, adequate) = run_loop(&handled, options, &real, tracker);
+        let reached = real_poles(&current.model);
+        (current, steps, adequate) = run_loop(&handled, options, &real, Some(&reached), tracker);
     }
     let mut test_causes = handled.causes.clone();
     let current = handling::finish(&handled, current, adequate, &mut test_causes);
@@ -131,6 +136,7 @@ fn run_loop(
     handled: &handling::Handled,
     options: &DiagnoseOptions,
     allowed: &[Extension],
+    reached: Option<&Model>,
     tracker: &Tracker,
 ) -> (FitReport, Vec<Step>, bool) {
     let mut current = handled.start.clone();
@@ -143,7 +149,8 @@ fn run_loop(
         tracker.extension(k + 1);
         // The first step's extensions may have been fitted by the test causes' handling.
         let known = handled.start_extensions.as_ref().filter(|_| k == 0);
-        let Some(step) = next_step_with(&handled.data, &current, &allowed, known, tracker) else {
+        let Some(step) = next_step_with(&handled.data, &current, &allowed, known, reached, tracker)
+        else {
             return (current, steps, true);
         };
         current = step.step.fit.clone();

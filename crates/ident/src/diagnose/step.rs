@@ -16,7 +16,7 @@ use crate::diagnose::holdout::Validation;
 use crate::diagnose::staircase::Staircase;
 use crate::diagnose::tracker::Tracker;
 use crate::fit::{FitData, FitOptions, FitReport, search_fit};
-use crate::model::{Param, Structure};
+use crate::model::{Model, Param, Structure};
 
 /// The terms of `current` the backward look may take out, but not `added`, the one just
 /// paid for: the first whose term no longer pays ([`no_longer_pays`]), with the step that
@@ -85,7 +85,7 @@ pub(super) fn refit_without(
 /// tried ([`best_pair`]: P1 → P2Z, P1 → P2D, …), and a pair that pays is one step naming
 /// both causes.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
-    next_step_with(data, current, &EXTENSIONS, None, &Tracker::none()).map(|c| c.step)
+    next_step_with(data, current, &EXTENSIONS, None, None, &Tracker::none()).map(|c| c.step)
 }
 
 /// A step of the loop with the extension it made.
@@ -95,12 +95,17 @@ pub(super) struct Chosen {
 }
 
 /// [`next_step`] with only the extensions `allowed`, choosing among the extensions `known`
-/// when they were fitted already (of `current` on `data`).
+/// when they were fitted already (of `current` on `data`). `reached` is a model the record
+/// is known to reach (a chain made again without the oscillation: the first chain's model,
+/// its overdamped pair as two real poles): pairs are tried whatever the single extensions
+/// leave, since that chain paid for its pair, and an extension whose structure is the
+/// model's starts from it too.
 pub(super) fn next_step_with(
     data: &FitData,
     current: &FitReport,
     allowed: &[Extension],
     known: Option<&Extensions>,
+    reached: Option<&Model>,
     tracker: &Tracker,
 ) -> Option<Chosen> {
     let candidates = match known {
@@ -109,7 +114,7 @@ pub(super) fn next_step_with(
             .filter(|(e, _)| allowed.contains(e))
             .cloned()
             .collect(),
-        None => candidates(data, current, allowed, tracker),
+        None => candidates(data, current, allowed, reached, tracker),
     };
     let lowest = |list: Vec<&(Extension, FitReport)>| {
         list.into_iter()
@@ -158,10 +163,10 @@ pub(super) fn next_step_with(
     let (extension, paired, candidate) = match single {
         Some(chosen) => chosen,
         None => {
-            if !far && !leader_plainly {
+            if !far && !leader_plainly && reached.is_none() {
                 return None;
             }
-            let ((mut e1, mut e2), c) = best_pair(data, current, allowed, tracker)?;
+            let ((mut e1, mut e2), c) = best_pair(data, current, allowed, reached, tracker)?;
             if !pays(data, current, &c) || !validation.keeps(&c) {
                 return None;
             }
@@ -236,7 +241,7 @@ pub(super) fn look_ahead(
     if !STAND_INS.contains(&e) || !far_from_white(data, current) {
         return (e, None, c);
     }
-    let Some(((mut e1, mut e2), pair)) = best_pair(data, current, allowed, tracker) else {
+    let Some(((mut e1, mut e2), pair)) = best_pair(data, current, allowed, None, tracker) else {
         return (e, None, c);
     };
     let better = judged_change(data, &c, &pair) < -BIC_THRESHOLD;
