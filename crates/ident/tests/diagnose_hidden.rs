@@ -11,6 +11,11 @@
 //!   extension pays for itself by the corrected BIC, but the pole and the zero together do.
 //!   The first step must name `zero` or `extra_pole`, the final structure be P2Z, and Kp be
 //!   within 10 %.
+//! - `weak_inverse_response`: P2Z with Tz −0.45 to −0.6 × Tp1 and Tp2 0.2–0.5 × Tp1 under
+//!   noise of 1–2 % of the effect: its dip is a few noise deviations deep, and a dead time
+//!   explains most of the slow start, so it paid first and the zero with its pole came
+//!   after it and took it out again (Td ≤ 0). The first step must name `inverse_response`
+//!   or `extra_pole`, the final structure be P2Z, and Kp be within 10 %.
 
 use degrau_ident::diagnose::{Cause, DiagnoseOptions, DiagnoseReport, diagnose};
 use degrau_ident::fit::FitData;
@@ -62,29 +67,39 @@ struct Case {
     what: String,
 }
 
-/// A record of `truth` (Y0 = 0) stepped by `du` and back by `back·du`, each change held
-/// `hold` s, from `y0`, with the logger's flaws drawn from `rng`.
-fn record(rng: &mut Rng, truth: Model, du: f64, back: f64, hold: f64) -> Case {
+/// A record of `truth` (Y0 = 0) stepped by `du` (and by `back·du` when given), each change
+/// held `hold` s, from `y0`, with noise of `noise` (share of the effect, log-uniform) and the
+/// logger's flaws drawn from `rng`.
+fn record(
+    rng: &mut Rng,
+    truth: Model,
+    (du, back): (f64, Option<f64>),
+    hold: f64,
+    noise: (f64, f64),
+) -> Case {
+    let held = if back.is_some() { 2.0 } else { 1.0 };
     let y0 = rng.range((-200.0, 500.0));
     let u0 = rng.range((0.0, 80.0));
     let h = hold / rng.range((200.0, 800.0));
-    let before = rng.range((0.1, 0.2)) * 2.0 * hold;
-    let length = before + 2.0 * hold;
+    let before = rng.range((0.1, 0.2)) * held * hold;
+    let length = before + held * hold;
     let n = (length / h) as usize + 1;
     let origin = rng.range((0.0, 1000.0)) * h;
     let times: Vec<f64> = (0..n).map(|k| origin + h * k as f64).collect();
     // The true instants fall inside a sampling period.
     let mut between = |t: f64| origin + h * (((t - origin) / h).floor() + rng.range((0.05, 0.95)));
     let t1 = between(origin + before);
-    let t2 = between(t1 + hold);
-    let changes = [(t1, du), (t2, back * du)];
+    let mut changes = vec![(t1, du)];
+    if let Some(back) = back {
+        changes.push((between(t1 + hold), back * du));
+    }
     let mut y = vec![y0; n];
     for &(t, d) in &changes {
         let answer = truth.simulate(&Excitation::step(t, d), &times).unwrap();
         y.iter_mut().zip(&answer).for_each(|(yi, a)| *yi += a);
     }
     let effect = (truth.get(Param::Kp) * du).abs();
-    let sd = rng.log_range((0.002, 0.02)) * effect;
+    let sd = rng.log_range(noise) * effect;
     let rho = if rng.range((0.0, 1.0)) < 0.5 {
         0.0
     } else {
@@ -121,7 +136,7 @@ fn record(rng: &mut Rng, truth: Model, du: f64, back: f64, hold: f64) -> Case {
         .collect();
     let held_y0 = rest.iter().sum::<f64>() / rest.len() as f64;
     let what = format!(
-        "truth {:?} du {du:.3} back {back:.2} N {n} noise {:.2} % rho {rho:.2} quantum {quantum:?}",
+        "truth {:?} du {du:.3} back {back:?} N {n} noise {:.2} % rho {rho:.2} quantum {quantum:?}",
         truth.values,
         100.0 * sd / effect
     );
@@ -153,7 +168,25 @@ fn lead_zero_doublet(index: usize) -> Case {
         rng.range((0.5, 1.0))
     };
     let hold = rng.range((6.0, 10.0)) * tp1;
-    record(&mut rng, truth, du, back, hold)
+    record(&mut rng, truth, (du, Some(back)), hold, (0.002, 0.02))
+}
+
+/// The `index`-th weak inverse response (Tz −0.45 to −0.6 × Tp1, Tp2 0.2–0.5 × Tp1) under
+/// noise of 1–2 % of the effect, one change.
+fn weak_inverse_response(index: usize) -> Case {
+    let mut rng = Rng::new(0x1D1F_0000 + index as u64);
+    let tp1 = rng.log_range((1.0, 30.0));
+    let v = Values::from_pairs(&[
+        (Param::Kp, rng.sign() * rng.log_range((0.3, 6.0))),
+        (Param::Tp1, tp1),
+        (Param::Tp2, rng.range((0.2, 0.5)) * tp1),
+        (Param::Tz, -rng.range((0.45, 0.6)) * tp1),
+        (Param::Y0, 0.0),
+    ]);
+    let truth = Model::new(Structure::parse("P2Z").unwrap(), v);
+    let du = rng.sign() * rng.log_range((0.5, 10.0));
+    let hold = rng.range((6.0, 10.0)) * tp1;
+    record(&mut rng, truth, (du, None), hold, (0.01, 0.02))
 }
 
 /// The diagnosis from P1 with Y0 held, as the CLI runs it.
@@ -204,6 +237,16 @@ fn accept(class: &str, make: fn(usize) -> Case, first: &[Cause], code: &str) {
         "{class}: {} of {CASES} missed:\n{}",
         misses.len(),
         misses.join("\n")
+    );
+}
+
+#[test]
+fn a_weak_inverse_response_is_named_as_such_not_as_a_dead_time() {
+    accept(
+        "weak_inverse_response",
+        weak_inverse_response,
+        &[Cause::InverseResponse, Cause::ExtraPole],
+        "P2Z",
     );
 }
 
