@@ -11,6 +11,10 @@
 //!   extension pays for itself by the corrected BIC, but the pole and the zero together do.
 //!   The first step must name `zero` or `extra_pole`, the final structure be P2Z, and Kp be
 //!   within 10 %.
+//! - `short_ramp`: P1I whose ramp rises by only 2–3 |Δu| over the record, under noise of
+//!   1–2 % of that rise: a P2 whose slow lag is several records long bends the same ramp,
+//!   with a static gain tens of times the slope. The first step must name `integrator`,
+//!   the final structure be P1I, and the slope be within 10 %.
 //! - `weak_inverse_response`: P2Z with Tz −0.45 to −0.6 × Tp1 and Tp2 0.2–0.5 × Tp1 under
 //!   noise of 1–2 % of the effect: its dip is a few noise deviations deep, and a dead time
 //!   explains most of the slow start, so it paid first and the zero with its pole came
@@ -25,6 +29,8 @@ use degrau_ident::random::Lcg;
 
 /// Cases per class.
 const CASES: usize = 8;
+/// Cases of the short ramps (cheap: a ramp is diagnosed in a few tens of milliseconds).
+const RAMP_CASES: usize = 40;
 /// Cases of a class that may miss.
 const MAY_MISS: usize = 1;
 /// Relative tolerance of the final Kp.
@@ -98,7 +104,12 @@ fn record(
         let answer = truth.simulate(&Excitation::step(t, d), &times).unwrap();
         y.iter_mut().zip(&answer).for_each(|(yi, a)| *yi += a);
     }
-    let effect = (truth.get(Param::Kp) * du).abs();
+    // The effect: the step's |Kp·Δu|, or an integrator's rise over the record.
+    let effect = if truth.structure.integrator {
+        (y[n - 1] - y0).abs()
+    } else {
+        (truth.get(Param::Kp) * du).abs()
+    };
     let sd = rng.log_range(noise) * effect;
     let rho = if rng.range((0.0, 1.0)) < 0.5 {
         0.0
@@ -221,22 +232,56 @@ fn judged(case: &Case, first: &[Cause], code: &str) -> Result<(), String> {
 
 /// Runs `CASES` records of a class and asserts that at most [`MAY_MISS`] miss.
 fn accept(class: &str, make: fn(usize) -> Case, first: &[Cause], code: &str) {
-    let misses: Vec<String> = (0..CASES)
+    accept_of(CASES, class, make, first, code);
+}
+
+/// [`accept`] over `cases` records.
+fn accept_of(cases: usize, class: &str, make: fn(usize) -> Case, first: &[Cause], code: &str) {
+    let misses: Vec<String> = (0..cases)
         .filter_map(|i| {
             judged(&make(i), first, code)
                 .err()
                 .map(|e| format!("#{i} {e}"))
         })
         .collect();
-    eprintln!("[{class}] {} of {CASES} missed", misses.len());
+    eprintln!("[{class}] {} of {cases} missed", misses.len());
     for m in &misses {
         eprintln!("  miss {m}");
     }
     assert!(
         misses.len() <= MAY_MISS,
-        "{class}: {} of {CASES} missed:\n{}",
+        "{class}: {} of {cases} missed:\n{}",
         misses.len(),
         misses.join("\n")
+    );
+}
+
+/// The `index`-th integrator (P1I) whose ramp rises by only 2–3 |Δu| over the record, under
+/// noise of 1–2 % of that rise, one change.
+fn short_ramp(index: usize) -> Case {
+    let mut rng = Rng::new(0x1A7E_0000 + index as u64);
+    let tp1 = rng.log_range((1.0, 20.0));
+    let hold = rng.range((6.0, 10.0)) * tp1;
+    let rise = rng.range((2.0, 3.0));
+    let slope = rise / (hold - tp1 * (1.0 - (-hold / tp1).exp()));
+    let v = Values::from_pairs(&[
+        (Param::Kp, rng.sign() * slope),
+        (Param::Tp1, tp1),
+        (Param::Y0, 0.0),
+    ]);
+    let truth = Model::new(Structure::parse("P1I").unwrap(), v);
+    let du = rng.sign() * rng.log_range((0.5, 10.0));
+    record(&mut rng, truth, (du, None), hold, (0.01, 0.02))
+}
+
+#[test]
+fn a_short_ramp_is_an_integrator_not_a_lag_beyond_the_record() {
+    accept_of(
+        RAMP_CASES,
+        "short_ramp",
+        short_ramp,
+        &[Cause::Integrator],
+        "P1I",
     );
 }
 

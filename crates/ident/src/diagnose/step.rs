@@ -1,5 +1,6 @@
 //! One step of the chain: the extension that pays most (a pole preferred to a dead time
-//! that only stands in for it, a pair where no single extension pays, a look ahead past a
+//! that only stands in for it, an integrator to a pole whose lag the record cannot show
+//! settling, a pair where no single extension pays, a look ahead past a
 //! stand-in), checked on held-out data and against the output's rounding; and the backward
 //! step that drops a parameter that no longer pays.
 
@@ -10,6 +11,7 @@ use super::extension::{
 };
 use super::judge::{
     BIC_THRESHOLD, bic, far_from_white, gain, judged_change, no_longer_pays, pays, plainly_pays,
+    slowest_lag,
 };
 use super::report::{Evidence, Step};
 use crate::diagnose::holdout::Validation;
@@ -136,6 +138,7 @@ pub(super) fn next_step_with(
         .collect();
     paying.sort_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)));
     prefer_pole_to_dead_time(&mut paying);
+    prefer_integrator_to_lag_beyond_record(data, &mut paying);
     let paying = paying
         .into_iter()
         .find(|(_, c)| validation.keeps(c))
@@ -213,6 +216,29 @@ pub(super) fn prefer_pole_to_dead_time(paying: &mut [&(Extension, FitReport)]) {
     if let Some(k) = paying
         .iter()
         .position(|(e, c)| *e == Extension::Pole && bic(c) - lead < BIC_THRESHOLD)
+    {
+        paying[..=k].rotate_right(1);
+    }
+}
+
+/// An integrator and one more pole whose slow lag is longer than the record (its slowest
+/// time constant beyond [`FitData::duration`]) that the record cannot tell apart (their BICs
+/// within [`BIC_THRESHOLD`]): such a lag never shows its level, it only bends a ramp, and
+/// its static gain is an extrapolation (tens or hundreds of times the ramp's slope over a
+/// lag). What the record shows is the ramp, which only the integrator explains with a gain
+/// it measures (the slope): the integrator is put first.
+pub(super) fn prefer_integrator_to_lag_beyond_record(
+    data: &FitData,
+    paying: &mut [&(Extension, FitReport)],
+) {
+    let Some(first) = paying.first() else { return };
+    if first.0 != Extension::Pole || slowest_lag(&first.1.model) <= data.duration() {
+        return;
+    }
+    let lead = bic(&first.1);
+    if let Some(k) = paying
+        .iter()
+        .position(|(e, c)| *e == Extension::Integrator && bic(c) - lead < BIC_THRESHOLD)
     {
         paying[..=k].rotate_right(1);
     }
