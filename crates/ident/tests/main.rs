@@ -9,6 +9,7 @@ mod data_loading;
 mod diagnose_artefacts;
 mod diagnose_closed_loop;
 mod diagnose_generator;
+mod diagnose_hidden;
 mod diagnose_lookalikes;
 mod diagnose_real;
 mod diagnose_test_flaws;

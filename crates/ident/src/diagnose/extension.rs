@@ -108,10 +108,12 @@ pub(super) const PAIRED: [Extension; 4] = [
 ];
 
 /// The pair of extensions whose refit has the lowest BIC, started from each one's starts.
+/// A pair whose structure is `reached`'s also starts from it.
 pub(super) fn best_pair(
     data: &FitData,
     current: &FitReport,
     allowed: &[Extension],
+    reached: Option<&Model>,
     tracker: &Tracker,
 ) -> Option<((Extension, Extension), FitReport)> {
     let paired: Vec<Extension> = PAIRED.into_iter().filter(|e| allowed.contains(e)).collect();
@@ -136,6 +138,7 @@ pub(super) fn best_pair(
         starts.extend(fresh_starts_from(data, auto, e2, held));
         starts.extend(warm_starts(data, current, e1));
         starts.extend(warm_starts(data, current, e2));
+        starts.extend(reached_start(reached, s));
         // One run of a start is enough.
         let mut distinct: Vec<Values> = Vec::with_capacity(starts.len());
         starts.into_iter().for_each(|g| {
@@ -178,8 +181,9 @@ impl<'a> StartExtensions<'a> {
     }
 
     pub(super) fn get(&self) -> &[(Extension, FitReport)] {
-        self.found
-            .get_or_init(|| candidates(self.data, self.current, &EXTENSIONS, &Tracker::none()))
+        self.found.get_or_init(|| {
+            candidates(self.data, self.current, &EXTENSIONS, None, &Tracker::none())
+        })
     }
 
     /// Whether the best of the extensions explains the record with a BIC at most `bound`
@@ -205,11 +209,13 @@ pub struct Extensions(pub(super) Vec<(Extension, FitReport)>);
 
 /// Every extension of `current` that can be fitted, with its refit (on the record's
 /// reduction for a long record, [`search_fit`](crate::fit::search_fit)); aliased fits, lags beyond the record and
-/// "pairs" fitted overdamped left out.
+/// "pairs" fitted overdamped left out. An extension whose structure is `reached`'s also
+/// starts from it.
 pub(super) fn candidates(
     data: &FitData,
     current: &FitReport,
     allowed: &[Extension],
+    reached: Option<&Model>,
     tracker: &Tracker,
 ) -> Vec<(Extension, FitReport)> {
     let extended: Vec<(Extension, Structure)> = allowed
@@ -217,7 +223,11 @@ pub(super) fn candidates(
         .filter_map(|&e| Some((e, e.apply(current.model.structure)?)))
         .collect();
     // The starts (each an automatic guess: a regression) on every core.
-    let starts = crate::parallel::map(&extended, |&(e, s)| starts(data, current, e, s));
+    let starts = crate::parallel::map(&extended, |&(e, s)| {
+        let mut all = starts(data, current, e, s);
+        all.extend(reached_start(reached, s));
+        all
+    });
     let jobs: Vec<(Extension, Structure, Values)> = extended
         .iter()
         .zip(starts)
@@ -250,6 +260,28 @@ pub(super) fn kept_candidate(
 /// slope whatever the change, in a straight line).
 pub(super) fn drift_shown(data: &FitData, current: &Model, r: &FitReport) -> bool {
     read_drift(data, current, r).is_some_and(|d| d.shows(r.model.get(Param::Drift)))
+}
+
+/// `reached`'s values, as a start of an extension of structure `s`, when `s` is its
+/// structure.
+fn reached_start(reached: Option<&Model>, s: Structure) -> Option<Values> {
+    reached.filter(|m| m.structure == s).map(|m| m.values)
+}
+
+/// `model` with its underdamped pair as two real poles: Tp1, Tp2 = Tw·(ζ ± √(ζ² − 1)) for
+/// ζ ≥ 1, a double pole at Tw below (a pair whose ζ's interval reaches 1); a third pole
+/// stays where it is. The same model for a structure without a pair.
+pub(super) fn real_poles(model: &Model) -> Model {
+    let mut m = *model;
+    if !m.structure.underdamped {
+        return m;
+    }
+    let (tw, zeta) = (m.get(Param::Tw), m.get(Param::Zeta));
+    let root = (zeta * zeta - 1.0).max(0.0).sqrt();
+    m.structure.underdamped = false;
+    m.values.set(Param::Tp1, tw * (zeta + root));
+    m.values.set(Param::Tp2, tw * (zeta - root));
+    m
 }
 
 /// Whether a fitted pair oscillates: ζ below [`OVERDAMPED_ZETA`], and its 95 % interval

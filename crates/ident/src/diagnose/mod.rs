@@ -49,9 +49,9 @@ use crate::diagnose::test_causes::handling;
 use crate::diagnose::tracker::Tracker;
 use crate::fit::guess::auto_guess;
 use crate::fit::{FitData, FitError, FitReport, fit};
-use crate::model::{Param, Structure, Values};
+use crate::model::{Model, Param, Structure, Values};
 use explain::verdict;
-use extension::{EXTENSIONS, Extension, oscillates};
+use extension::{EXTENSIONS, Extension, oscillates, real_poles};
 use report::gain_trade;
 use step::{backward_step, next_step_with};
 
@@ -96,16 +96,41 @@ pub fn diagnose_tracked(
     tracker: &Tracker,
 ) -> DiagnoseReport {
     let handled = handling::handle(data, start, &options.fit);
-    let (mut current, mut steps, mut adequate) = run_loop(&handled, options, &EXTENSIONS, tracker);
-    if current.model.structure.underdamped && !oscillates(&current) {
-        // The pair ended overdamped (ζ ≥ 1 within its interval, once the other extensions
-        // took their part): it is two real poles, and the chain is made again without the
-        // oscillation, so that its steps name the extra pole.
-        let real: Vec<Extension> = EXTENSIONS
-            .into_iter()
-            .filter(|e| *e != Extension::Underdamped)
-            .collect();
-        (current, steps, adequate) = run_loop(&handled, options, &real, tracker);
+    let mut allowed = EXTENSIONS.to_vec();
+    let (mut current, mut steps, mut adequate) =
+        run_loop(&handled, options, &allowed, None, tracker);
+    // The chain is made again while it ends on a term that was not what the record needs,
+    // each time without that term, guided by the model reached ([`next_step_with`]: a pair
+    // of extensions that paid there is tried here too, and starts from it).
+    loop {
+        let reached = real_poles(&current.model);
+        let overdamped = current.model.structure.underdamped && !oscillates(&current);
+        if overdamped && allowed.contains(&Extension::Underdamped) {
+            // The pair ended overdamped (ζ ≥ 1 within its interval, once the other
+            // extensions took their part): it is two real poles, and the chain is made
+            // again without the oscillation, so that its steps name the extra pole (the
+            // pole and the zero of an overshoot, each alone no better than coloured noise,
+            // are tried as the pair that paid).
+            allowed.retain(|e| *e != Extension::Underdamped);
+            (current, steps, adequate) =
+                run_loop(&handled, options, &allowed, Some(&reached), tracker);
+            continue;
+        }
+        let Some(stand_in) = first_taken_out(&steps).filter(|e| allowed.contains(e)) else {
+            break;
+        };
+        // The first term named was taken out again once the later terms were in: it stood
+        // in for them (a dead time for an inverse response's dip, which the zero and its
+        // pole then explain, so that the dead time ends at or below zero). The chain is
+        // made again without it, so that its first step names what the record needs; it
+        // replaces the first chain when it ends about as well (its BIC at most
+        // [`BIC_THRESHOLD`] above), else the first chain stands.
+        allowed.retain(|e| *e != stand_in);
+        let again = run_loop(&handled, options, &allowed, Some(&reached), tracker);
+        if bic(&again.0) > bic(&current) + BIC_THRESHOLD {
+            break;
+        }
+        (current, steps, adequate) = again;
     }
     let mut test_causes = handled.causes.clone();
     let current = handling::finish(&handled, current, adequate, &mut test_causes);
@@ -125,12 +150,28 @@ pub fn diagnose_tracked(
     }
 }
 
+/// The extension of the chain's first step when it is a stand-in ([`step::STAND_INS`]) that
+/// a later step took out again ([`backward_step`]).
+fn first_taken_out(steps: &[Step]) -> Option<Extension> {
+    let first = steps.first().filter(|s| !s.removed)?;
+    let extension = match first.cause {
+        Cause::DeadTime => Extension::Delay,
+        Cause::Drift => Extension::Drift,
+        _ => return None,
+    };
+    steps[1..]
+        .iter()
+        .any(|s| s.removed && s.cause == first.cause)
+        .then_some(extension)
+}
+
 /// The loop on the handled record from its start, with the extensions `allowed`: the last
 /// fit, the steps, and whether it ended because no extension paid.
 fn run_loop(
     handled: &handling::Handled,
     options: &DiagnoseOptions,
     allowed: &[Extension],
+    reached: Option<&Model>,
     tracker: &Tracker,
 ) -> (FitReport, Vec<Step>, bool) {
     let mut current = handled.start.clone();
@@ -143,7 +184,8 @@ fn run_loop(
         tracker.extension(k + 1);
         // The first step's extensions may have been fitted by the test causes' handling.
         let known = handled.start_extensions.as_ref().filter(|_| k == 0);
-        let Some(step) = next_step_with(&handled.data, &current, &allowed, known, tracker) else {
+        let Some(step) = next_step_with(&handled.data, &current, &allowed, known, reached, tracker)
+        else {
             return (current, steps, true);
         };
         current = step.step.fit.clone();

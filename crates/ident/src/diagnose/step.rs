@@ -1,5 +1,6 @@
 //! One step of the chain: the extension that pays most (a pole preferred to a dead time
-//! that only stands in for it, a pair where no single extension pays, a look ahead past a
+//! that only stands in for it, an integrator to a pole whose lag the record cannot show
+//! settling, a pair where no single extension pays, a look ahead past a
 //! stand-in), checked on held-out data and against the output's rounding; and the backward
 //! step that drops a parameter that no longer pays.
 
@@ -10,13 +11,14 @@ use super::extension::{
 };
 use super::judge::{
     BIC_THRESHOLD, bic, far_from_white, gain, judged_change, no_longer_pays, pays, plainly_pays,
+    slowest_lag,
 };
 use super::report::{Evidence, Step};
 use crate::diagnose::holdout::Validation;
 use crate::diagnose::staircase::Staircase;
 use crate::diagnose::tracker::Tracker;
 use crate::fit::{FitData, FitOptions, FitReport, search_fit};
-use crate::model::{Param, Structure};
+use crate::model::{Model, Param, Structure};
 
 /// The terms of `current` the backward look may take out, but not `added`, the one just
 /// paid for: the first whose term no longer pays ([`no_longer_pays`]), with the step that
@@ -85,7 +87,7 @@ pub(super) fn refit_without(
 /// tried ([`best_pair`]: P1 → P2Z, P1 → P2D, …), and a pair that pays is one step naming
 /// both causes.
 pub fn next_step(data: &FitData, current: &FitReport) -> Option<Step> {
-    next_step_with(data, current, &EXTENSIONS, None, &Tracker::none()).map(|c| c.step)
+    next_step_with(data, current, &EXTENSIONS, None, None, &Tracker::none()).map(|c| c.step)
 }
 
 /// A step of the loop with the extension it made.
@@ -95,12 +97,17 @@ pub(super) struct Chosen {
 }
 
 /// [`next_step`] with only the extensions `allowed`, choosing among the extensions `known`
-/// when they were fitted already (of `current` on `data`).
+/// when they were fitted already (of `current` on `data`). `reached` is a model the record
+/// is known to reach (a chain made again without the oscillation: the first chain's model,
+/// its overdamped pair as two real poles): pairs are tried whatever the single extensions
+/// leave, since that chain paid for its pair, and an extension whose structure is the
+/// model's starts from it too.
 pub(super) fn next_step_with(
     data: &FitData,
     current: &FitReport,
     allowed: &[Extension],
     known: Option<&Extensions>,
+    reached: Option<&Model>,
     tracker: &Tracker,
 ) -> Option<Chosen> {
     let candidates = match known {
@@ -109,7 +116,7 @@ pub(super) fn next_step_with(
             .filter(|(e, _)| allowed.contains(e))
             .cloned()
             .collect(),
-        None => candidates(data, current, allowed, tracker),
+        None => candidates(data, current, allowed, reached, tracker),
     };
     let lowest = |list: Vec<&(Extension, FitReport)>| {
         list.into_iter()
@@ -131,6 +138,7 @@ pub(super) fn next_step_with(
         .collect();
     paying.sort_by(|a, b| bic(&a.1).total_cmp(&bic(&b.1)));
     prefer_pole_to_dead_time(&mut paying);
+    prefer_integrator_to_lag_beyond_record(data, &mut paying);
     let paying = paying
         .into_iter()
         .find(|(_, c)| validation.keeps(c))
@@ -158,10 +166,10 @@ pub(super) fn next_step_with(
     let (extension, paired, candidate) = match single {
         Some(chosen) => chosen,
         None => {
-            if !far && !leader_plainly {
+            if !far && !leader_plainly && reached.is_none() {
                 return None;
             }
-            let ((mut e1, mut e2), c) = best_pair(data, current, allowed, tracker)?;
+            let ((mut e1, mut e2), c) = best_pair(data, current, allowed, reached, tracker)?;
             if !pays(data, current, &c) || !validation.keeps(&c) {
                 return None;
             }
@@ -213,6 +221,29 @@ pub(super) fn prefer_pole_to_dead_time(paying: &mut [&(Extension, FitReport)]) {
     }
 }
 
+/// An integrator and one more pole whose slow lag is longer than the record (its slowest
+/// time constant beyond [`FitData::duration`]) that the record cannot tell apart (their BICs
+/// within [`BIC_THRESHOLD`]): such a lag never shows its level, it only bends a ramp, and
+/// its static gain is an extrapolation (tens or hundreds of times the ramp's slope over a
+/// lag). What the record shows is the ramp, which only the integrator explains with a gain
+/// it measures (the slope): the integrator is put first.
+pub(super) fn prefer_integrator_to_lag_beyond_record(
+    data: &FitData,
+    paying: &mut [&(Extension, FitReport)],
+) {
+    let Some(first) = paying.first() else { return };
+    if first.0 != Extension::Pole || slowest_lag(&first.1.model) <= data.duration() {
+        return;
+    }
+    let lead = bic(&first.1);
+    if let Some(k) = paying
+        .iter()
+        .position(|(e, c)| *e == Extension::Integrator && bic(c) - lead < BIC_THRESHOLD)
+    {
+        paying[..=k].rotate_right(1);
+    }
+}
+
 /// Extensions that mimic a missing part of the dynamics from the first step: a dead time
 /// takes an inverse response's dip or a fast lag's slow start, a drift a slow approach, a
 /// free Y0 a share of any misfit. When one of them leads, the pairs are looked at too.
@@ -236,7 +267,7 @@ pub(super) fn look_ahead(
     if !STAND_INS.contains(&e) || !far_from_white(data, current) {
         return (e, None, c);
     }
-    let Some(((mut e1, mut e2), pair)) = best_pair(data, current, allowed, tracker) else {
+    let Some(((mut e1, mut e2), pair)) = best_pair(data, current, allowed, None, tracker) else {
         return (e, None, c);
     };
     let better = judged_change(data, &c, &pair) < -BIC_THRESHOLD;

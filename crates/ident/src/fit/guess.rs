@@ -486,6 +486,13 @@ const REGRESSION_LAGS: usize = 12;
 const DELAY_SHARES: [f64; 4] = [0.05, 0.2, 0.4, 0.7];
 /// Damping ratios tried by [`regression_guess`] for an underdamped pair.
 const ZETAS: [f64; 3] = [0.2, 0.45, 0.75];
+/// Tz over the slowest lag the curve's guess implies (a small zero on the side the curve
+/// points at).
+const SMALL_ZERO: f64 = 0.3;
+/// Tz over the slowest lag tried by [`regression_guess`] for a zero: small ones on either
+/// side, an inverse response's, and lead zeros above the lags (an overshoot that decays
+/// with the slow lag: its peak is about Tz/Tp1 of the final level).
+const ZERO_SHARES: [f64; 6] = [SMALL_ZERO, -SMALL_ZERO, -1.0, 1.5, 2.5, 4.0];
 
 /// A least-squares guess from the whole record, driven by the measured input: the output is
 /// linear in Kp, Y0, the initial transient's X1… and the drift once the lags are chosen, so
@@ -507,7 +514,7 @@ fn regression_guess(
     }
     let mut base = start;
     base.set(Param::Ta, 0.5 * data.input.lead_range);
-    let shape = |lag: f64, share: f64, zeta: f64| {
+    let shape = |lag: f64, share: f64, zeta: f64, zero: f64| {
         let mut v = base;
         let td = if structure.delay { share * lag } else { 0.0 };
         let own = lag - td;
@@ -521,15 +528,26 @@ fn regression_guess(
         }
         if structure.zero {
             let tp = v.get(Param::Tp1).max(v.get(Param::Tw));
-            let sign = if start.get(Param::Tz) < 0.0 {
-                -1.0
-            } else {
-                1.0
-            };
-            v.set(Param::Tz, sign * 0.3 * tp);
+            v.set(Param::Tz, zero * tp);
         }
         v.set(Param::Td, td);
         v
+    };
+    // The zero's place: the curve's side first (a dip: Tz < 0), then the others the grid
+    // tries, so that a zero is guessed where the whole record puts it (a lead zero's
+    // overshoot on a record of several changes, which the first change's features do not
+    // read).
+    let curve_side = if start.get(Param::Tz) < 0.0 {
+        -SMALL_ZERO
+    } else {
+        SMALL_ZERO
+    };
+    let zeros: Vec<f64> = if structure.zero {
+        std::iter::once(curve_side)
+            .chain(ZERO_SHARES.into_iter().filter(|z| *z != curve_side))
+            .collect()
+    } else {
+        vec![curve_side]
     };
     let lo = (2.0 * ts).ln();
     let hi = (0.5 * duration).ln().max(lo);
@@ -541,13 +559,15 @@ fn regression_guess(
     };
     let mid_zeta = ZETAS[1];
     let solve = |v: Values| linear_part(data, structure, y0, v);
-    // 1. The total lag, at middle shapes.
+    // 1. The total lag, at middle shapes, with each place of a zero.
     let mut best = (0..REGRESSION_LAGS)
-        .filter_map(|i| {
+        .flat_map(|i| zeros.iter().map(move |&z| (i, z)))
+        .filter_map(|(i, z)| {
             let lag = (lo + step * i as f64).exp();
-            solve(shape(lag, mid_share, mid_zeta)).map(|(v, e)| (lag, mid_share, mid_zeta, v, e))
+            solve(shape(lag, mid_share, mid_zeta, z))
+                .map(|(v, e)| (lag, mid_share, mid_zeta, z, v, e))
         })
-        .min_by(|a, b| a.4.total_cmp(&b.4))?;
+        .min_by(|a, b| a.5.total_cmp(&b.5))?;
     // 2. The shape at that lag.
     let shares: &[f64] = if structure.delay {
         &DELAY_SHARES
@@ -561,23 +581,23 @@ fn regression_guess(
     };
     for &share in shares {
         for &zeta in zetas {
-            if let Some((v, e)) = solve(shape(best.0, share, zeta))
-                && e < best.4
+            if let Some((v, e)) = solve(shape(best.0, share, zeta, best.3))
+                && e < best.5
             {
-                best = (best.0, share, zeta, v, e);
+                best = (best.0, share, zeta, best.3, v, e);
             }
         }
     }
     // 3. The lag again, on a finer grid about the best.
     for k in [-3.0, -2.0, -1.0, 1.0, 2.0, 3.0] {
         let lag = best.0 * (k * step / 4.0).exp();
-        if let Some((v, e)) = solve(shape(lag, best.1, best.2))
-            && e < best.4
+        if let Some((v, e)) = solve(shape(lag, best.1, best.2, best.3))
+            && e < best.5
         {
-            best = (lag, best.1, best.2, v, e);
+            best = (lag, best.1, best.2, best.3, v, e);
         }
     }
-    Some(best.3)
+    Some(best.4)
 }
 
 /// The parameters the output is linear in, for the lags of `v`: Kp always, Y0 when not
