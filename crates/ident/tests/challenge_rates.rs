@@ -29,13 +29,13 @@ const PINNED: [(&str, usize, u64); 3] = [
     ("coloured_noise_only", 1391, 8346904709437230820),
 ];
 /// The rates of a right first cause asserted on the raw first draws, per level (clear,
-/// moderate, subtle): the 95 % and 80 % for moderate and subtle; for clear 95 %,
-/// not the 99 %, which the first draws do not reach: a lead zero in a record with
-/// two input changes often ends as an adequate P1 (P1 stuck with Tp1 at the fast pole), and
-/// an integrator is sometimes taken for a slow extra pole; of 200 clear challenges 194
-/// (seed 2027) and 192 (seed 9001) are right first. What is handed out is right by
-/// construction.
-const RAW_FLOORS: [f64; 3] = [0.95, 0.95, 0.80];
+/// moderate, subtle): the 95 % and 80 % for moderate and subtle; for clear 96 %,
+/// not the 99 %, which the first draws reach on seed 2027 (200 of 200) but not on
+/// seed 9001 (193 of 200): on a coarse converter's staircase (a quantum of 6–10 % of the
+/// effect, the clear flaw alone, or 2–6 % beside a drift or an integrator) the loop still
+/// buys a pole and a zero that bend to the rounding, beyond what the staircase's null
+/// replicates give them. What is handed out is right by construction.
+const RAW_FLOORS: [f64; 3] = [0.96, 0.95, 0.80];
 /// Below this many cases per level (the default smoke run) the floors are asserted with
 /// this slack: a few cases cannot measure a rate to a percent.
 const FULL_RUN: usize = 100;
