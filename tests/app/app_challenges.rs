@@ -226,10 +226,5 @@ fn a_challenge_survives_a_restart_and_fits_every_classroom_size() {
             }
             missing
         });
-    assert!(
-        problems.is_empty(),
-        "{} layout problems:\n{}",
-        problems.len(),
-        problems.join("\n")
-    );
+    crate::app_classroom::assert_no_problems(&problems);
 }

@@ -358,6 +358,16 @@ pub(crate) fn problems_everywhere(
     problems_everywhere_with(h, mode, canvases, |_, _| Vec::new())
 }
 
+/// Fails with every layout problem listed.
+pub(crate) fn assert_no_problems(problems: &[String]) {
+    assert!(
+        problems.is_empty(),
+        "{} layout problems:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
+
 /// [`problems_everywhere`] with the mode's own checks (`more`: its problems in a language).
 pub(crate) fn problems_everywhere_with(
     h: &mut Harness<'_, DegrauApp>,
@@ -467,12 +477,7 @@ fn every_mode_fits_every_classroom_size() {
     problems.extend(problems_everywhere(&mut identify, "Identify", 1));
     identify.state_mut().saved.mode = degrau::app::Mode::LeastSquares;
     problems.extend(problems_everywhere(&mut identify, "Least squares", 1));
-    assert!(
-        problems.is_empty(),
-        "{} layout problems:\n{}",
-        problems.len(),
-        problems.join("\n")
-    );
+    assert_no_problems(&problems);
 }
 /// At 1000×650 the step plot's controls are one line scrolled sideways: its scroll bar must
 /// not take the clicks on the line (it took the lower half of each toggle).

@@ -340,12 +340,7 @@ fn the_frequency_mode_fits_every_classroom_size() {
             |h, lang| missing_labels(h, tab, lang),
         ));
     }
-    assert!(
-        problems.is_empty(),
-        "{} layout problems:\n{}",
-        problems.len(),
-        problems.join("\n")
-    );
+    crate::app_classroom::assert_no_problems(&problems);
 }
 
 /// Z of the Nyquist verdict "… → Z = N + P = 2 closed-loop poles …".

@@ -281,10 +281,5 @@ fn the_tune_mode_fits_every_classroom_size() {
         "Tune, unstable",
         2,
     ));
-    assert!(
-        problems.is_empty(),
-        "{} layout problems:\n{}",
-        problems.len(),
-        problems.join("\n")
-    );
+    crate::app_classroom::assert_no_problems(&problems);
 }

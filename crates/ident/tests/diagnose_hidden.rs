@@ -21,9 +21,11 @@
 //!   after it and took it out again (Td ≤ 0). The first step must name `inverse_response`
 //!   or `extra_pole`, the final structure be P2Z, and Kp be within 10 %.
 
+use degrau_ident::challenge::flaws::{self, quantise};
+use degrau_ident::challenge::logger::logged_input;
 use degrau_ident::diagnose::{Cause, DiagnoseOptions, DiagnoseReport, diagnose};
 use degrau_ident::fit::FitData;
-use degrau_ident::model::excitation::{Excitation, Hold};
+use degrau_ident::model::excitation::{Excitation, Hold, InputStep};
 use degrau_ident::model::{Model, Param, Structure, Values};
 use degrau_ident::random::Lcg;
 
@@ -40,10 +42,7 @@ struct Rng(Lcg);
 
 impl Rng {
     fn new(seed: u64) -> Self {
-        let mut z = seed.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        Rng(Lcg(z ^ (z >> 31)))
+        Rng(Lcg(degrau_ident::challenge::seed::splitmix64(seed)))
     }
 
     fn range(&mut self, (a, b): (f64, f64)) -> f64 {
@@ -56,12 +55,6 @@ impl Rng {
 
     fn sign(&mut self) -> f64 {
         if self.0.unit() < 0.5 { -1.0 } else { 1.0 }
-    }
-
-    fn gaussian(&mut self) -> f64 {
-        let u1 = 1.0 - self.0.unit();
-        let u2 = self.0.unit();
-        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
     }
 }
 
@@ -116,36 +109,17 @@ fn record(
     } else {
         rng.range((0.3, 0.7))
     };
-    let mut e = sd * rng.gaussian();
-    for yi in &mut y {
-        *yi += e;
-        e = rho * e + sd * (1.0 - rho * rho).sqrt() * rng.gaussian();
-    }
+    let e = flaws::noise(&mut rng.0, y.len(), sd, rho);
+    y.iter_mut().zip(&e).for_each(|(yi, ei)| *yi += ei);
     let quantum = (rng.range((0.0, 1.0)) < 1.0 / 3.0).then_some(0.5 * sd);
     if let Some(q) = quantum {
-        y.iter_mut().for_each(|yi| *yi = (*yi / q).round() * q);
+        quantise(&mut y, q);
     }
-    let u: Vec<f64> = times
-        .iter()
-        .map(|&t| {
-            u0 + changes
-                .iter()
-                .filter(|c| c.0 <= t)
-                .map(|c| c.1)
-                .sum::<f64>()
-        })
-        .collect();
+    let steps: Vec<InputStep> = changes.iter().map(|&(t, du)| InputStep { t, du }).collect();
+    let u = logged_input(&times, u0, &steps);
     let input = Excitation::measured(&times, &u, None, Hold::Zoh).unwrap();
     let data = FitData { times, y, input };
-    let t0 = data.input.t0();
-    let rest: Vec<f64> = data
-        .times
-        .iter()
-        .zip(&data.y)
-        .take_while(|(t, _)| **t < t0)
-        .map(|(_, y)| *y)
-        .collect();
-    let held_y0 = rest.iter().sum::<f64>() / rest.len() as f64;
+    let held_y0 = crate::draw::mean_before(&data);
     let what = format!(
         "truth {:?} du {du:.3} back {back:?} N {n} noise {:.2} % rho {rho:.2} quantum {quantum:?}",
         truth.values,

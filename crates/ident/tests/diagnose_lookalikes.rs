@@ -124,10 +124,7 @@ struct Rng(Lcg);
 
 impl Rng {
     fn new(seed: u64) -> Self {
-        let mut z = seed.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        Rng(Lcg(z ^ (z >> 31)))
+        Rng(Lcg(degrau_ident::challenge::seed::splitmix64(seed)))
     }
 
     fn unit(&mut self) -> f64 {
@@ -449,7 +446,7 @@ fn generate(kind: Kind, index: usize) -> Case {
     } else {
         index.is_multiple_of(2)
     };
-    let held_y0 = held.then(|| mean_before(&data));
+    let held_y0 = held.then(|| crate::draw::mean_before(&data));
     start.free_offset = !held;
     Case {
         kind,
@@ -466,19 +463,6 @@ fn generate(kind: Kind, index: usize) -> Case {
         quantum,
         note,
     }
-}
-
-/// The mean of the samples before the first logged change.
-fn mean_before(data: &FitData) -> f64 {
-    let t0 = data.input.t0();
-    let before: Vec<f64> = data
-        .times
-        .iter()
-        .zip(&data.y)
-        .take_while(|(t, _)| **t < t0)
-        .map(|(_, y)| *y)
-        .collect();
-    before.iter().sum::<f64>() / before.len() as f64
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -596,7 +580,8 @@ fn oracle(case: &Case) -> String {
     let mut v = case.truth.values;
     v.set(
         Param::Y0,
-        case.held_y0.unwrap_or_else(|| mean_before(&case.data)),
+        case.held_y0
+            .unwrap_or_else(|| crate::draw::mean_before(&case.data)),
     );
     v.set(Param::Ta, 0.5 * case.data.sampling_period());
     let options = FitOptions {

@@ -1,9 +1,11 @@
 //! Random draws shared by the generated-record tests (seeded `Lcg`, so a case is the same
 //! every run): a uniform value in a range, a random sign, the two together, a standard
-//! normal; as functions of an `Lcg` or as methods of a test's own generator ([`Draws`]).
+//! normal; as functions of an `Lcg` or as methods of a test's own generator ([`Draws`]); and the
+//! level a record holds before its first change.
 //! The draws themselves are the library's (`Lcg::range`, …, shared with the challenges).
 #![allow(dead_code)] // each test binary uses its own subset
 
+use degrau_ident::fit::FitData;
 use degrau_ident::random::Lcg;
 
 /// Uniform in [a, b).
@@ -46,4 +48,17 @@ pub trait Draws {
     fn gaussian(&mut self) -> f64 {
         self.lcg().gaussian()
     }
+}
+
+/// The mean of the samples before the first logged change.
+pub fn mean_before(data: &FitData) -> f64 {
+    let t0 = data.input.t0();
+    let before: Vec<f64> = data
+        .times
+        .iter()
+        .zip(&data.y)
+        .take_while(|(t, _)| **t < t0)
+        .map(|(_, y)| *y)
+        .collect();
+    before.iter().sum::<f64>() / before.len() as f64
 }
