@@ -128,6 +128,8 @@ fn cause_field(ui: &mut Ui, current: &Current, lang: Lang, out: &mut Vec<Command
     let shown = chosen.map_or(T::ChooseCause.get(lang), |n| answer_name(n, lang));
     egui::ComboBox::from_label(T::Cause.get(lang))
         .selected_text(shown)
+        // Tall enough for most of the twenty causes (the rest scroll into view).
+        .height(560.0)
         .show_ui(ui, |ui| {
             let mut group = None;
             for n in ANSWERS {
