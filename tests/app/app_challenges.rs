@@ -211,16 +211,8 @@ fn a_challenge_survives_a_restart_and_fits_every_classroom_size() {
     assert!(shows(&h2, T::Diagnosis.get(lang)));
     let problems =
         crate::app_classroom::problems_everywhere_with(&mut h2, "Exercises", 0, |h, lang| {
-            let window = h.ctx.content_rect().expand(0.5);
-            let mut missing = Vec::new();
-            for name in [T::OpenRecord.get(lang), T::New.get(lang)] {
-                let seen = h
-                    .query_all_by_label(name)
-                    .any(|n| window.contains_rect(n.rect()));
-                if !seen {
-                    missing.push(format!("{name:?} is not on screen"));
-                }
-            }
+            let names = [T::OpenRecord.get(lang), T::New.get(lang)].map(String::from);
+            let mut missing = crate::app_classroom::not_on_screen(h, &names);
             if !shows(h, T::Check.get(lang)) {
                 missing.push("no Check button".into());
             }

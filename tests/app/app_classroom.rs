@@ -358,6 +358,19 @@ pub(crate) fn problems_everywhere(
     problems_everywhere_with(h, mode, canvases, |_, _| Vec::new())
 }
 
+/// The labels of `names` not drawn whole inside the window, each as a problem.
+pub(crate) fn not_on_screen(h: &Harness<'_, DegrauApp>, names: &[String]) -> Vec<String> {
+    let window = h.ctx.content_rect().expand(0.5);
+    names
+        .iter()
+        .filter(|name| {
+            !h.query_all_by_label(name)
+                .any(|n| window.contains_rect(n.rect()))
+        })
+        .map(|name| format!("{name:?} is not on screen"))
+        .collect()
+}
+
 /// Fails with every layout problem listed.
 pub(crate) fn assert_no_problems(problems: &[String]) {
     assert!(

@@ -390,20 +390,12 @@ fn the_exercises_mode_fits_every_classroom_size() {
     press_check(&mut h, Lang::En);
     let problems =
         crate::app_classroom::problems_everywhere_with(&mut h, "Exercises", 0, |h, lang| {
-            let window = h.ctx.content_rect().expand(0.5);
-            let mut missing = Vec::new();
-            for name in [
+            let names = [
                 degrau::app::words::exercises::open_in_design(lang),
                 T::SheetHeading.get(lang).to_string(),
                 entry(&part, &h.state().saved.exercises),
-            ] {
-                let seen = h
-                    .query_all_by_label(&name)
-                    .any(|n| window.contains_rect(n.rect()));
-                if !seen {
-                    missing.push(format!("{name:?} is not on screen"));
-                }
-            }
+            ];
+            let mut missing = crate::app_classroom::not_on_screen(h, &names);
             if !shows(h, T::Check.get(lang)) {
                 missing.push("no Check button".into());
             }
