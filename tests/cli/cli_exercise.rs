@@ -62,7 +62,7 @@ fn make_twice_with_one_seed_writes_the_same_bytes_and_a_key_the_records_do_not_r
     );
     assert_eq!(fa, fb, "the same seed must give byte-identical files");
     let k = key(&a);
-    assert_eq!(k["generator_version"], 2);
+    assert_eq!(k["generator_version"], 3);
     assert_eq!(k["seed"], 41);
     assert_eq!(k["level"], "moderate");
     let records = k["records"].as_array().expect("records");

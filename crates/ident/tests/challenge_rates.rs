@@ -9,7 +9,7 @@
 //! `cargo test -p degrau-ident --test ident challenge_rates -- --nocapture` prints the
 //! table; `DEGRAU_CHALLENGE_CASES=200` (in release) runs 200 per level,
 //! `DEGRAU_CHALLENGE_SEED=n` another seed, and `DEGRAU_CHALLENGE_DUMP=folder` writes the
-//! CSV of every first draw that is not solved there, to look at with `degrau diagnose`.
+//! CSV of every first draw that is not solved there (and its hidden truth beside it, `.truth`), to look at with `degrau diagnose`.
 
 use std::collections::BTreeMap;
 
@@ -29,13 +29,11 @@ const PINNED: [(&str, usize, u64); 3] = [
     ("coloured_noise_only", 1391, 8346904709437230820),
 ];
 /// The rates of a right first cause asserted on the raw first draws, per level (clear,
-/// moderate, subtle): the 95 % and 80 % for moderate and subtle; for clear 96 %,
-/// not the 99 %, which the first draws reach on seed 2027 (200 of 200) but not on
-/// seed 9001 (193 of 200): on a coarse converter's staircase (a quantum of 6–10 % of the
-/// effect, the clear flaw alone, or 2–6 % beside a drift or an integrator) the loop still
-/// buys a pole and a zero that bend to the rounding, beyond what the staircase's null
-/// replicates give them. What is handed out is right by construction.
-const RAW_FLOORS: [f64; 3] = [0.96, 0.95, 0.80];
+/// moderate, subtle): the 99 %, 95 % and 80 %. Measured on 200 per level: 198, 198
+/// and 199 on seed 9001 (a coarse converter's staircase no longer buys a pole and a zero
+/// once each sample is read within its quantum), 200, 199 and 196 on seed 2027. What is
+/// handed out is right by construction.
+const RAW_FLOORS: [f64; 3] = [0.99, 0.95, 0.80];
 /// Below this many cases per level (the default smoke run) the floors are asserted with
 /// this slack: a few cases cannot measure a rate to a percent.
 const FULL_RUN: usize = 100;
@@ -53,7 +51,11 @@ fn dump(level: Level, index: usize, c: &Challenge) {
     if let Ok(dir) = std::env::var("DEGRAU_CHALLENGE_DUMP") {
         let name = format!("{}_{index:03}_{}.csv", level.id(), c.truth.effect.id());
         let _ = std::fs::create_dir_all(&dir);
-        let _ = std::fs::write(std::path::Path::new(&dir).join(name), c.csv());
+        let _ = std::fs::write(std::path::Path::new(&dir).join(&name), c.csv());
+        let _ = std::fs::write(
+            std::path::Path::new(&dir).join(format!("{name}.truth")),
+            format!("{:#?}", c.truth),
+        );
     }
 }
 
@@ -299,11 +301,12 @@ fn fnv1a(text: &str) -> u64 {
     })
 }
 
-/// The bytes of generator version 2, pinned: a change to the generator that changes a
-/// record must bump `GENERATOR_VERSION` (and these fingerprints with it).
+/// The bytes of the generator's first draws, pinned: a change to the generator that changes
+/// a record must bump `GENERATOR_VERSION` (and these fingerprints with it). Version 3 draws
+/// as version 2 did; only which draws are handed out changed with the diagnosis.
 #[test]
-fn version_2_records_keep_their_bytes() {
-    assert_eq!(degrau_ident::challenge::GENERATOR_VERSION, 2);
+fn version_3_records_keep_their_bytes() {
+    assert_eq!(degrau_ident::challenge::GENERATOR_VERSION, 3);
     let prints: Vec<(String, usize, u64)> = Level::ALL
         .iter()
         .map(|&level| {

@@ -15,6 +15,10 @@
 //!   1–2 % of that rise: a P2 whose slow lag is several records long bends the same ramp,
 //!   with a static gain tens of times the slope. The first step must name `integrator`,
 //!   the final structure be P1I, and the slope be within 10 %.
+//! - `coarse_ramp`: the same ramps under noise of 0.2–0.6 % of the rise, rounded to 2–6 %
+//!   of it (a coarse converter's staircase): least squares bends to the rounding and the
+//!   slow lag's BIC led the integrator's by more than 10; read within its quanta, the
+//!   record tells them apart no better than before. The same acceptance.
 //! - `weak_inverse_response`: P2Z with Tz −0.45 to −0.6 × Tp1 and Tp2 0.2–0.5 × Tp1 under
 //!   noise of 1–2 % of the effect: its dip is a few noise deviations deep, and a dead time
 //!   explains most of the slow start, so it paid first and the zero with its pole came
@@ -234,6 +238,26 @@ fn accept_of(cases: usize, class: &str, make: fn(usize) -> Case, first: &[Cause]
 /// noise of 1–2 % of that rise, one change.
 fn short_ramp(index: usize) -> Case {
     let mut rng = Rng::new(0x1A7E_0000 + index as u64);
+    ramp(&mut rng, (0.01, 0.02))
+}
+
+/// The `index`-th short ramp read through a coarse converter: noise of 0.2–0.6 % of its
+/// rise, rounded to 2–6 % of it (a staircase, the noise a tenth of the quantum or less).
+fn coarse_ramp(index: usize) -> Case {
+    let mut rng = Rng::new(0xC0A7_5E00 + index as u64);
+    let mut case = ramp(&mut rng, (0.002, 0.006));
+    let y = &mut case.data.y;
+    let rise = (y[y.len() - 1] - y[0]).abs();
+    let quantum = rng.range((0.02, 0.06)) * rise;
+    quantise(y, quantum);
+    case.held_y0 = crate::draw::mean_before(&case.data);
+    case.what += &format!(" coarse {quantum:.4}");
+    case
+}
+
+/// A P1I whose ramp rises by only 2–3 |Δu| over the record, under noise of `noise` (share
+/// of that rise), one change.
+fn ramp(rng: &mut Rng, noise: (f64, f64)) -> Case {
     let tp1 = rng.log_range((1.0, 20.0));
     let hold = rng.range((6.0, 10.0)) * tp1;
     let rise = rng.range((2.0, 3.0));
@@ -245,7 +269,7 @@ fn short_ramp(index: usize) -> Case {
     ]);
     let truth = Model::new(Structure::parse("P1I").unwrap(), v);
     let du = rng.sign() * rng.log_range((0.5, 10.0));
-    record(&mut rng, truth, (du, None), hold, (0.01, 0.02))
+    record(rng, truth, (du, None), hold, noise)
 }
 
 #[test]
@@ -254,6 +278,17 @@ fn a_short_ramp_is_an_integrator_not_a_lag_beyond_the_record() {
         RAMP_CASES,
         "short_ramp",
         short_ramp,
+        &[Cause::Integrator],
+        "P1I",
+    );
+}
+
+#[test]
+fn a_short_ramp_on_a_staircase_is_an_integrator_not_a_lag_beyond_the_record() {
+    accept_of(
+        RAMP_CASES,
+        "coarse_ramp",
+        coarse_ramp,
         &[Cause::Integrator],
         "P1I",
     );

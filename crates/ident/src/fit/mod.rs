@@ -35,6 +35,7 @@
 //! does not swing between the samples).
 
 mod alias;
+pub mod censored;
 pub mod guess;
 pub mod handles;
 pub mod lag_pair;

@@ -435,11 +435,12 @@ impl Localize for Ending {
             ),
             Ending::WithinRounding => (
                 "Adequate to the output's resolution: the output is a staircase (its noise under \
-                 half a quantum), and no extension gains more than rounding gives on records \
-                 simulated from this model; what is left is the rounding, not structure.",
+                 half a quantum), and once each sample is read as lying anywhere within its \
+                 quantum no extension lowers BIC by 10; what is left is the rounding, not \
+                 structure.",
                 "Adequado à resolução da saída: a saída é uma escada (seu ruído abaixo de meio \
-                 quantum), e nenhuma extensão ganha mais do que o arredondamento dá em \
-                 registros simulados com este modelo; o que resta é o arredondamento, não \
+                 quantum), e, lida cada amostra como estando em qualquer ponto do seu quantum, \
+                 nenhuma extensão baixa o BIC em 10; o que resta é o arredondamento, não \
                  estrutura.",
             ),
             Ending::StepLimit => (
