@@ -1,7 +1,8 @@
 //! The Challenges of the Exercises mode through egui_kittest (issue 27, item 2): a moderate
 //! challenge drawn off the UI thread, the key's answers typed are right on Check with the
 //! evidence shown, a wrong cause is wrong, Degrau's diagnosis is offered only after Check,
-//! the record opens in Identify, a restart keeps the challenge and the answers, and the
+//! the record opens in Identify, a restart keeps the challenge and the answers (and says so
+//! when an earlier generator drew it), and the
 //! layout holds at the classroom's sizes.
 
 use crate::kit;
@@ -10,7 +11,7 @@ use degrau::app::exercises::challenge_view::{answer_name, entry, evidence, verdi
 use degrau::app::exercises::challenges::Named;
 use degrau::app::words::challenges::Challenges as T;
 use degrau::app::{DegrauApp, Mode, Saved};
-use degrau::ident::challenge::{Challenge, Level, challenge};
+use degrau::ident::challenge::{Challenge, GENERATOR_VERSION, Level, challenge};
 use degrau::ident::diagnose::Cause;
 use degrau::text::Lang;
 use eframe::egui;
@@ -219,4 +220,40 @@ fn a_challenge_survives_a_restart_and_fits_every_classroom_size() {
             missing
         });
     crate::app_classroom::assert_no_problems(&problems);
+}
+
+/// A challenge kept by an earlier generator version is drawn again on restart and the
+/// student is told the record may differ (in Portuguese here); the answers stay, and the
+/// next restart, now of this version's challenge, says nothing.
+#[test]
+fn a_challenge_of_an_earlier_generator_is_drawn_again_and_said_so() {
+    let lang = Lang::Pt;
+    let mut h = drawn(lang, FLAW);
+    assert!(!shows(&h, T::DrawnAgain.get(lang)));
+    kit::type_number(&mut h, T::Structure.get(lang), 0, "P1");
+    let mut saved = h.state().saved.clone();
+    let current = saved.exercises.challenges.current.as_mut().expect("kept");
+    assert_eq!(current.generator_version, GENERATOR_VERSION);
+    current.generator_version = GENERATOR_VERSION - 1;
+    let dir = std::env::temp_dir().join(format!("degrau-redrawn-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let path = dir.join("state.json");
+    let restart = |saved: &Saved| {
+        let json = serde_json::to_string_pretty(saved).expect("JSON");
+        degrau::app::persist::write_atomically(&path, json.as_bytes()).expect("written");
+        let mut h = harness(DegrauApp::with_state_file(path.clone()), [1000.0, 650.0]);
+        kit::wait_for(&mut h, |h| h.state().exercises.board.drawn.is_some());
+        h
+    };
+    let h2 = restart(&saved);
+    assert!(shows(&h2, T::DrawnAgain.get(lang)));
+    let again = h2.state().saved.clone();
+    let current = again.exercises.challenges.current.as_ref().expect("kept");
+    assert_eq!(
+        (current.generator_version, current.structure.as_str()),
+        (GENERATOR_VERSION, "P1")
+    );
+    let h3 = restart(&again);
+    assert!(!shows(&h3, T::DrawnAgain.get(lang)));
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -19,6 +19,7 @@ pub mod discrete;
 pub mod divided;
 pub mod expr;
 pub mod feedback;
+pub mod golden;
 pub mod locus;
 pub mod markov;
 pub mod metrics;

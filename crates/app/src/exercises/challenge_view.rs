@@ -83,6 +83,10 @@ pub fn show(ui: &mut Ui, session: &Session, kept: &Saved, look: &Look, out: &mut
         return;
     };
     ui.label(RichText::new(entry(current, lang)).strong());
+    if board.drawn_again {
+        let notice = RichText::new(T::DrawnAgain.get(lang)).color(look.palette.warning);
+        ui.add(egui::Label::new(notice).wrap());
+    }
     ui.add(egui::Label::new(T::Task.get(lang)).wrap());
     ui.add_space(4.0);
     if ui.button(T::OpenRecord.get(lang)).clicked() {

@@ -7,7 +7,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use degrau_ident::challenge::{Challenge, Grade, Level, challenge_until, diagnosis};
+use degrau_ident::challenge::{
+    Challenge, GENERATOR_VERSION, Grade, Level, challenge_until, diagnosis,
+};
 use degrau_ident::diagnose::test_causes::TestCauseKind;
 use degrau_ident::diagnose::{Cause, DiagnoseReport};
 
@@ -106,6 +108,11 @@ pub struct Current {
     /// Whether the answers were checked (the verdicts shown again on restore).
     #[serde(default)]
     pub checked: bool,
+    /// The challenge generator's version that drew it ([`GENERATOR_VERSION`]; 0: an
+    /// earlier one, which did not write it). Another version draws another record from
+    /// the same seed, so a restore by it says so.
+    #[serde(default)]
+    pub generator_version: u32,
 }
 
 /// One answer field.
@@ -141,6 +148,9 @@ pub struct Board {
     pub drawn: Option<Drawn>,
     pub checked: Option<Checked>,
     pub diagnosis_shown: bool,
+    /// The challenge kept was drawn by another generator version (this one's number was
+    /// written in its place): its record may differ from the one the student saw.
+    pub drawn_again: bool,
 }
 
 impl std::fmt::Debug for Board {
@@ -154,10 +164,14 @@ impl std::fmt::Debug for Board {
 }
 
 impl Board {
-    /// The board of a restored state: the challenge kept is drawn again (deterministic).
-    pub fn restored(kept: &Kept) -> Self {
+    /// The board of a restored state: the challenge kept is drawn again (deterministic
+    /// within one generator version; one drawn by another is marked [`Board::drawn_again`]
+    /// and from now on kept as this version's).
+    pub fn restored(kept: &mut Kept) -> Self {
         let mut board = Self::default();
-        if let Some(c) = &kept.current {
+        if let Some(c) = kept.current.as_mut() {
+            board.drawn_again = c.generator_version != GENERATOR_VERSION;
+            c.generator_version = GENERATOR_VERSION;
             board.draw(c.seed, c.index, c.level);
         }
         board
@@ -213,10 +227,12 @@ impl Board {
                     structure: String::new(),
                     kp: String::new(),
                     checked: false,
+                    generator_version: GENERATOR_VERSION,
                 });
                 self.drawn = None;
                 self.checked = None;
                 self.diagnosis_shown = false;
+                self.drawn_again = false;
                 self.draw(seed, index, kept.level);
             }
             C::Cancel => {
@@ -315,6 +331,7 @@ mod tests {
                 structure: String::new(),
                 kp: String::new(),
                 checked: false,
+                generator_version: GENERATOR_VERSION,
             }),
             ..Kept::default()
         };
@@ -360,6 +377,29 @@ mod tests {
             checked.kp_problem,
             Some(FieldError::NotANumber { .. })
         ));
+    }
+
+    #[test]
+    fn a_challenge_of_another_generator_version_is_drawn_again_and_said_so() {
+        let (_, mut kept, _) = board();
+        let fresh = Board::restored(&mut kept);
+        assert!(!fresh.drawn_again, "this version's own challenge");
+        // A state written before the version was kept reads as version 0.
+        let mut json = serde_json::to_value(&kept).unwrap();
+        json["current"]
+            .as_object_mut()
+            .unwrap()
+            .remove("generator_version");
+        let mut old: Kept = serde_json::from_value(json).unwrap();
+        assert_eq!(old.current.as_ref().unwrap().generator_version, 0);
+        let again = Board::restored(&mut old);
+        assert!(again.drawn_again);
+        assert_eq!(
+            old.current.as_ref().unwrap().generator_version,
+            GENERATOR_VERSION
+        );
+        // Once kept as this version's, the next restore says nothing.
+        assert!(!Board::restored(&mut old).drawn_again);
     }
 
     #[test]

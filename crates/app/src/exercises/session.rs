@@ -77,7 +77,7 @@ impl Session {
     /// again (its verdict shown as before the restart, its mark brought up to date).
     pub fn restored(kept: &mut Saved) -> Self {
         let mut session = Self {
-            board: Board::restored(&kept.challenges),
+            board: Board::restored(&mut kept.challenges),
             ..Self::default()
         };
         let checked: Vec<String> = kept

@@ -55,6 +55,10 @@ degrau_words::phrases! {
             "O diagnóstico não pôde ser feito neste registro."
         ),
         NumberLabel => ("Challenge", "Desafio"),
+        DrawnAgain => (
+            "This challenge was drawn by an earlier version of Degrau, whose challenge generator differed, and has been drawn again by this one from the same seed: the record may differ from the one you saw. Your answers are kept; check them against this record.",
+            "Este desafio foi sorteado por uma versão anterior do Degrau, cujo gerador de desafios era outro, e foi sorteado de novo por esta a partir da mesma semente: o registro pode diferir do que você viu. As suas respostas foram mantidas; verifique-as com este registro."
+        ),
     }
 }
 

@@ -18,6 +18,8 @@
 //! around the fit the crate already has; the normal tail comes from `libm`'s `erfc`.
 //! Cost: a few weighted fits of the whole record (four to six on the staircases tested).
 
+use degrau_lti::golden::golden_max;
+
 use crate::fit::{FitData, FitOptions, fit_weighted};
 use crate::model::{Model, Structure, Values};
 
@@ -129,28 +131,12 @@ fn log_likelihood(y: &[f64], f: &[f64], half: f64, noise: f64) -> f64 {
 
 /// The σ that makes Σ ln P largest under the predictions `f`: golden section on ln σ.
 fn likeliest_noise(y: &[f64], f: &[f64], half: f64) -> f64 {
-    const GOLDEN: f64 = 0.618_033_988_749_895;
-    const ITERATIONS: usize = 48;
     let q = 2.0 * half;
     let score = |ln_sigma: f64| log_likelihood(y, f, half, ln_sigma.exp());
-    let (mut lo, mut hi) = ((SIGMA_RANGE.0 * q).ln(), (SIGMA_RANGE.1 * q).ln());
-    let mut left = hi - GOLDEN * (hi - lo);
-    let mut right = lo + GOLDEN * (hi - lo);
-    let (mut at_left, mut at_right) = (score(left), score(right));
-    for _ in 0..ITERATIONS {
-        if at_left > at_right {
-            hi = right;
-            (right, at_right) = (left, at_left);
-            left = hi - GOLDEN * (hi - lo);
-            at_left = score(left);
-        } else {
-            lo = left;
-            (left, at_left) = (right, at_right);
-            right = lo + GOLDEN * (hi - lo);
-            at_right = score(right);
-        }
-    }
-    (0.5 * (lo + hi)).exp()
+    let (lo, hi) = ((SIGMA_RANGE.0 * q).ln(), (SIGMA_RANGE.1 * q).ln());
+    // ln σ to 1e-6 (σ to a millionth of itself).
+    let (ln_sigma, _) = golden_max(score, lo, hi, 1e-6 / lo.abs().max(hi.abs()).max(1.0));
+    ln_sigma.exp()
 }
 
 /// Each sample's Newton target and weight for the next weighted fit (see the module docs).
@@ -212,13 +198,19 @@ mod tests {
         (FitData { times, y, input }, truth)
     }
 
+    /// P1 (Y0 free) fitted to `data` by least squares from its automatic guess.
+    fn least_squares(data: &FitData) -> (Structure, crate::fit::FitReport) {
+        let s = Structure::parse("P1").unwrap();
+        let guess = crate::fit::guess::auto_guess(data, s, None);
+        let ls = crate::fit::fit(data, s, guess, &FitOptions::default(), &mut ()).unwrap();
+        (s, ls)
+    }
+
     #[test]
     fn a_staircase_gives_back_its_gain_and_noise() {
         // q = 0.75 is 8.9 % of the 8.4 effect; σ = 0.015 is 2 % of q.
         let (data, truth) = staircase(0.75, 0.015);
-        let s = Structure::parse("P1").unwrap();
-        let guess = crate::fit::guess::auto_guess(&data, s, None);
-        let ls = crate::fit::fit(&data, s, guess, &FitOptions::default(), &mut ()).unwrap();
+        let (s, ls) = least_squares(&data);
         let c = censored_fit(&data, 0.75, s, ls.model.values).unwrap();
         let off = |m: &Model, p: Param| m.get(p) / truth.get(p) - 1.0;
         assert!(off(&c.model, Param::Kp).abs() < 0.004, "{:?}", c.model);
@@ -247,9 +239,7 @@ mod tests {
         // σ = q: the rounding averages out, and the censored fit agrees with least squares
         // within its interval.
         let (data, truth) = staircase(0.05, 0.05);
-        let s = Structure::parse("P1").unwrap();
-        let guess = crate::fit::guess::auto_guess(&data, s, None);
-        let ls = crate::fit::fit(&data, s, guess, &FitOptions::default(), &mut ()).unwrap();
+        let (s, ls) = least_squares(&data);
         let c = censored_fit(&data, 0.05, s, ls.model.values).unwrap();
         let kp = ls.params.iter().find(|e| e.param == Param::Kp).unwrap();
         let (lo, hi) = kp.ci95.unwrap();

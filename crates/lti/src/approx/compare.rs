@@ -17,6 +17,7 @@
 
 use serde::Serialize;
 
+use crate::golden::golden_max;
 use crate::words::step::Metric;
 use crate::{StepInfo, StepInfoOptions, StepResponse, analyse};
 
@@ -122,7 +123,7 @@ pub fn compare(
     }
     let (start, end, h) = best_piece;
     let (lo, hi) = ((best.0 - h).max(start), (best.0 + h).min(end));
-    let refined = golden_max(&|t| gap(t).abs(), lo, hi);
+    let refined = golden_max(|t| gap(t).abs(), lo, hi, 0.0);
     if refined.1 > best.1 {
         best = refined;
     }
@@ -179,27 +180,6 @@ fn gauss3(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> f64 {
     let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
     let x = (0.6f64).sqrt() * half;
     half * (5.0 * f(mid - x) + 8.0 * f(mid) + 5.0 * f(mid + x)) / 9.0
-}
-
-/// The largest f on [a, b] (assumed unimodal there) by golden-section search: (t, f(t)).
-fn golden_max(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
-    let r = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut c, mut d) = (b - r * (b - a), a + r * (b - a));
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..80 {
-        if fc > fd {
-            b = d;
-            (d, fd) = (c, fc);
-            c = b - r * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            (c, fc) = (d, fd);
-            d = a + r * (b - a);
-            fd = f(d);
-        }
-    }
-    if fc > fd { (c, fc) } else { (d, fd) }
 }
 
 /// Each metric of [`Metric::ALL`], original against approximate.

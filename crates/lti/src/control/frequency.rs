@@ -10,6 +10,7 @@ use serde::Serialize;
 
 use crate::TransferFunction;
 use crate::control::Controller;
+use crate::golden::golden_max;
 use crate::poly::{self, C64};
 
 /// The ultimate (critical) gain and period of a plant under proportional control: the
@@ -570,7 +571,7 @@ fn refine_peaks(grid: &[f64], values: &[f64], f: impl Fn(f64) -> f64) -> Sensiti
         }
         let a = grid[i.saturating_sub(1)];
         let b = grid[(i + 1).min(grid.len() - 1)];
-        let (w, ms) = golden_max(&f, a, b);
+        let (w, ms) = golden_max(&f, a, b, 1e-12);
         let (w, ms) = if ms >= values[i] {
             (w, ms)
         } else {
@@ -581,26 +582,4 @@ fn refine_peaks(grid: &[f64], values: &[f64], f: impl Fn(f64) -> f64) -> Sensiti
         }
     }
     best
-}
-
-/// The maximum of `f` on [a, b] by golden-section search, to 1e-12 of b in ω.
-fn golden_max(f: &impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    let mut x1 = b - g * (b - a);
-    let mut x2 = a + g * (b - a);
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    while b - a > 1e-12 * b {
-        if f1 < f2 {
-            a = x1;
-            (x1, f1) = (x2, f2);
-            x2 = a + g * (b - a);
-            f2 = f(x2);
-        } else {
-            b = x2;
-            (x2, f2) = (x1, f1);
-            x1 = b - g * (b - a);
-            f1 = f(x1);
-        }
-    }
-    if f1 > f2 { (x1, f1) } else { (x2, f2) }
 }

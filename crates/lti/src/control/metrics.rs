@@ -23,6 +23,7 @@
 use serde::Serialize;
 
 use super::delay_loop::{LoopInput, LoopResponse};
+use crate::golden::golden_max;
 
 /// The settling band: 2 % (as `stepinfo` and the notes).
 pub const SETTLING_BAND: f64 = 0.02;
@@ -207,44 +208,14 @@ fn extreme(pieces: &[Piece], f: impl Fn(f64) -> f64) -> Peak {
     let last = p.offsets.len() - 1;
     for (lo, hi) in [(at.1.saturating_sub(1), at.1), (at.1, (at.1 + 1).min(last))] {
         if hi > lo {
-            let g = golden_max(|t| f(p.eval(t)), p.time(lo), p.time(hi));
+            let (time, value) = golden_max(|t| f(p.eval(t)), p.time(lo), p.time(hi), 1e-15);
+            let g = Peak { value, time };
             if g.value > best.value {
                 best = g;
             }
         }
     }
     best
-}
-
-/// The maximum of g on [a, b] by golden section (g unimodal there).
-fn golden_max(g: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> Peak {
-    let ratio = (5f64.sqrt() - 1.0) / 2.0;
-    let mut c = b - ratio * (b - a);
-    let mut d = a + ratio * (b - a);
-    let (mut gc, mut gd) = (g(c), g(d));
-    for _ in 0..80 {
-        if gc > gd {
-            b = d;
-            d = c;
-            gd = gc;
-            c = b - ratio * (b - a);
-            gc = g(c);
-        } else {
-            a = c;
-            c = d;
-            gc = gd;
-            d = a + ratio * (b - a);
-            gd = g(d);
-        }
-        if b - a <= 1e-15 * b.abs().max(1e-300) {
-            break;
-        }
-    }
-    let t = (a + b) / 2.0;
-    Peak {
-        value: g(t),
-        time: t,
-    }
 }
 
 /// Where h changes sign between a and b (h(a)·h(b) ≤ 0), by bisection.
