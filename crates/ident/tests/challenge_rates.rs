@@ -30,9 +30,9 @@ const PINNED: [(&str, usize, u64); 3] = [
 ];
 /// The rates of a right first cause asserted on the raw first draws, per level (clear,
 /// moderate, subtle): the 99 %, 95 % and 80 %. Measured on 200 per level: 198, 198
-/// and 199 on seed 9001 (a coarse converter's staircase no longer buys a pole and a zero
-/// once each sample is read within its quantum), 200, 199 and 196 on seed 2027. What is
-/// handed out is right by construction.
+/// and 200 on seed 9001 (a coarse converter's staircase no longer buys a pole and a zero
+/// once each sample is read within its quantum), 200, 199 and 197 on seed 2027, 200, 200
+/// and 195 on seed 4242. What is handed out is right by construction.
 const RAW_FLOORS: [f64; 3] = [0.99, 0.95, 0.80];
 /// Below this many cases per level (the default smoke run) the floors are asserted with
 /// this slack: a few cases cannot measure a rate to a percent.

@@ -182,3 +182,29 @@ fn a_coarse_staircase_buys_no_structure_and_keeps_its_gain() {
     }
     assert!(misses.is_empty(), "{}", misses.join("\n"));
 }
+
+#[test]
+fn a_level_before_the_step_off_by_its_own_noise_is_no_offset() {
+    // Stepped and stepped back, the record at rest after the return five times as long as
+    // before the step: the mean of the 136 samples before the step, lifted by 2.7 of its
+    // standard errors (as chance lifts one record in 140), is no operating point off.
+    let (sd, before) = (0.023, 136.0);
+    let lift = 2.7 * sd / f64::sqrt(before);
+    let changes = [(13.63, 7.94, -0.87), (81.83, -7.94, -0.87)];
+    let csv = p1_record(7.1, 70.03, 22.8, &changes, (0.1, 1460), sd);
+    let lifted: String = csv
+        .lines()
+        .enumerate()
+        .map(|(k, line)| match line.rsplit_once(',') {
+            Some((head, y)) if k > 0 && k <= before as usize => {
+                format!("{head},{:.5}\n", y.parse::<f64>().unwrap() + lift)
+            }
+            _ => format!("{line}\n"),
+        })
+        .collect();
+    let r = diagnosis(&lifted).unwrap();
+    let causes: Vec<&str> = r.steps.iter().map(|s| s.cause.id()).collect();
+    assert!(causes.is_empty(), "{causes:?}");
+    let kp = r.final_fit.model.get(Param::Kp);
+    assert!((kp / -0.87 - 1.0).abs() < 0.01, "{kp}");
+}

@@ -8,6 +8,7 @@ use super::explain::characteristic_time;
 use super::judge::bic;
 use super::search::{PAIRS_TAKEN_ON, best_fits};
 use crate::diagnose::drift_evidence::read_drift;
+use crate::diagnose::offset_evidence::offset_shown;
 use crate::diagnose::tracker::Tracker;
 use crate::fit::guess::{auto_guess, features};
 use crate::fit::{FitData, FitOptions, FitReport, fit};
@@ -239,8 +240,8 @@ pub(super) fn candidates(
         .collect()
 }
 
-/// A candidate's own conditions: a pair that oscillates, a drift the record shows, a
-/// finite BIC.
+/// A candidate's own conditions: a pair that oscillates, a drift the record shows, an
+/// operating point off the held one beyond its noise ([`offset_shown`]), a finite BIC.
 pub(super) fn kept_candidate(
     data: &FitData,
     current: &FitReport,
@@ -250,6 +251,7 @@ pub(super) fn kept_candidate(
     let own = match e {
         Extension::Underdamped => oscillates(r),
         Extension::Drift => drift_shown(data, &current.model, r),
+        Extension::FreeOffset => offset_shown(data, &current.model, r),
         _ => true,
     };
     own && bic(r).is_finite()

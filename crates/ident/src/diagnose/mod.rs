@@ -25,6 +25,7 @@ mod explain;
 pub(crate) mod extension;
 pub mod holdout;
 pub(crate) mod judge;
+pub mod offset_evidence;
 pub mod per_step;
 mod report;
 pub mod residuals;
