@@ -148,8 +148,10 @@ fn a_coarse_staircase_buys_no_structure_and_keeps_its_gain() {
     // P1 records read through a converter of 6–10 % of the effect, the noise 1–5 % of the
     // quantum (a staircase), one or two changes between samples, far from zero: least
     // squares bent a pole and a zero to the rounding (4 of 200 clear challenges did), which
-    // the samples read within their quanta do not pay for.
+    // the samples read within their quanta do not pay for; and read so, the gain is the
+    // process's within 1.5 %, and several times nearer on average than least squares'.
     let mut misses = Vec::new();
+    let mut offs = Vec::new();
     for i in 0..8u64 {
         let mut rng = Lcg(0x57A1_C0A5 + i);
         let mut range = |a: f64, b: f64| a + (b - a) * rng.unit();
@@ -171,16 +173,31 @@ fn a_coarse_staircase_buys_no_structure_and_keeps_its_gain() {
         let r = diagnosis(&rounded(&csv, quantum)).unwrap();
         let kp = r.final_fit.model.get(Param::Kp);
         let causes: Vec<&str> = r.steps.iter().map(|s| s.cause.id()).collect();
-        if !causes.is_empty()
+        let within = r.test_causes.iter().find_map(|c| match c.evidence {
+            TestEvidence::Quantisation { within_quanta, .. } => within_quanta,
+            _ => None,
+        });
+        let off = |k: f64| (k / gain - 1.0).abs();
+        offs.push((off(kp), within.map_or(f64::INFINITY, off)));
+        let bad = !causes.is_empty()
             || !named(&r, TestCauseKind::Quantisation)
-            || (kp / gain - 1.0).abs() > 0.05
-        {
+            || off(kp) > 0.05
+            || !within.is_some_and(|w| off(w) < 0.015);
+        if bad {
             misses.push(format!(
-                "#{i}: {causes:?} Kp {kp} (true {gain}) q {quantum} sd {sd}"
+                "#{i}: {causes:?} Kp {kp}, within the quanta {within:?} (true {gain}) q \
+                 {quantum} sd {sd}"
             ));
         }
     }
     assert!(misses.is_empty(), "{}", misses.join("\n"));
+    // Measured: 0.3 % against 1.5 % on average.
+    let mean = |pick: fn(&(f64, f64)) -> f64| offs.iter().map(pick).sum::<f64>() / 8.0;
+    let (least_squares, within) = (mean(|o| o.0), mean(|o| o.1));
+    assert!(
+        within < 0.5 * least_squares,
+        "{within} against {least_squares}"
+    );
 }
 
 #[test]

@@ -18,7 +18,7 @@
 use super::{
     FittedRecord, TestCause, closed_loop::closed_loop, coloured_noise, disturbance, fit_held,
     imperfect_step, nonlinearity, not_at_rest, not_at_rest_with, outliers, own_fit_held,
-    quantisation, sampling, saturation, small_step, steps_held, time_constants,
+    quantisation, read_within_quanta, sampling, saturation, small_step, steps_held, time_constants,
 };
 use crate::diagnose::drift_evidence::{read_drift, read_drift_after};
 use crate::diagnose::extension::{Extensions, StartExtensions};
@@ -276,7 +276,7 @@ pub fn finish(
 fn reported(data: &FitData, last: &FitReport) -> Vec<TestCause> {
     let mut found: Vec<TestCause> = imperfect_step(data).into_iter().collect();
     if let Some(record) = FittedRecord::new(data, last) {
-        found.extend(quantisation(&record));
+        found.extend(quantisation(&record).map(|c| read_within_quanta(c, &record)));
         found.extend(sampling(&record));
         found.extend(small_step(&record));
     }

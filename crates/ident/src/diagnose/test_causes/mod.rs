@@ -40,7 +40,7 @@ pub use imperfect_step::{imperfect_step, input_at};
 pub use nonlinearity::{
     HELD_LAGS, change_held, fit_held, nonlinearity, own_fit_held, step_gains, steps_held,
 };
-pub use quantisation::{COARSE_SHARE, quantisation, resolution};
+pub use quantisation::{COARSE_SHARE, quantisation, read_within_quanta, resolution};
 pub use sampling::{TimeScales, sampling, sampling_checks, time_constants};
 pub use small_step::{SMALL_STEP_RATIO, small_step};
 
@@ -228,13 +228,17 @@ pub enum TestEvidence {
     ColouredNoise { lag1: f64, widening: f64 },
     /// The output moves in steps of `resolution`, `share` of the step's effect; `noise` is
     /// the residuals' robust standard deviation. `kp_floor`: when the noise is under half a
-    /// step it does not dither the quantiser, and Kp is known no better than ± this
-    /// (resolution/|Δu|), whatever its interval says.
+    /// step it does not dither the quantiser, and least squares' Kp is known no better than
+    /// ± this (resolution/|Δu|), whatever its interval says. `within_quanta`: then, the Kp
+    /// of the final structure refitted with each sample read as lying anywhere within its
+    /// quantum ([`censored_fit`](crate::fit::censored::censored_fit)), when it could be.
     Quantisation {
         resolution: f64,
         share: f64,
         noise: f64,
         kp_floor: Option<f64>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        within_quanta: Option<f64>,
     },
     /// The sampling period `ts` against the notes' rules: clearly too slow, or (`too_slow`
     /// false) clearly too fast with the model's largest move between two samples

@@ -19,6 +19,8 @@
 //! refine it and one to check it).
 
 use super::{FittedRecord, Handling, TestCause, TestCauseKind, TestEvidence};
+use crate::fit::censored::censored_fit;
+use crate::model::Param;
 
 /// A resolution at or above this share of the step's effect is coarse (see the module docs).
 pub const COARSE_SHARE: f64 = 0.005;
@@ -97,10 +99,32 @@ pub fn quantisation(record: &FittedRecord) -> Option<TestCause> {
             share,
             noise,
             kp_floor: (!dithered && du > 0.0).then(|| q / du),
+            within_quanta: None,
         },
         interval: None,
         handling: Handling::Reported,
     })
+}
+
+/// `cause` with the gain read within the quanta when it bounds least squares' gain (a
+/// staircase): the final structure of `record`, Y0 free, refitted by the censored
+/// likelihood (a few weighted fits, once per diagnosis).
+pub fn read_within_quanta(mut cause: TestCause, record: &FittedRecord) -> TestCause {
+    if let TestEvidence::Quantisation {
+        resolution,
+        kp_floor: Some(_),
+        within_quanta,
+        ..
+    } = &mut cause.evidence
+    {
+        let mut structure = record.fit.model.structure;
+        structure.free_offset = true;
+        let fit = censored_fit(record.data, *resolution, structure, record.fit.model.values);
+        *within_quanta = fit
+            .map(|f| f.model.get(Param::Kp))
+            .filter(|kp| kp.is_finite());
+    }
+    cause
 }
 
 #[cfg(test)]

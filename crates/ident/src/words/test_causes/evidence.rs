@@ -289,6 +289,7 @@ impl Localize for TestEvidence {
                 share,
                 noise,
                 kp_floor,
+                within_quanta,
             } => {
                 let (q, s, sigma) = (
                     n4(lang, *resolution),
@@ -319,7 +320,19 @@ impl Localize for TestEvidence {
                                  cancela na média: Kp não é conhecido melhor que ± {f}, diga o \
                                  que disser seu intervalo."
                             ),
-                        )
+                        ) + &within_quanta.map_or_else(String::new, |k| {
+                            let k = n4(lang, k);
+                            lang.pick(
+                                format!(
+                                    " Read with each sample anywhere within its quantum (the \
+                                     interval-censored fit), Kp = {k}."
+                                ),
+                                format!(
+                                    " Lida cada amostra como estando em qualquer ponto do seu \
+                                     quantum (o ajuste censurado por intervalo), Kp = {k}."
+                                ),
+                            )
+                        })
                     }
                     None => {
                         let r = n4(lang, resolution / 12f64.sqrt());
