@@ -33,6 +33,8 @@ use degrau_ident::model::excitation::{Excitation, Hold, InputStep};
 use degrau_ident::model::{Model, Param, Structure, Values};
 use degrau_ident::random::Lcg;
 
+use crate::draw::Draws;
+
 /// Cases per class.
 const CASES: usize = 8;
 /// Cases of the short ramps (cheap: a ramp is diagnosed in a few tens of milliseconds).
@@ -42,23 +44,19 @@ const MAY_MISS: usize = 1;
 /// Relative tolerance of the final Kp.
 const KP_TOLERANCE: f64 = 0.10;
 
+/// The crate's LCG, seeded through a SplitMix64 scramble of the case's number; its draws
+/// are the shared ones ([`Draws`]).
 struct Rng(Lcg);
 
 impl Rng {
     fn new(seed: u64) -> Self {
         Rng(Lcg(degrau_ident::challenge::seed::splitmix64(seed)))
     }
+}
 
-    fn range(&mut self, (a, b): (f64, f64)) -> f64 {
-        a + (b - a) * self.0.unit()
-    }
-
-    fn log_range(&mut self, (a, b): (f64, f64)) -> f64 {
-        (a.ln() + (b.ln() - a.ln()) * self.0.unit()).exp()
-    }
-
-    fn sign(&mut self) -> f64 {
-        if self.0.unit() < 0.5 { -1.0 } else { 1.0 }
+impl Draws for Rng {
+    fn lcg(&mut self) -> &mut Lcg {
+        &mut self.0
     }
 }
 

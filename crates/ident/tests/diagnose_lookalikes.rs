@@ -62,6 +62,8 @@ use degrau_ident::model::excitation::{Excitation, Hold};
 use degrau_ident::model::{Model, Param, Structure, Values};
 use degrau_ident::random::Lcg;
 
+use crate::draw::Draws;
+
 /// Cases per kind.
 const CASES: usize = 20;
 /// Share of a kind's cases that must pass.
@@ -119,7 +121,8 @@ impl Kind {
 // The generator
 // ---------------------------------------------------------------------------------------------
 
-/// The crate's LCG, seeded through a SplitMix64 scramble of the case's number.
+/// The crate's LCG, seeded through a SplitMix64 scramble of the case's number; its draws
+/// are the shared ones ([`Draws`]).
 struct Rng(Lcg);
 
 impl Rng {
@@ -131,33 +134,19 @@ impl Rng {
         self.0.unit()
     }
 
-    fn range(&mut self, (a, b): (f64, f64)) -> f64 {
-        a + (b - a) * self.unit()
-    }
-
-    /// Log-uniform in [a, b] (a, b > 0).
-    fn log_range(&mut self, (a, b): (f64, f64)) -> f64 {
-        (a.ln() + (b.ln() - a.ln()) * self.unit()).exp()
-    }
-
-    fn signed(&mut self, r: (f64, f64)) -> f64 {
-        let s = if self.unit() < 0.5 { -1.0 } else { 1.0 };
-        s * self.range(r)
-    }
-
     fn signed_log(&mut self, r: (f64, f64)) -> f64 {
-        let s = if self.unit() < 0.5 { -1.0 } else { 1.0 };
+        let s = self.sign();
         s * self.log_range(r)
     }
 
     fn count(&mut self, (a, b): (usize, usize)) -> usize {
         a + self.0.below(b - a + 1)
     }
+}
 
-    fn gaussian(&mut self) -> f64 {
-        let u1 = 1.0 - self.unit();
-        let u2 = self.unit();
-        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+impl Draws for Rng {
+    fn lcg(&mut self) -> &mut Lcg {
+        &mut self.0
     }
 }
 

@@ -22,11 +22,10 @@ use crate::diagnose::test_causes::{FittedRecord, TestEvidence, quantisation};
 use crate::fit::censored::censored_fit;
 use crate::fit::{FitData, FitReport};
 
-/// A record's staircase: its resolution and the noise under it (output units).
+/// A record's staircase: its resolution (output units), under noise below half of it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Staircase {
     pub resolution: f64,
-    pub noise: f64,
 }
 
 impl Staircase {
@@ -40,7 +39,7 @@ impl Staircase {
                 noise,
                 kp_floor: Some(_),
                 ..
-            } if resolution > 0.0 && noise.is_finite() => Some(Self { resolution, noise }),
+            } if resolution > 0.0 && noise.is_finite() => Some(Self { resolution }),
             _ => None,
         }
     }

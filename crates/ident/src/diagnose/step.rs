@@ -224,10 +224,11 @@ pub(super) fn prefer_pole_to_dead_time(paying: &mut [&(Extension, FitReport)]) {
 /// An integrator and one more pole whose slow lag is longer than the record (its slowest
 /// time constant beyond [`FitData::duration`]) that the record cannot tell apart (their BICs
 /// within [`BIC_THRESHOLD`]; on a staircase, where rounding sways least squares, their BICs
-/// on the censored likelihood of [`Staircase::censored_change`]): such a lag never shows its level, it only bends a ramp, and
-/// its static gain is an extrapolation (tens or hundreds of times the ramp's slope over a
-/// lag). What the record shows is the ramp, which only the integrator explains with a gain
-/// it measures (the slope): the integrator is put first.
+/// on the censored likelihood of [`Staircase::censored_change`]): such a lag never shows
+/// its level, it only bends a ramp, and its static gain is an extrapolation (tens or
+/// hundreds of times the ramp's slope over a lag). What the record shows is the ramp,
+/// which only the integrator explains with a gain it measures (the slope): the integrator
+/// is put first.
 pub(super) fn prefer_integrator_to_lag_beyond_record(
     data: &FitData,
     paying: &mut [&(Extension, FitReport)],
@@ -237,8 +238,8 @@ pub(super) fn prefer_integrator_to_lag_beyond_record(
         return;
     }
     let lead = bic(&first.1);
-    // The pole's residuals tell whether the record is a staircase (the start's hold the
-    // ramp it misses).
+    // The pole's residuals tell whether the record is a staircase (the start's residuals
+    // still hold the ramp it misses).
     let staircase = Staircase::of(data, &first.1);
     let within = |c: &FitReport| {
         bic(c) - lead < BIC_THRESHOLD

@@ -48,6 +48,11 @@ pub trait Draws {
     fn gaussian(&mut self) -> f64 {
         self.lcg().gaussian()
     }
+
+    /// Log-uniform in [a, b] (a, b > 0).
+    fn log_range(&mut self, (a, b): (f64, f64)) -> f64 {
+        (a.ln() + (b.ln() - a.ln()) * self.lcg().unit()).exp()
+    }
 }
 
 /// The mean of the samples before the first logged change.
